@@ -1,0 +1,109 @@
+#include "commands.hpp"
+
+#include "tridem/error.hpp"
+#include "tridem/output.hpp"
+#include "tridem/render.hpp"
+#include "tridem/run.hpp"
+#include "tridem/scene_io.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+#include <vector>
+
+namespace tridem::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Backend parse_backend(const std::string& name) {
+  if (name == "cpu") return Backend::Cpu;
+  if (name == "openmp") return Backend::OpenMP;
+  if (name == "cuda") return Backend::Cuda;
+  return Backend::Auto;
+}
+
+const char* backend_name(Backend b) {
+  switch (b) {
+    case Backend::Cpu: return "cpu";
+    case Backend::OpenMP: return "openmp";
+    case Backend::Cuda: return "cuda";
+    case Backend::Auto: break;
+  }
+  return "auto";
+}
+
+/// The last frame of an output directory: the highest step among frames/frame_*.vtu.
+fs::path last_frame(const fs::path& dir) {
+  std::vector<fs::path> frames;
+  const fs::path folder = dir / "frames";
+  if (fs::is_directory(folder))
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (entry.path().extension() == ".vtu") frames.push_back(entry.path());
+  if (frames.empty())
+    throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
+                            "frames, or give a .vtu file",
+                            dir.string()));
+  return *std::max_element(frames.begin(), frames.end());
+}
+
+}  // namespace
+
+int run(const RunArgs& args) {
+  const Scene scene = read_scene(args.scene);
+  RunOptions options;
+  options.out_dir = args.out;
+  if (args.backend) options.backend = parse_backend(*args.backend);
+  options.steps = args.steps;
+  options.force = args.force;
+  options.threads = args.threads;
+  options.progress = !args.quiet;
+  run_scene(scene, options);
+  return 0;
+}
+
+int info(const std::string& path) {
+  const Scene scene = read_scene(path);
+  const SceneInfo info = describe_scene(scene);
+  const auto& sim = scene.simulation;
+  fmt::print("scene        {}\n", scene.source);
+  fmt::print("triangles    {} ({} free, {} fixed, {} prescribed)\n", info.triangles, info.free,
+             info.fixed, info.prescribed);
+  fmt::print("materials    {}\n", scene.materials.size());
+  for (const Material& m : scene.materials)
+    fmt::print("  {:<12} density {:g} kg/m3, penalty {:g} Pa, tangential {:g} Pa, "
+               "friction {:g}, damping {:g}\n",
+               m.name, m.density, m.penalty, m.tangential_penalty, m.friction, m.damping);
+  fmt::print("bounding box [{:g}, {:g}] x [{:g}, {:g}] m\n", info.box_lo.x, info.box_hi.x,
+             info.box_lo.y, info.box_hi.y);
+  fmt::print("longest edge {:g} m (free particles; the cell size)\n", info.longest_edge);
+  fmt::print("dt critical  {:.6g} s\n", info.dt_critical);
+  fmt::print("dt chosen    {:.6g} s ({}, {:.3g} x critical)\n", info.dt_chosen,
+             info.dt_automatic ? fmt::format("automatic, safety {:g}", sim.safety) : "given",
+             info.dt_chosen / info.dt_critical);
+  fmt::print("steps        {} (t = {:.6g} s)\n", sim.steps,
+             static_cast<double>(sim.steps) * info.dt_chosen);
+  fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
+             backend_name(resolve_backend(sim.backend)),
+             sim.precision == Precision::Float ? "float" : "double");
+  fmt::print("memory       about {:.1f} MiB\n",
+             static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
+  return 0;
+}
+
+int render(const RenderArgs& args) {
+  const fs::path input = args.input;
+  const fs::path frame = fs::is_directory(input) ? last_frame(input) : input;
+  const Snapshot snap = read_vtu_frame(frame);
+  RenderOptions opt;
+  opt.width = args.width;
+  opt.color_by = args.color == "material" ? RenderOptions::ColorBy::Material
+                                          : RenderOptions::ColorBy::Speed;
+  const fs::path out = args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
+  render_png(snap, out, opt);
+  fmt::print("{}\n", out.string());
+  return 0;
+}
+
+}  // namespace tridem::app

@@ -1,0 +1,30 @@
+#pragma once
+// The subcommands of `tridem`; main.cpp only parses the command line and calls these.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace tridem::app {
+
+struct RunArgs {
+  std::string scene;
+  std::optional<std::string> out;
+  std::optional<std::string> backend;
+  std::optional<std::int64_t> steps;
+  int threads = 0;
+  bool force = false;
+  bool quiet = false;
+};
+int run(const RunArgs&);
+
+int info(const std::string& scene);
+
+struct RenderArgs {
+  std::string input;  ///< a .vtu frame, or an output directory (its last frame)
+  std::string out;    ///< PNG path; default next to the input
+  std::string color = "speed";
+  int width = 1200;
+};
+int render(const RenderArgs&);
+
+}  // namespace tridem::app

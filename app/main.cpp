@@ -1,0 +1,57 @@
+// tridem: the command line. Every failure reaches the user as one message and exit code 1;
+// usage errors are CLI11's, with exit code 2 or above.
+#include "commands.hpp"
+#include "tridem/error.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+int main(int argc, char** argv) {
+  using namespace tridem::app;
+  CLI::App cli{"tridem: 2D discrete element simulation of triangular particles "
+               "(Munjiza's potential contact force)", "tridem"};
+  cli.set_version_flag("--version", std::string("tridem ") + TRIDEM_VERSION);
+  cli.require_subcommand(1);
+
+  RunArgs run_args;
+  auto* run_cmd = cli.add_subcommand("run", "Run a scene and write its outputs");
+  run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");
+  run_cmd->add_option("--backend", run_args.backend, "auto, cpu (serial reference), openmp or cuda")
+      ->check(CLI::IsMember({"auto", "cpu", "openmp", "cuda"}));
+  run_cmd->add_option("--steps", run_args.steps, "Number of steps (overrides [simulation] steps)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_flag("--force", run_args.force, "Run even if dt is above the stability limit");
+  run_cmd->add_flag("--quiet", run_args.quiet, "No progress bar");
+
+  std::string info_scene;
+  auto* info_cmd = cli.add_subcommand("info", "Describe a scene: particles, time step, memory");
+  info_cmd->add_option("scene", info_scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+
+  RenderArgs render_args;
+  auto* render_cmd = cli.add_subcommand("render", "Draw a frame to PNG");
+  render_cmd->add_option("input", render_args.input,
+                         "A frame (.vtu) or an output directory (its last frame)")
+      ->required()->check(CLI::ExistingPath);
+  render_cmd->add_option("-o,--out", render_args.out, "PNG file (default: beside the frame)");
+  render_cmd->add_option("--color", render_args.color, "speed or material")
+      ->check(CLI::IsMember({"speed", "material"}));
+  render_cmd->add_option("--width", render_args.width, "Image width in pixels")
+      ->check(CLI::Range(16, 16384));
+
+  CLI11_PARSE(cli, argc, argv);
+  try {
+    if (*run_cmd) return run(run_args);
+    if (*info_cmd) return info(info_scene);
+    if (*render_cmd) return render(render_args);
+  } catch (const tridem::Error& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,21 @@
+#pragma once
+// TRIDEM_HD marks a function that runs on the host and, under nvcc, on the device too.
+// Physics is written once with it (architecture.md, "rules of the house").
+#if defined(__CUDACC__)
+#define TRIDEM_HD __host__ __device__
+#else
+#define TRIDEM_HD
+#endif
+
+#include <math.h>
+
+namespace tridem::math {
+// Overloads that keep float arithmetic in float on host and device alike (the global
+// ::cos of <math.h> would promote a float to double on the host).
+TRIDEM_HD inline float sqrt(float x) { return ::sqrtf(x); }
+TRIDEM_HD inline double sqrt(double x) { return ::sqrt(x); }
+TRIDEM_HD inline float cos(float x) { return ::cosf(x); }
+TRIDEM_HD inline double cos(double x) { return ::cos(x); }
+TRIDEM_HD inline float sin(float x) { return ::sinf(x); }
+TRIDEM_HD inline double sin(double x) { return ::sin(x); }
+}  // namespace tridem::math

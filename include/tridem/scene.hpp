@@ -1,0 +1,65 @@
+#pragma once
+// The validated description of a simulation, as read from a scene file (io/scene) or
+// built in code by tests and benchmarks. Everything here is in SI units, double precision,
+// per unit thickness (2D): densities in kg/m³ give masses in kg/m.
+#include "tridem/vec2.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tridem {
+
+enum class Backend { Auto, Cpu, OpenMP, Cuda };
+enum class Precision { Double, Float };
+/// How candidate pairs are found. All give the same physics.
+enum class Method { Grid, AllPairs };
+
+struct Material {
+  std::string name;
+  double density = 0;             ///< kg/m³
+  double penalty = 0;             ///< normal penalty p, Pa
+  double tangential_penalty = 0;  ///< friction spring p_t, Pa (reader default 0.1·p)
+  double friction = 0;            ///< Coulomb μ
+  double damping = 0;             ///< normal damping ratio ζ in [0, 1)
+};
+
+/// How a triangle moves: by forces, not at all, or at a prescribed constant velocity.
+enum class Motion : std::uint8_t { Free = 0, Fixed = 1, Prescribed = 2 };
+
+struct TriangleSpec {
+  int material = 0;                    ///< index into Scene::materials
+  std::array<Vec2d, 3> vertices{};     ///< any orientation; the solver makes them CCW
+  Vec2d velocity{};                    ///< of the centroid, m/s
+  double angular_velocity = 0;         ///< rad/s, about the centroid
+  Motion motion = Motion::Free;
+};
+
+struct SimulationSettings {
+  std::int64_t steps = 0;
+  std::optional<double> dt;            ///< unset: dt = safety · dt_crit
+  double safety = 0.1;                 ///< fraction of dt_crit used when dt is unset
+  Vec2d gravity{};
+  Backend backend = Backend::Auto;
+  Precision precision = Precision::Double;
+  Method method = Method::Grid;
+  double local_damping = 0;            ///< Cundall's α in [0, 1); 0 = off
+};
+
+struct OutputSettings {
+  std::string dir = "out";
+  std::int64_t every = 0;              ///< steps between frames; 0 = no frames
+  bool contacts = true;                ///< write the contact network with each frame
+};
+
+struct Scene {
+  std::string source;                  ///< file it came from, for messages
+  SimulationSettings simulation;
+  OutputSettings output;
+  std::vector<Material> materials;
+  std::vector<TriangleSpec> triangles; ///< explicit ones in file order, then generated
+};
+
+}  // namespace tridem

@@ -1,0 +1,53 @@
+#pragma once
+// The solver interface: one object per run, holding the state on its backend. The step is
+// a fixed sequence of stages (see Stage); backends differ only in how they schedule it.
+#include "tridem/scene.hpp"
+#include "tridem/snapshot.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace tridem {
+
+/// The stages of one step, in the order they run.
+enum class Stage {
+  Geometry,    ///< vertices and bounding boxes from the poses
+  BroadPhase,  ///< candidate pairs (cell grid or all pairs), contact history carried over
+  PairForces,  ///< exact overlap test and potential contact force of each candidate pair
+  Accumulate,  ///< sum of the pair forces on each particle
+  Integrate,   ///< symplectic Euler, prescribed motions, blow-up check
+};
+
+struct SolverConfig {
+  Backend backend = Backend::Auto;
+  Precision precision = Precision::Double;
+  Method method = Method::Grid;
+  int threads = 0;  ///< OpenMP threads; 0 = the runtime's default
+  bool force = false;  ///< run even with dt above dt_crit
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  /// Advances `steps` steps. Throws RunError naming the step and particle on blow-up;
+  /// the state is then the last good one.
+  virtual void advance(std::int64_t steps) = 0;
+  /// Copies the state (and the contacts of the last step when asked) to the host.
+  virtual void snapshot(Snapshot& out, bool with_contacts) const = 0;
+  virtual std::int64_t step() const = 0;
+  virtual double time() const = 0;
+  virtual double dt() const = 0;
+  virtual std::size_t size() const = 0;
+  /// e.g. "openmp (2 threads), double, grid"
+  virtual std::string description() const = 0;
+};
+
+/// The backend named by the config (Auto picks the fastest available and says so in
+/// description()). Throws SceneError / RunError for a scene that cannot run.
+std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config);
+
+/// The concrete backend Auto resolves to on this machine.
+Backend resolve_backend(Backend requested);
+
+}  // namespace tridem

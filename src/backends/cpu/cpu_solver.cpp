@@ -1,0 +1,307 @@
+#include "backends/cpu/cpu_solver.hpp"
+
+#include "physics/integrate.hpp"
+#include "tridem/error.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <omp.h>
+
+namespace tridem {
+
+namespace {
+
+template <class Real>
+std::vector<Real> cast(const std::vector<double>& v) {
+  return std::vector<Real>(v.begin(), v.end());
+}
+
+template <class Vec>
+void grow(Vec& v, std::int64_t needed) {
+  if (v.size() < static_cast<std::size_t>(needed))
+    v.resize(static_cast<std::size_t>(needed * 3 / 2 + 16));
+}
+
+}  // namespace
+
+template <class Real>
+CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+                           const SolverConfig& config, bool parallel)
+    : n_(model.size()),
+      parallel_(parallel),
+      method_(config.method),
+      dt_(static_cast<Real>(ts.chosen)),
+      gravity_{static_cast<Real>(scene.simulation.gravity.x),
+               static_cast<Real>(scene.simulation.gravity.y)},
+      local_damping_(static_cast<Real>(scene.simulation.local_damping)),
+      n_materials_(static_cast<int>(scene.materials.size())),
+      finder_(model.longest_edge, model.motion) {
+  if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
+  for (int k = 0; k < 3; ++k) {
+    offset_x_[k].resize(n_);
+    offset_y_[k].resize(n_);
+    vert_x_[k].resize(n_);
+    vert_y_[k].resize(n_);
+  }
+  mass_.resize(n_);
+  inv_mass_.resize(n_);
+  inv_inertia_.resize(n_);
+  half_size_.resize(n_);
+  x_.resize(n_);
+  y_.resize(n_);
+  theta_.assign(n_, Real(0));
+  vx_.resize(n_);
+  vy_.resize(n_);
+  w_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      offset_x_[k][i] = static_cast<Real>(model.offsets[i][k].x);
+      offset_y_[k][i] = static_cast<Real>(model.offsets[i][k].y);
+    }
+    const bool free = model.motion[i] == Motion::Free;
+    mass_[i] = free ? static_cast<Real>(model.mass[i]) : Real(0);
+    inv_mass_[i] = free ? static_cast<Real>(1.0 / model.mass[i]) : Real(0);
+    inv_inertia_[i] = free ? static_cast<Real>(1.0 / model.inertia[i]) : Real(0);
+    half_size_[i] = static_cast<Real>(0.5 * model.longest_edge[i]);
+    x_[i] = static_cast<Real>(model.centroid[i].x);
+    y_[i] = static_cast<Real>(model.centroid[i].y);
+    vx_[i] = static_cast<Real>(model.velocity[i].x);
+    vy_[i] = static_cast<Real>(model.velocity[i].y);
+    w_[i] = static_cast<Real>(model.angular_velocity[i]);
+  }
+  area_ = cast<Real>(model.area);
+  material_ = model.material;
+  motion_ = model.motion;
+  for (const auto& law : contact_law_table(scene.materials))
+    laws_.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
+                     static_cast<Real>(law.friction), static_cast<Real>(law.damping)});
+  fx_.assign(n_, Real(0));
+  fy_.assign(n_, Real(0));
+  torque_.assign(n_, Real(0));
+  for (auto* v : {&lo_x_, &lo_y_, &hi_x_, &hi_y_}) v->resize(n_);
+  // Room for a dense packing's pairs up front; the lists only grow past it.
+  const auto initial_pairs = static_cast<std::int64_t>(4 * n_ + 16);
+  for (PairList* p : {&pairs_, &old_pairs_}) {
+    p->offset.assign(n_ + 1, 0);
+    p->partner.resize(static_cast<std::size_t>(initial_pairs));
+  }
+  slip_.resize(static_cast<std::size_t>(initial_pairs));
+  old_slip_.resize(static_cast<std::size_t>(initial_pairs));
+  result_.resize(static_cast<std::size_t>(initial_pairs));
+}
+
+template <class Real>
+std::string CpuSolver<Real>::description() const {
+  const char* real = sizeof(Real) == 8 ? "double" : "float";
+  const char* method = method_ == Method::Grid ? "grid" : "all-pairs";
+  if (parallel_)
+    return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
+  return fmt::format("cpu (serial), {}, {}", real, method);
+}
+
+template <class Real>
+void CpuSolver<Real>::advance(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) {
+    update_geometry();
+    find_pairs();
+    compute_pair_forces();
+    accumulate();
+    integrate();
+    std::swap(pairs_, old_pairs_);
+    std::swap(slip_, old_slip_);
+    ++step_;
+    time_ += static_cast<double>(dt_);
+  }
+}
+
+template <class Real>
+void CpuSolver<Real>::update_geometry() {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const Real c = math::cos(theta_[i]), s = math::sin(theta_[i]);
+    Real lx = std::numeric_limits<Real>::max(), ly = lx;
+    Real hx = std::numeric_limits<Real>::lowest(), hy = hx;
+    for (int k = 0; k < 3; ++k) {
+      const Vec2<Real> v = Vec2<Real>{x_[i], y_[i]} +
+                           rotate(Vec2<Real>{offset_x_[k][i], offset_y_[k][i]}, c, s);
+      vert_x_[k][i] = v.x;
+      vert_y_[k][i] = v.y;
+      lx = std::min(lx, v.x);
+      ly = std::min(ly, v.y);
+      hx = std::max(hx, v.x);
+      hy = std::max(hy, v.y);
+    }
+    lo_x_[i] = lx;
+    lo_y_[i] = ly;
+    hi_x_[i] = hx;
+    hi_y_[i] = hy;
+  }
+}
+
+template <class Real>
+void CpuSolver<Real>::find_pairs() {
+  finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
+               pairs_);
+  grow(slip_, pairs_.count());
+  grow(result_, pairs_.count());
+  build_reverse_index(pairs_, n_, parallel_, reverse_);
+}
+
+template <class Real>
+physics::Body<Real> CpuSolver<Real>::body(std::int32_t i) const {
+  physics::Body<Real> b;
+  for (int k = 0; k < 3; ++k) b.tri.v[k] = {vert_x_[k][i], vert_y_[k][i]};
+  b.c = {x_[i], y_[i]};
+  b.v = {vx_[i], vy_[i]};
+  b.w = w_[i];
+  b.area = area_[i];
+  b.mass = mass_[i];
+  return b;
+}
+
+template <class Real>
+void CpuSolver<Real>::compute_pair_forces() {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(dynamic, 256) if (parallel_)
+  for (std::int64_t e = 0; e < n; ++e) {
+    const auto emitter = static_cast<std::int32_t>(e);
+    std::int64_t old = old_pairs_.offset[e];
+    const std::int64_t old_end = old_pairs_.offset[e + 1];
+    const physics::Body<Real> a = body(emitter);
+    for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
+      const std::int32_t j = pairs_.partner[s];
+      // Both rows are sorted by partner: walk the old one to find this pair's history.
+      while (old < old_end && old_pairs_.partner[old] < j) ++old;
+      physics::PairSlip<Real> slip{};
+      if (old < old_end && old_pairs_.partner[old] == j) slip = old_slip_[old];
+      const physics::Body<Real> b = body(j);
+      if (physics::triangles_overlap(a.tri, b.tri)) {
+        const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
+        result_[s] = physics::pair_force(a, b, law, dt_, slip);
+      } else {
+        result_[s] = {};
+        slip = {};
+      }
+      slip_[s] = slip;
+    }
+  }
+}
+
+template <class Real>
+void CpuSolver<Real>::accumulate() {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t p = 0; p < n; ++p) {
+    Vec2<Real> f{};
+    Real t = 0;
+    for (std::int64_t s = pairs_.offset[p]; s < pairs_.offset[p + 1]; ++s) {
+      f += result_[s].force_a;
+      t += result_[s].torque_a;
+    }
+    for (std::int64_t r = reverse_.offset[p]; r < reverse_.offset[p + 1]; ++r) {
+      const auto& res = result_[reverse_.slot[r]];
+      f -= res.force_a;
+      t += res.torque_b;
+    }
+    fx_[p] = f.x;
+    fy_[p] = f.y;
+    torque_[p] = t;
+  }
+}
+
+template <class Real>
+physics::Pose<Real> CpuSolver<Real>::advanced_pose(std::size_t i) const {
+  physics::Pose<Real> p{{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
+  if (motion_[i] == Motion::Free)
+    physics::integrate_free(p, {fx_[i], fy_[i]}, torque_[i], inv_mass_[i], inv_inertia_[i],
+                            gravity_, local_damping_, dt_);
+  else
+    physics::integrate_prescribed(p, dt_);
+  return p;
+}
+
+template <class Real>
+void CpuSolver<Real>::integrate() {
+  const auto n = static_cast<std::int64_t>(n_);
+  // Check first, write second: a blow-up leaves the last good state in place.
+  std::int64_t bad = n;
+#pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (motion_[i] != Motion::Free) continue;
+    const physics::Pose<Real> p = advanced_pose(static_cast<std::size_t>(i));
+    const bool finite = std::isfinite(p.c.x) && std::isfinite(p.c.y) &&
+                        std::isfinite(p.theta) && std::isfinite(p.v.x) &&
+                        std::isfinite(p.v.y) && std::isfinite(p.w);
+    if (!finite || norm(p.v) * dt_ > half_size_[i]) bad = std::min(bad, i);
+  }
+  if (bad < n) {
+    const auto i = static_cast<std::size_t>(bad);
+    throw RunError(fmt::format(
+        "blow-up at step {}: particle {} (at x={:g}, y={:g}, speed {:g} m/s) {} in one step; "
+        "the time step {:g} s is too large for the contacts it meets (reduce dt or the "
+        "penalty, or check for initially overlapping particles)",
+        step_ + 1, bad, static_cast<double>(x_[i]), static_cast<double>(y_[i]),
+        static_cast<double>(std::hypot(vx_[i], vy_[i])),
+        "would move more than half its size or get a non-finite state",
+        static_cast<double>(dt_)));
+  }
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const physics::Pose<Real> p = advanced_pose(static_cast<std::size_t>(i));
+    x_[i] = p.c.x;
+    y_[i] = p.c.y;
+    theta_[i] = p.theta;
+    vx_[i] = p.v.x;
+    vy_[i] = p.v.y;
+    w_[i] = p.w;
+  }
+}
+
+template <class Real>
+void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
+  out.step = step_;
+  out.time = time_;
+  out.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    out.x[i] = x_[i];
+    out.y[i] = y_[i];
+    out.theta[i] = theta_[i];
+    out.vx[i] = vx_[i];
+    out.vy[i] = vy_[i];
+    out.omega[i] = w_[i];
+    out.fx[i] = fx_[i];
+    out.fy[i] = fy_[i];
+    out.torque[i] = torque_[i];
+    const Vec2<Real> off[3] = {{offset_x_[0][i], offset_y_[0][i]},
+                               {offset_x_[1][i], offset_y_[1][i]},
+                               {offset_x_[2][i], offset_y_[2][i]}};
+    const auto t = physics::place(Vec2<Real>{x_[i], y_[i]}, theta_[i], off);
+    out.x1[i] = t.v[0].x;
+    out.y1[i] = t.v[0].y;
+    out.x2[i] = t.v[1].x;
+    out.y2[i] = t.v[1].y;
+    out.x3[i] = t.v[2].x;
+    out.y3[i] = t.v[2].y;
+    out.mass[i] = inv_mass_[i] > 0 ? 1.0 / inv_mass_[i] : 0.0;
+    out.inertia[i] = inv_inertia_[i] > 0 ? 1.0 / inv_inertia_[i] : 0.0;
+    out.material[i] = material_[i];
+    out.motion[i] = motion_[i];
+  }
+  out.contacts.clear();
+  if (!with_contacts || step_ == 0) return;
+  // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
+  for (std::size_t e = 0; e < n_; ++e)
+    for (std::int64_t s = old_pairs_.offset[e]; s < old_pairs_.offset[e + 1]; ++s) {
+      const auto& r = result_[s];
+      if (!r.touching) continue;
+      out.contacts.push_back({static_cast<std::int64_t>(e), old_pairs_.partner[s],
+                              r.force_a.x, r.force_a.y, r.point.x, r.point.y});
+    }
+}
+
+template class CpuSolver<float>;
+template class CpuSolver<double>;
+
+}  // namespace tridem

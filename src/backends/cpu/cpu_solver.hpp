@@ -1,0 +1,71 @@
+#pragma once
+// The CPU solvers: the serial reference and its OpenMP twin are one code, run with
+// `parallel` off or on. Every stage writes only memory it owns (a pair's slot, a
+// particle's row), and every sum runs in a fixed order (pairs ascending), so the OpenMP
+// solver reproduces the serial one bit for bit; that is what the parity tests check.
+#include "broadphase/candidate_pairs.hpp"
+#include "core/particle_model.hpp"
+#include "core/time_step.hpp"
+#include "physics/contact_force.hpp"
+#include "physics/integrate.hpp"
+#include "tridem/solver.hpp"
+
+#include <vector>
+
+namespace tridem {
+
+template <class Real>
+class CpuSolver final : public Solver {
+ public:
+  CpuSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+            const SolverConfig& config, bool parallel);
+
+  void advance(std::int64_t steps) override;
+  void snapshot(Snapshot& out, bool with_contacts) const override;
+  std::int64_t step() const override { return step_; }
+  double time() const override { return time_; }
+  double dt() const override { return static_cast<double>(dt_); }
+  std::size_t size() const override { return n_; }
+  std::string description() const override;
+
+ private:
+  void update_geometry();
+  void find_pairs();
+  void compute_pair_forces();
+  void accumulate();
+  void integrate();
+
+  physics::Body<Real> body(std::int32_t i) const;
+  physics::Pose<Real> advanced_pose(std::size_t i) const;
+
+  std::size_t n_;
+  bool parallel_;
+  Method method_;
+  Real dt_;
+  Vec2<Real> gravity_;
+  Real local_damping_;
+  std::int64_t step_ = 0;
+  double time_ = 0;
+
+  // Fixed per particle.
+  std::vector<Real> offset_x_[3], offset_y_[3];
+  std::vector<Real> mass_, inv_mass_, inv_inertia_, area_, half_size_;
+  std::vector<int> material_;
+  std::vector<Motion> motion_;
+  std::vector<physics::ContactLaw<Real>> laws_;
+  int n_materials_;
+  // State.
+  std::vector<Real> x_, y_, theta_, vx_, vy_, w_;
+  std::vector<Real> fx_, fy_, torque_;
+  // Geometry of the current step.
+  std::vector<Real> vert_x_[3], vert_y_[3];
+  std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;
+  // Pairs of this step and the last, with their contact history.
+  CandidatePairs<Real> finder_;
+  PairList pairs_, old_pairs_;
+  std::vector<physics::PairSlip<Real>> slip_, old_slip_;
+  std::vector<physics::PairForce<Real>> result_;
+  ReverseIndex reverse_;
+};
+
+}  // namespace tridem

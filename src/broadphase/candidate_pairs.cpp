@@ -1,0 +1,137 @@
+#include "broadphase/candidate_pairs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tridem {
+
+template <class Real>
+CandidatePairs<Real>::CandidatePairs(const std::vector<double>& longest_edge,
+                                     const std::vector<Motion>& motion)
+    : n_(longest_edge.size()), small_(n_), free_(n_) {
+  double l_free = 0, l_all = 0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    free_[i] = motion[i] == Motion::Free;
+    l_all = std::max(l_all, longest_edge[i]);
+    if (free_[i]) l_free = std::max(l_free, longest_edge[i]);
+  }
+  const double l = l_free > 0 ? l_free : l_all;
+  for (std::size_t i = 0; i < n_; ++i) {
+    small_[i] = longest_edge[i] <= l;
+    if (!small_[i]) large_.push_back(static_cast<std::int32_t>(i));
+  }
+  cell_size_ = static_cast<Real>(l);
+  cell_of_.resize(n_);
+  sorted_.resize(n_);
+  row_count_.resize(n_);
+  // At most 4 cells per particle (see bin), so the grid never allocates during a run.
+  cell_start_.resize(4 * n_ + 17);
+  cell_count_.resize(4 * n_ + 17);
+}
+
+template <class Real>
+void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
+  const auto n = static_cast<std::int64_t>(n_);
+  Real min_x = std::numeric_limits<Real>::max(), min_y = min_x;
+  Real max_x = std::numeric_limits<Real>::lowest(), max_y = max_x;
+#pragma omp parallel for schedule(static) if (parallel) \
+    reduction(min : min_x, min_y) reduction(max : max_x, max_y)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!small_[i]) continue;
+    min_x = std::min(min_x, b.lo_x[i]);
+    min_y = std::min(min_y, b.lo_y[i]);
+    max_x = std::max(max_x, b.lo_x[i]);
+    max_y = std::max(max_y, b.lo_y[i]);
+  }
+  origin_x_ = min_x;
+  origin_y_ = min_y;
+  // A particle thrown far away must not make the grid huge: past 4 cells per particle the
+  // cells grow instead (more candidates, same pairs).
+  const double cap = static_cast<double>(4 * n_ + 16);
+  double cell = static_cast<double>(cell_size_);
+  const double wx = static_cast<double>(max_x) - static_cast<double>(min_x);
+  const double wy = static_cast<double>(max_y) - static_cast<double>(min_y);
+  for (;;) {
+    nx_ = static_cast<std::int64_t>(wx / cell) + 1;
+    ny_ = static_cast<std::int64_t>(wy / cell) + 1;
+    if (static_cast<double>(nx_) * static_cast<double>(ny_) <= cap) break;
+    cell *= 1.5;
+  }
+  grid_cell_ = static_cast<Real>(cell);
+  const std::int64_t cells = nx_ * ny_;
+  std::fill(cell_count_.begin(), cell_count_.begin() + cells, 0);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!small_[i]) continue;
+    auto cx = static_cast<std::int64_t>((b.lo_x[i] - origin_x_) / grid_cell_);
+    auto cy = static_cast<std::int64_t>((b.lo_y[i] - origin_y_) / grid_cell_);
+    cx = std::clamp<std::int64_t>(cx, 0, nx_ - 1);
+    cy = std::clamp<std::int64_t>(cy, 0, ny_ - 1);
+    cell_of_[i] = cx + cy * nx_;
+  }
+  // Counting sort by cell; serial, and in index order within a cell.
+  for (std::int64_t i = 0; i < n; ++i)
+    if (small_[i]) ++cell_count_[cell_of_[i]];
+  cell_start_[0] = 0;
+  for (std::int64_t c = 0; c < cells; ++c) cell_start_[c + 1] = cell_start_[c] + cell_count_[c];
+  std::copy(cell_start_.begin(), cell_start_.begin() + cells, cell_count_.begin());
+  for (std::int64_t i = 0; i < n; ++i)
+    if (small_[i]) sorted_[cell_count_[cell_of_[i]]++] = static_cast<std::int32_t>(i);
+}
+
+template <class Real>
+template <class Visit>
+void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real>& b,
+                                            Method method, Visit&& visit) const {
+  auto overlap = [&b](std::int32_t p, std::int32_t q) {
+    return b.lo_x[p] <= b.hi_x[q] && b.lo_x[q] <= b.hi_x[p] && b.lo_y[p] <= b.hi_y[q] &&
+           b.lo_y[q] <= b.hi_y[p];
+  };
+  if (method == Method::AllPairs) {
+    for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
+      if ((free_[i] || free_[j]) && overlap(i, j)) visit(j);
+    return;
+  }
+  if (!small_[i]) return;  // large particles are reached from the small ones
+  const std::int64_t cx = cell_of_[i] % nx_, cy = cell_of_[i] / nx_;
+  for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
+    for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1);
+         ++x) {
+      const std::int64_t c = x + y * nx_;
+      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+        const std::int32_t j = sorted_[k];
+        if (j > i && (free_[i] || free_[j]) && overlap(i, j)) visit(j);
+      }
+    }
+  for (const std::int32_t j : large_)
+    if ((free_[i] || free_[j]) && overlap(i, j)) visit(j);
+}
+
+template <class Real>
+void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool parallel,
+                                PairList& pairs) {
+  const auto n = static_cast<std::int64_t>(n_);
+  if (method == Method::Grid) bin(b, parallel);
+#pragma omp parallel for schedule(dynamic, 256) if (parallel)
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::int64_t count = 0;
+    visit_candidates(static_cast<std::int32_t>(i), b, method, [&count](std::int32_t) { ++count; });
+    row_count_[i] = count;
+  }
+  exclusive_scan(row_count_, n_, pairs.offset);
+  if (pairs.partner.size() < static_cast<std::size_t>(pairs.count()))
+    pairs.partner.resize(static_cast<std::size_t>(pairs.count() * 3 / 2 + 16));
+#pragma omp parallel for schedule(dynamic, 256) if (parallel)
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::int64_t at = pairs.offset[i];
+    visit_candidates(static_cast<std::int32_t>(i), b, method,
+                     [&](std::int32_t j) { pairs.partner[at++] = j; });
+    sort_row(pairs.partner.data(), pairs.offset[i], pairs.offset[i + 1]);
+  }
+}
+
+template class CandidatePairs<float>;
+template class CandidatePairs<double>;
+
+}  // namespace tridem

@@ -1,0 +1,55 @@
+#pragma once
+// The broad phase: pairs whose bounding boxes overlap, found with a uniform cell grid.
+//
+// Cells have the size L of the longest edge among the "small" particles (every free one),
+// and a small particle is binned by the lower-left corner of its bounding box: two boxes no
+// wider than L that overlap then have corners in neighbouring cells, so a 3×3 scan finds
+// them. Boundary triangles larger than L (walls, hopper sides) are kept in a short list
+// that every small particle checks directly. Pairs of two non-free particles are skipped.
+#include "broadphase/pair_list.hpp"
+#include "tridem/scene.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tridem {
+
+template <class Real>
+struct BoxArrays {
+  const Real* lo_x;
+  const Real* lo_y;
+  const Real* hi_x;
+  const Real* hi_y;
+};
+
+template <class Real>
+class CandidatePairs {
+ public:
+  /// `longest_edge` and `motion` are per particle; they fix which particles are small.
+  CandidatePairs(const std::vector<double>& longest_edge, const std::vector<Motion>& motion);
+
+  /// Fills `pairs` (rows by emitter, partners ascending). `parallel` runs it with OpenMP.
+  void find(const BoxArrays<Real>& boxes, Method method, bool parallel, PairList& pairs);
+
+  Real cell_size() const { return cell_size_; }
+  std::size_t large_count() const { return large_.size(); }
+
+ private:
+  void bin(const BoxArrays<Real>& boxes, bool parallel);
+  template <class Visit>
+  void visit_candidates(std::int32_t i, const BoxArrays<Real>& boxes, Method method,
+                        Visit&& visit) const;
+
+  std::size_t n_;
+  Real cell_size_;
+  std::vector<std::uint8_t> small_, free_;
+  std::vector<std::int32_t> large_;
+  // The grid of the current step: particles sorted by cell.
+  Real origin_x_ = 0, origin_y_ = 0, grid_cell_ = 0;
+  std::int64_t nx_ = 0, ny_ = 0;
+  std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
+  std::vector<std::int32_t> sorted_;
+  std::vector<std::int64_t> row_count_;
+};
+
+}  // namespace tridem

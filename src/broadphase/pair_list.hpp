@@ -1,0 +1,54 @@
+#pragma once
+// Candidate pairs in compressed-row form, grouped by the particle that emits them: the
+// pairs of emitter i are partner[offset[i] .. offset[i+1]), partners ascending. Every pair
+// appears once. Grouping by emitter lets each pair find its contact history of the
+// previous step in the emitter's old row, and keeps the order deterministic.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace tridem {
+
+struct PairList {
+  std::vector<std::int64_t> offset;   ///< n + 1 entries
+  std::vector<std::int32_t> partner;  ///< capacity may exceed count()
+
+  std::int64_t count() const { return offset.empty() ? 0 : offset.back(); }
+};
+
+/// For each particle, the pairs in which it is the partner: slot[rev_offset[p] ..
+/// rev_offset[p+1]) index PairList::partner, ascending.
+struct ReverseIndex {
+  std::vector<std::int64_t> offset;
+  std::vector<std::int64_t> slot;
+  std::vector<std::int64_t> cursor;  ///< scratch for filling
+};
+
+/// Builds the reverse index of `pairs` over n particles.
+void build_reverse_index(const PairList& pairs, std::size_t n, bool parallel,
+                         ReverseIndex& out);
+
+/// Sorts v[begin, end) ascending: insertion sort for the usual short rows, std::sort for
+/// the long rows of walls touching many particles.
+template <class T>
+inline void sort_row(T* v, std::int64_t begin, std::int64_t end) {
+  if (end - begin > 32) {
+    std::sort(v + begin, v + end);
+    return;
+  }
+  for (std::int64_t a = begin + 1; a < end; ++a) {
+    const T key = v[a];
+    std::int64_t b = a - 1;
+    while (b >= begin && v[b] > key) {
+      v[b + 1] = v[b];
+      --b;
+    }
+    v[b + 1] = key;
+  }
+}
+
+/// Exclusive prefix sum of counts[0..n) into offset[0..n], offset[0] = 0.
+void exclusive_scan(const std::vector<std::int64_t>& counts, std::size_t n,
+                    std::vector<std::int64_t>& offset);
+
+}  // namespace tridem

@@ -1,0 +1,33 @@
+#pragma once
+// The mechanical model of each triangle, built once from a scene in double precision:
+// body-frame vertex offsets, mass, inertia and sizes. Solvers copy it into their own real
+// type and layout.
+#include "physics/body.hpp"
+#include "tridem/scene.hpp"
+
+#include <array>
+#include <vector>
+
+namespace tridem {
+
+struct ParticleModel {
+  std::vector<std::array<Vec2d, 3>> offsets;  ///< body-frame vertices about the centroid, CCW
+  std::vector<Vec2d> centroid;
+  std::vector<double> area, mass, inertia;    ///< per unit thickness
+  std::vector<double> longest_edge, smallest_height;
+  std::vector<int> material;
+  std::vector<Motion> motion;
+  std::vector<Vec2d> velocity;
+  std::vector<double> angular_velocity;
+
+  std::size_t size() const { return centroid.size(); }
+};
+
+/// Builds the model; throws SceneError naming the particle for a degenerate triangle, a
+/// non-finite value or a bad material index.
+ParticleModel build_particle_model(const Scene& scene);
+
+/// Contact law for every ordered pair of materials, row-major (a·n + b).
+std::vector<physics::ContactLaw<double>> contact_law_table(const std::vector<Material>& m);
+
+}  // namespace tridem

@@ -1,0 +1,59 @@
+#include "core/particle_model.hpp"
+#include "core/time_step.hpp"
+#include "physics/contact_force.hpp"
+#include "tridem/run.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace tridem {
+
+namespace {
+
+/// Bytes the CPU solver holds per particle and per candidate pair, for real type Real.
+template <class Real>
+std::size_t solver_bytes(std::size_t n) {
+  // Per particle: offsets and vertices (12), mass terms and size (5), state (6), forces
+  // (3), boxes (4) reals; material, motion, cell bookkeeping and the pair-row offsets.
+  const std::size_t per_particle = 30 * sizeof(Real) + sizeof(int) + 1 + 2 * 4 * 8 + 8 + 4 +
+                                   8 + 3 * 8 + 2 * 8;
+  // Per pair, two buffers of partner and slip, one of results and the reverse slot;
+  // about four candidate pairs per particle in a dense packing.
+  const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) +
+                               sizeof(physics::PairForce<Real>) + 8;
+  return n * (per_particle + 4 * per_pair);
+}
+
+}  // namespace
+
+SceneInfo describe_scene(const Scene& scene) {
+  const ParticleModel model = build_particle_model(scene);
+  const TimeStep ts = estimate_time_step(scene, model);
+  SceneInfo info;
+  info.triangles = model.size();
+  info.box_lo = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  info.box_hi = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    switch (model.motion[i]) {
+      case Motion::Free: ++info.free; break;
+      case Motion::Fixed: ++info.fixed; break;
+      case Motion::Prescribed: ++info.prescribed; break;
+    }
+    for (const Vec2d& r : model.offsets[i]) {
+      const Vec2d v = model.centroid[i] + r;
+      info.box_lo = {std::min(info.box_lo.x, v.x), std::min(info.box_lo.y, v.y)};
+      info.box_hi = {std::max(info.box_hi.x, v.x), std::max(info.box_hi.y, v.y)};
+    }
+    if (model.motion[i] == Motion::Free)
+      info.longest_edge = std::max(info.longest_edge, model.longest_edge[i]);
+  }
+  info.dt_critical = ts.critical;
+  info.dt_chosen = ts.chosen;
+  info.dt_automatic = ts.automatic;
+  info.memory_bytes = scene.simulation.precision == Precision::Float
+                          ? solver_bytes<float>(model.size())
+                          : solver_bytes<double>(model.size());
+  return info;
+}
+
+}  // namespace tridem

@@ -1,0 +1,50 @@
+#include "backends/cpu/cpu_solver.hpp"
+#include "core/particle_model.hpp"
+#include "core/time_step.hpp"
+#include "tridem/error.hpp"
+#include "tridem/solver.hpp"
+
+#include <omp.h>
+
+namespace tridem {
+
+Backend resolve_backend(Backend requested) {
+  if (requested != Backend::Auto) return requested;
+  return omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu;
+}
+
+namespace {
+
+template <class Real>
+std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& model,
+                                      const TimeStep& ts, const SolverConfig& config,
+                                      Backend backend) {
+  switch (backend) {
+    case Backend::Cpu:
+      return std::make_unique<CpuSolver<Real>>(scene, model, ts, config, false);
+    case Backend::OpenMP:
+      return std::make_unique<CpuSolver<Real>>(scene, model, ts, config, true);
+    case Backend::Cuda:
+      throw RunError(
+          "backend 'cuda' is not available in this build: the CUDA backend is not "
+          "implemented yet; use backend = \"cpu\", \"openmp\" or \"auto\"");
+    case Backend::Auto:
+      break;
+  }
+  throw RunError("internal error: unresolved backend");
+}
+
+}  // namespace
+
+std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config) {
+  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
+  const ParticleModel model = build_particle_model(scene);
+  const TimeStep ts = estimate_time_step(scene, model);
+  check_time_step(scene, ts, config.force);
+  const Backend backend = resolve_backend(config.backend);
+  if (config.precision == Precision::Float)
+    return make_for_real<float>(scene, model, ts, config, backend);
+  return make_for_real<double>(scene, model, ts, config, backend);
+}
+
+}  // namespace tridem

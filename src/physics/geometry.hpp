@@ -1,0 +1,141 @@
+#pragma once
+// Triangle geometry shared by every backend: signed area, poses, bounding boxes and the
+// two overlap tests. The exact test is the separating-axis theorem (two convex polygons
+// are disjoint iff the normal of some edge separates them); the paper's direct area
+// method (a vertex of one inside the other) is kept as its baseline because it misses
+// overlaps where edges cross with no vertex inside (contact-model.md).
+#include "tridem/hd.hpp"
+#include "tridem/vec2.hpp"
+
+namespace tridem::physics {
+
+template <class Real>
+struct Triangle {
+  Vec2<Real> v[3];  ///< counter-clockwise
+};
+
+template <class Real>
+struct Aabb {
+  Vec2<Real> lo, hi;
+};
+
+/// Twice the signed area of (a, b, c): positive when counter-clockwise.
+template <class Real>
+TRIDEM_HD inline Real twice_signed_area(Vec2<Real> a, Vec2<Real> b, Vec2<Real> c) {
+  return cross(b - a, c - a);
+}
+
+template <class Real>
+TRIDEM_HD inline Real signed_area(const Triangle<Real>& t) {
+  return Real(0.5) * twice_signed_area(t.v[0], t.v[1], t.v[2]);
+}
+
+template <class Real>
+TRIDEM_HD inline Vec2<Real> centroid(const Triangle<Real>& t) {
+  return (t.v[0] + t.v[1] + t.v[2]) / Real(3);
+}
+
+/// Vertices of a rigid triangle at pose (c, θ) from its body-frame offsets r.
+template <class Real>
+TRIDEM_HD inline Triangle<Real> place(Vec2<Real> c, Real theta, const Vec2<Real> r[3]) {
+  const Real cs = math::cos(theta), sn = math::sin(theta);
+  return {{c + rotate(r[0], cs, sn), c + rotate(r[1], cs, sn), c + rotate(r[2], cs, sn)}};
+}
+
+template <class Real>
+TRIDEM_HD inline Aabb<Real> bounding_box(const Triangle<Real>& t) {
+  Aabb<Real> b{t.v[0], t.v[0]};
+  for (int k = 1; k < 3; ++k) {
+    b.lo.x = t.v[k].x < b.lo.x ? t.v[k].x : b.lo.x;
+    b.lo.y = t.v[k].y < b.lo.y ? t.v[k].y : b.lo.y;
+    b.hi.x = t.v[k].x > b.hi.x ? t.v[k].x : b.hi.x;
+    b.hi.y = t.v[k].y > b.hi.y ? t.v[k].y : b.hi.y;
+  }
+  return b;
+}
+
+/// The paper's pre-filter. Touching boxes count as overlapping: the exact test decides.
+template <class Real>
+TRIDEM_HD inline bool boxes_overlap(const Aabb<Real>& a, const Aabb<Real>& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
+/// True when an edge normal of `a` separates the two (touching counts as separated:
+/// the overlap then has zero area and the contact force is zero).
+template <class Real>
+TRIDEM_HD inline bool edge_of_a_separates(const Triangle<Real>& a, const Triangle<Real>& b) {
+  for (int e = 0; e < 3; ++e) {
+    const Vec2<Real> p = a.v[e];
+    const Vec2<Real> d = a.v[(e + 1) % 3] - p;
+    // For a CCW triangle, cross(d, q - p) >= 0 on the inner side of edge e.
+    bool all_outside = true;
+    for (int k = 0; k < 3 && all_outside; ++k) all_outside = cross(d, b.v[k] - p) <= Real(0);
+    if (all_outside) return true;
+  }
+  return false;
+}
+
+/// Exact overlap test by separating axes (six edge normals).
+template <class Real>
+TRIDEM_HD inline bool triangles_overlap(const Triangle<Real>& a, const Triangle<Real>& b) {
+  return !edge_of_a_separates(a, b) && !edge_of_a_separates(b, a);
+}
+
+/// Point strictly inside a CCW triangle (the paper's Eq. (1) signs).
+template <class Real>
+TRIDEM_HD inline bool point_inside(const Triangle<Real>& t, Vec2<Real> p) {
+  return twice_signed_area(t.v[0], t.v[1], p) > Real(0) &&
+         twice_signed_area(t.v[1], t.v[2], p) > Real(0) &&
+         twice_signed_area(t.v[2], t.v[0], p) > Real(0);
+}
+
+/// The paper's direct area method: some vertex of one triangle lies inside the other.
+template <class Real>
+TRIDEM_HD inline bool direct_area_overlap(const Triangle<Real>& a, const Triangle<Real>& b) {
+  for (int k = 0; k < 3; ++k)
+    if (point_inside(b, a.v[k]) || point_inside(a, b.v[k])) return true;
+  return false;
+}
+
+/// Parameter interval [t0, t1] of the segment p + t·d, t in [0, 1], that lies inside the
+/// CCW triangle (u0, u1, u2). Returns false when nothing of positive length remains.
+template <class Real>
+TRIDEM_HD inline bool clip_segment(Vec2<Real> p, Vec2<Real> d, Vec2<Real> u0, Vec2<Real> u1,
+                                   Vec2<Real> u2, Real& t0, Real& t1) {
+  t0 = Real(0);
+  t1 = Real(1);
+  const Vec2<Real> u[3] = {u0, u1, u2};
+  for (int k = 0; k < 3; ++k) {
+    // Inside edge k: f(t) = f0 + t·fd >= 0, the signed area with the edge.
+    const Vec2<Real> e = u[(k + 1) % 3] - u[k];
+    const Real f0 = cross(e, p - u[k]);
+    const Real fd = cross(e, d);
+    if (fd == Real(0)) {
+      if (f0 < Real(0)) return false;
+    } else {
+      const Real t = -f0 / fd;
+      if (fd > Real(0)) t0 = t > t0 ? t : t0;
+      else t1 = t < t1 ? t : t1;
+    }
+  }
+  return t1 > t0;
+}
+
+/// Length of the longest edge.
+template <class Real>
+TRIDEM_HD inline Real longest_edge(const Triangle<Real>& t) {
+  Real l = Real(0);
+  for (int e = 0; e < 3; ++e) {
+    const Real le = norm(t.v[(e + 1) % 3] - t.v[e]);
+    l = le > l ? le : l;
+  }
+  return l;
+}
+
+/// Smallest height: twice the area over the longest edge.
+template <class Real>
+TRIDEM_HD inline Real smallest_height(const Triangle<Real>& t) {
+  return Real(2) * signed_area(t) / longest_edge(t);
+}
+
+}  // namespace tridem::physics

@@ -1,0 +1,47 @@
+#pragma once
+// Symplectic Euler, the paper's Eqs. (5)–(7): velocities first, then positions with the
+// new velocities. Optional Cundall local damping removes a fraction α of the unbalanced
+// force against each velocity component, for quasi-static runs.
+#include "tridem/hd.hpp"
+#include "tridem/vec2.hpp"
+
+namespace tridem::physics {
+
+template <class Real>
+TRIDEM_HD inline Real local_damping(Real force, Real velocity, Real alpha) {
+  const Real sign = velocity > Real(0) ? Real(1) : (velocity < Real(0) ? Real(-1) : Real(0));
+  return force - alpha * (force < Real(0) ? -force : force) * sign;
+}
+
+template <class Real>
+struct Pose {
+  Vec2<Real> c;
+  Real theta;
+  Vec2<Real> v;
+  Real w;
+};
+
+/// Advances a free body by one step under contact force f, torque m and gravity g.
+template <class Real>
+TRIDEM_HD inline void integrate_free(Pose<Real>& p, Vec2<Real> f, Real m, Real inv_mass,
+                                     Real inv_inertia, Vec2<Real> g, Real alpha, Real dt) {
+  const Real mass = Real(1) / inv_mass;
+  Vec2<Real> total = f + g * mass;
+  if (alpha > Real(0)) {
+    total = {local_damping(total.x, p.v.x, alpha), local_damping(total.y, p.v.y, alpha)};
+    m = local_damping(m, p.w, alpha);
+  }
+  p.v += total * (inv_mass * dt);
+  p.w += m * inv_inertia * dt;
+  p.c += p.v * dt;
+  p.theta += p.w * dt;
+}
+
+/// A fixed or prescribed body keeps its velocity and moves with it.
+template <class Real>
+TRIDEM_HD inline void integrate_prescribed(Pose<Real>& p, Real dt) {
+  p.c += p.v * dt;
+  p.theta += p.w * dt;
+}
+
+}  // namespace tridem::physics

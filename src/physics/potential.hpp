@@ -1,0 +1,48 @@
+#pragma once
+// Munjiza's triangle potential φ(P) = min_k 3A_k(P)/A: one at the centroid, zero on the
+// boundary. In the sub-triangle S_k = (c, x_k, x_k+1) it is linear,
+// φ = 3·cross(e_k, P − x_k) / (2A), so an edge clipped to S_k carries a linear load whose
+// integral and centroid are exact (contact-model.md, "The potential of a triangle").
+#include "physics/geometry.hpp"
+
+namespace tridem::physics {
+
+/// φ of the CCW triangle t (area `area`) at P, using the linear form of sub-triangle k.
+template <class Real>
+TRIDEM_HD inline Real potential_in_sub_triangle(const Triangle<Real>& t, Real area, int k,
+                                                Vec2<Real> p) {
+  const Vec2<Real> a = t.v[k];
+  const Vec2<Real> b = t.v[(k + 1) % 3];
+  return Real(3) * cross(b - a, p - a) / (Real(2) * area);
+}
+
+/// φ anywhere inside t: the minimum over the three linear forms (outside t it is < 0).
+template <class Real>
+TRIDEM_HD inline Real potential(const Triangle<Real>& t, Real area, Vec2<Real> p) {
+  Real phi = potential_in_sub_triangle(t, area, 0, p);
+  for (int k = 1; k < 3; ++k) {
+    const Real pk = potential_in_sub_triangle(t, area, k, p);
+    phi = pk < phi ? pk : phi;
+  }
+  return phi;
+}
+
+/// ∫ φ dΓ over the segment [q0, q1] lying in sub-triangle k, with its load centroid.
+template <class Real>
+struct LinearLoad {
+  Real integral = 0;   ///< |q1 − q0| (φ0 + φ1) / 2, metres
+  Vec2<Real> point{};  ///< centroid of the trapezoidal load
+};
+
+template <class Real>
+TRIDEM_HD inline LinearLoad<Real> linear_load(Vec2<Real> q0, Vec2<Real> q1, Real phi0,
+                                              Real phi1) {
+  LinearLoad<Real> l;
+  const Real s = phi0 + phi1;
+  l.integral = norm(q1 - q0) * s * Real(0.5);
+  l.point = s > Real(0) ? q0 + (q1 - q0) * ((phi0 + Real(2) * phi1) / (Real(3) * s))
+                        : (q0 + q1) * Real(0.5);
+  return l;
+}
+
+}  // namespace tridem::physics
