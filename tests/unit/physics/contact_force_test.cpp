@@ -1,0 +1,115 @@
+// The pair force: action and reaction, balance of moments, symmetry of the roles, and the
+// friction spring-slider.
+#include "physics/contact_force.hpp"
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace tridem::physics {
+namespace {
+
+using V = Vec2<double>;
+
+Body<double> make_body(V a, V b, V c, V v = {}, double w = 0, double mass = 1) {
+  Body<double> body;
+  body.tri = {{a, b, c}};
+  if (signed_area(body.tri) < 0) std::swap(body.tri.v[1], body.tri.v[2]);
+  body.c = centroid(body.tri);
+  body.v = v;
+  body.w = w;
+  body.area = signed_area(body.tri);
+  body.mass = mass;
+  return body;
+}
+
+const ContactLaw<double> kLaw{1e6, 1e5, 0.5, 0.3};
+
+TEST(ContactForce, SeparatedPairHasNoForceAndDropsSlip) {
+  const auto a = make_body({0, 0}, {1, 0}, {0, 1});
+  const auto b = make_body({3, 0}, {4, 0}, {3, 1});
+  PairSlip<double> slip{{1, 2, 3, 4, 5, 6}};
+  const PairForce<double> f = pair_force(a, b, kLaw, 1e-4, slip);
+  EXPECT_FALSE(f.touching);
+  EXPECT_EQ(f.force_a.x, 0.0);
+  for (double s : slip.s) EXPECT_EQ(s, 0.0);
+}
+
+TEST(ContactForce, MomentsBalanceForRandomOverlaps) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int touching = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const V shift{0.6 * u(rng), 0.6 * u(rng)};
+    const auto a = make_body({u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)},
+                             {u(rng), u(rng)}, u(rng));
+    const auto b = make_body(V{u(rng), u(rng)} + shift, V{u(rng), u(rng)} + shift,
+                             V{u(rng), u(rng)} + shift, {u(rng), u(rng)}, u(rng));
+    if (a.area < 1e-3 || b.area < 1e-3) continue;
+    PairSlip<double> slip{{1e-3 * u(rng), 0, 0, 0, 0, 1e-3 * u(rng)}};
+    const PairForce<double> f = pair_force(a, b, kLaw, 1e-3, slip);
+    if (!f.touching) continue;
+    ++touching;
+    // b receives −force_a; the total moment about the origin must vanish.
+    const double moment =
+        f.torque_a + f.torque_b + cross(a.c, f.force_a) + cross(b.c, -f.force_a);
+    const double scale = norm(f.force_a) * 4 + std::abs(f.torque_a) + std::abs(f.torque_b);
+    EXPECT_NEAR(moment, 0.0, 1e-12 * scale) << "trial " << trial;
+  }
+  EXPECT_GT(touching, 100);
+}
+
+TEST(ContactForce, SwappingRolesReversesTheForce) {
+  ContactLaw<double> frictionless = kLaw;
+  frictionless.friction = 0;
+  frictionless.damping = 0;
+  const auto a = make_body({0, 0}, {1, 0}, {0.3, 1});
+  const auto b = make_body({0.5, 0.7}, {1.5, 0.6}, {1.0, 1.8});
+  PairSlip<double> s1{}, s2{};
+  const auto ab = pair_force(a, b, frictionless, 1e-4, s1);
+  const auto ba = pair_force(b, a, frictionless, 1e-4, s2);
+  ASSERT_TRUE(ab.touching);
+  EXPECT_NEAR(ab.force_a.x, -ba.force_a.x, 1e-9);
+  EXPECT_NEAR(ab.force_a.y, -ba.force_a.y, 1e-9);
+  EXPECT_NEAR(ab.torque_a, ba.torque_b, 1e-9);
+  EXPECT_NEAR(ab.torque_b, ba.torque_a, 1e-9);
+}
+
+TEST(ContactForce, FlatContactPushesApartWithPotentialForce) {
+  // Contactor's bottom edge of length 1 at depth d into a wide flat target (height 10):
+  // both roles push the contactor up.
+  const double d = 1e-3;
+  const auto target = make_body({10, 0}, {-10, 0}, {0, -10}, {}, 0, 0);
+  const auto c = make_body({-0.5, -d}, {0.5, -d}, {0, 1});
+  ContactLaw<double> law{1e6, 1e5, 0, 0};
+  PairSlip<double> slip{};
+  const auto f = pair_force(c, target, law, 1e-4, slip);
+  EXPECT_NEAR(f.force_a.x, 0.0, 1e-6);
+  // Lower bound: the contactor edge alone gives p·0.3·d.
+  EXPECT_GT(f.force_a.y, law.penalty * 0.3 * d);
+}
+
+TEST(ContactForce, FrictionSpringSticksThenSlides) {
+  const double d = 1e-3;
+  const auto target = make_body({10, 0}, {-10, 0}, {0, -10}, {}, 0, 0);
+  ContactLaw<double> law{1e6, 1e5, 0.5, 0};
+  // Slow tangential motion: the spring force −p_t·s stays under the cap.
+  {
+    const auto c = make_body({-0.5, -d}, {0.5, -d}, {0, 1}, {1e-3, 0});
+    PairSlip<double> slip{};
+    const auto f = pair_force(c, target, law, 1e-3, slip);
+    EXPECT_LT(f.force_a.x, 0.0);       // opposes the motion
+    EXPECT_NEAR(slip.s[0], 1e-6, 1e-12);  // bottom edge slips along its own direction
+  }
+  // Fast motion (p_t·v·dt far above μN): the tangential force is capped at μ·N and the slip is reset to match.
+  {
+    const auto c = make_body({-0.5, -d}, {0.5, -d}, {0, 1}, {100, 0});
+    PairSlip<double> slip{};
+    const auto f = pair_force(c, target, law, 1e-3, slip);
+    // The slanted edges carry loads of order d² along other directions: 1% slack.
+    EXPECT_NEAR(std::abs(f.force_a.x), 0.5 * f.force_a.y, 1e-2 * f.force_a.y);
+    EXPECT_LT(std::abs(slip.s[0]) * law.tangential_penalty, 0.5 * f.force_a.y + 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace tridem::physics
