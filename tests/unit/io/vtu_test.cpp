@@ -1,0 +1,152 @@
+#include "io_test_support.hpp"
+#include "tridem/error.hpp"
+#include "tridem/output.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace tridem {
+namespace {
+
+void expect_round_trip(Encoding encoding) {
+  test::TempDir tmp;
+  const Snapshot s = test::sample_snapshot();
+  const auto file = tmp.path() / "frame.vtu";
+  write_vtu_frame(file, s, encoding);
+  const Snapshot r = read_vtu_frame(file);
+
+  EXPECT_EQ(r.step, s.step);
+  EXPECT_EQ(r.time, s.time);
+  ASSERT_EQ(r.size(), s.size());
+  // Both encodings are exact: raw bytes, or %.17g text.
+  EXPECT_EQ(r.x1, s.x1);
+  EXPECT_EQ(r.y1, s.y1);
+  EXPECT_EQ(r.x2, s.x2);
+  EXPECT_EQ(r.y2, s.y2);
+  EXPECT_EQ(r.x3, s.x3);
+  EXPECT_EQ(r.y3, s.y3);
+  EXPECT_EQ(r.vx, s.vx);
+  EXPECT_EQ(r.vy, s.vy);
+  EXPECT_EQ(r.omega, s.omega);
+  EXPECT_EQ(r.fx, s.fx);
+  EXPECT_EQ(r.fy, s.fy);
+  EXPECT_EQ(r.torque, s.torque);
+  EXPECT_EQ(r.material, s.material);
+  EXPECT_EQ(r.motion, s.motion);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    EXPECT_NEAR(r.x[k], s.x[k], 1e-15);  // recomputed as the vertex mean
+    EXPECT_NEAR(r.y[k], s.y[k], 1e-15);
+  }
+}
+
+TEST(Vtu, BinaryRoundTrip) { expect_round_trip(Encoding::Binary); }
+TEST(Vtu, AsciiRoundTrip) { expect_round_trip(Encoding::Ascii); }
+
+TEST(Vtu, DeclaresTheRequestedEncoding) {
+  test::TempDir tmp;
+  const Snapshot s = test::sample_snapshot();
+  write_vtu_frame(tmp.path() / "b.vtu", s, Encoding::Binary);
+  write_vtu_frame(tmp.path() / "a.vtu", s, Encoding::Ascii);
+  const std::string binary = test::read_file(tmp.path() / "b.vtu");
+  const std::string ascii = test::read_file(tmp.path() / "a.vtu");
+  EXPECT_NE(binary.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_NE(binary.find("format=\"binary\""), std::string::npos);
+  EXPECT_EQ(binary.find("format=\"ascii\""), std::string::npos);
+  EXPECT_EQ(ascii.find("format=\"binary\""), std::string::npos);
+  for (const char* name : {"\"id\"", "\"velocity\"", "\"angular_velocity\"", "\"force\"",
+                           "\"torque\"", "\"material\"", "\"motion\""})
+    EXPECT_NE(ascii.find(name), std::string::npos) << name;
+  EXPECT_NE(ascii.find("NumberOfPoints=\"9\" NumberOfCells=\"3\""), std::string::npos);
+}
+
+TEST(Vtu, EmptyFrameRoundTrips) {
+  test::TempDir tmp;
+  Snapshot s;
+  s.step = 3;
+  write_vtu_frame(tmp.path() / "e.vtu", s);
+  const Snapshot r = read_vtu_frame(tmp.path() / "e.vtu");
+  EXPECT_EQ(r.size(), 0u);
+  EXPECT_EQ(r.step, 3);
+}
+
+TEST(Vtu, CellsOutOfIdOrderAreReordered) {
+  test::TempDir tmp;
+  const auto file = tmp.path() / "f.vtu";
+  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
+  std::string text = test::read_file(file);
+  // Swap the ids of cells 0 and 1; their data then belongs to the other particle.
+  const std::string ids = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 2";
+  const auto at = text.find(ids);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, ids.size(), "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n1 0 2");
+  std::ofstream(file, std::ios::binary) << text;
+  const Snapshot s = test::sample_snapshot();
+  const Snapshot r = read_vtu_frame(file);
+  EXPECT_EQ(r.vx[0], s.vx[1]);
+  EXPECT_EQ(r.x1[1], s.x1[0]);
+  EXPECT_EQ(r.material[0], s.material[1]);
+}
+
+TEST(Vtu, DuplicateIdIsRefused) {
+  test::TempDir tmp;
+  const auto file = tmp.path() / "f.vtu";
+  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
+  std::string text = test::read_file(file);
+  const std::string ids = "format=\"ascii\">\n0 1 2";
+  const auto at = text.find(ids);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, ids.size(), "format=\"ascii\">\n0 1 1");
+  std::ofstream(file, std::ios::binary) << text;
+  EXPECT_THROW(read_vtu_frame(file), Error);
+}
+
+class VtuMalformed : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    file_ = tmp_.path() / "frame.vtu";
+    write_vtu_frame(file_, test::sample_snapshot(), Encoding::Binary);
+    text_ = test::read_file(file_);
+  }
+  /// Replaces the first `from` by `to`, then expects an Error that names the file.
+  void expect_refused(const std::string& from, const std::string& to) {
+    std::string text = text_;
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::ofstream(file_, std::ios::binary | std::ios::trunc) << text;
+    try {
+      read_vtu_frame(file_);
+      ADD_FAILURE() << "accepted a frame with '" << from << "' replaced by '" << to << "'";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(file_.string()), std::string::npos) << e.what();
+    }
+  }
+  test::TempDir tmp_;
+  std::filesystem::path file_;
+  std::string text_;
+};
+
+TEST_F(VtuMalformed, MissingFile) {
+  EXPECT_THROW(read_vtu_frame(tmp_.path() / "nope.vtu"), Error);
+}
+TEST_F(VtuMalformed, Truncated) { expect_refused("</CellData>", ""); }
+TEST_F(VtuMalformed, NotAFrame) { expect_refused("UnstructuredGrid\"", "PolyData\""); }
+TEST_F(VtuMalformed, MissingArray) { expect_refused("Name=\"motion\"", "Name=\"moton\""); }
+TEST_F(VtuMalformed, WrongComponents) {
+  expect_refused("Name=\"velocity\" NumberOfComponents=\"3\"",
+                 "Name=\"velocity\" NumberOfComponents=\"2\"");
+}
+TEST_F(VtuMalformed, BadBase64) {
+  const std::string head = "Name=\"torque\" NumberOfComponents=\"1\" format=\"binary\">\n";
+  expect_refused(head, head + "!");
+}
+TEST_F(VtuMalformed, WrongCellCount) {
+  expect_refused("NumberOfCells=\"3\"", "NumberOfCells=\"4\"");
+}
+TEST_F(VtuMalformed, UnknownFormat) {
+  expect_refused("format=\"binary\"", "format=\"appended\"");
+}
+
+}  // namespace
+}  // namespace tridem
