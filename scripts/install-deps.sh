@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs tridem's build dependencies from Debian's packages (Debian 12 or newer,
+# Ubuntu 24.04). Runs apt-get through sudo when not root.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  cmake ninja-build g++ pkg-config \
+  libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev

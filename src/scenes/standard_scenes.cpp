@@ -1,0 +1,50 @@
+#include "tridem/standard_scenes.hpp"
+
+#include "tridem/generate.hpp"
+
+#include <cmath>
+
+namespace tridem {
+
+namespace {
+
+TriangleSpec fixed_triangle(Vec2d a, Vec2d b, Vec2d c) {
+  TriangleSpec t;
+  t.vertices = {a, b, c};
+  t.motion = Motion::Fixed;
+  return t;
+}
+
+}  // namespace
+
+Scene dense_pile(std::size_t n, double size) {
+  Scene s;
+  s.source = "dense_pile";
+  s.simulation.steps = 100;
+  s.simulation.gravity = {0, -9.81};
+  s.materials.push_back({"sand", 2650, 1e8, 1e7, 0.5, 0.3});
+  // A lattice row holds about 2·width/size triangles, a row is size·√3/2 high: choose the
+  // width so that the region is about square.
+  const double row_height = size * std::sqrt(3.0) / 2;
+  const double per_area = 2.0 / (size * row_height);
+  const double side = std::sqrt(static_cast<double>(n) / per_area);
+  LatticeSpec lattice;
+  lattice.region_min = {0, 0};
+  lattice.region_max = {side + size, side + row_height};
+  lattice.size = size;
+  lattice.gap = 0;
+  s.triangles = generate_lattice(lattice);
+  // Grow each grain by 0.2% about its centroid: every lattice neighbour now overlaps.
+  for (TriangleSpec& t : s.triangles) {
+    const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
+    for (Vec2d& v : t.vertices) v = c + (v - c) * 1.002;
+  }
+  const double w = lattice.region_max.x, h = lattice.region_max.y, depth = w + 2 * size;
+  const double skin = 0.001 * size;  // walls touch the outer grains
+  s.triangles.push_back(fixed_triangle({w + depth, -skin + 0}, {-depth, -skin}, {0.5 * w, -skin - depth}));
+  s.triangles.push_back(fixed_triangle({skin, -2 * size}, {skin, h + size}, {-depth + skin, 0.5 * h}));
+  s.triangles.push_back(fixed_triangle({w - skin, h + size}, {w - skin, -2 * size}, {w + depth - skin, 0.5 * h}));
+  return s;
+}
+
+}  // namespace tridem
