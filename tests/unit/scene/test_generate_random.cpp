@@ -40,7 +40,7 @@ void expect_inside(const std::vector<TriangleSpec>& ts, Vec2d lo, Vec2d hi) {
 TEST(SceneRandom, FillsGridWithoutOverlapInsideRegion) {
   for (double gap : {0.0, 0.1, 0.5})
     for (double irregularity : {0.0, 0.5, 0.95}) {
-      const RandomPackingSpec spec = packing({-2, 1}, {18, 16}, 1.0, gap, irregularity, 7);
+      const RandomPackingSpec spec = packing({-2, 1}, {28, 26}, 1.0, gap, irregularity, 7);
       const auto ts = generate_random(spec);
       ASSERT_EQ(ts.size(), count_random_cells(spec));
       ASSERT_GE(ts.size(), 200u);

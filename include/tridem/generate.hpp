@@ -1,0 +1,55 @@
+#pragma once
+// Particle generators, shared by scene files ([[generate]]) and by code (tests, benchmarks).
+// Both guarantee that no two generated triangles overlap, emit counter-clockwise vertices,
+// and are deterministic: the same spec gives the same triangles on every platform (up to
+// the last bits of the C library's sin/cos). Invalid specs, and specs that would make no
+// triangle or more than kMaxGeneratedTriangles, throw SceneError.
+#include "tridem/scene.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tridem {
+
+/// Hard upper limit on one generator's output: beyond it a scene is almost certainly a
+/// units mistake, and the memory (~100 bytes per triangle) would not be there anyway.
+inline constexpr std::size_t kMaxGeneratedTriangles = 200'000'000;
+
+/// Equilateral triangles of edge `size` on a triangular tiling (alternating up/down in
+/// rows), spaced so that facing edges of neighbours are gap·size apart; every triangle lies
+/// wholly inside [region_min, region_max]. Rows go bottom to top, left to right in a row.
+struct LatticeSpec {
+  int material = 0;
+  Vec2d region_min{};
+  Vec2d region_max{};
+  double size = 0;     ///< edge length, > 0
+  double gap = 0.1;    ///< separation of neighbours as a fraction of size, >= 0
+  Vec2d velocity{};    ///< given to every triangle
+};
+
+/// Triangles of circumradius size/√3 (equilateral of edge `size` when irregularity = 0),
+/// one per cell of a square grid of pitch 2R(1+gap), randomly rotated and shifted inside
+/// their cell. Cells are filled bottom row first, left to right, up to `count`.
+struct RandomPackingSpec {
+  int material = 0;
+  Vec2d region_min{};
+  Vec2d region_max{};
+  double size = 0;            ///< edge length of the undistorted triangle, > 0
+  double gap = 0.1;           ///< >= 0; pitch 2R(1+gap), jitter up to R·gap/2 per axis
+  Vec2d velocity{};
+  std::uint64_t seed = 1;
+  std::size_t count = 0;      ///< 0: one triangle per cell of the region
+  double irregularity = 0;    ///< in [0, 1): 0 equilateral, towards 1 more distorted
+};
+
+/// How many triangles generate_lattice(spec) makes, without making them.
+std::size_t count_lattice(const LatticeSpec& spec);
+/// How many cells of the region can hold a triangle (count = 0 fills them all).
+std::size_t count_random_cells(const RandomPackingSpec& spec);
+
+std::vector<TriangleSpec> generate_lattice(const LatticeSpec& spec);
+/// Throws SceneError if count exceeds count_random_cells(spec).
+std::vector<TriangleSpec> generate_random(const RandomPackingSpec& spec);
+
+}  // namespace tridem

@@ -1,0 +1,28 @@
+#pragma once
+// Reading scenes from TOML files (format: docs/scene-format.md) and checking scenes built in
+// code. Every refusal is a tridem::SceneError whose message names the file, the line:column
+// where one is known, the table, the key and, for triangles, the particle id.
+#include "tridem/scene.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace tridem {
+
+/// Reads, parses and validates a scene file. Throws SceneError if the file can't be read
+/// or the scene is invalid.
+Scene read_scene(const std::filesystem::path& file);
+
+/// Parses and validates a scene from TOML text; `source_name` (usually the path) prefixes
+/// every message and is stored in Scene::source. Explicit [[triangle]]s come first, in file
+/// order, then the output of each [[generate]] in file order; clockwise triangles are
+/// reordered to counter-clockwise.
+Scene parse_scene(std::string_view toml_text, std::string source_name);
+
+/// Checks a Scene however it was made: settings in range, materials valid and uniquely
+/// named, at least one triangle, material indices in range, numbers finite, triangles not
+/// degenerate, fixed triangles at rest. Changes nothing (clockwise triangles are accepted).
+void validate_scene(const Scene& scene);
+
+}  // namespace tridem

@@ -1,0 +1,27 @@
+#pragma once
+// Spec checks shared by the two generators, so code that calls them directly gets the same
+// refusals as a scene file (whose reader checks first, to name the offending key).
+#include "tridem/vec2.hpp"
+
+#include <cstddef>
+#include <string_view>
+
+namespace tridem::scene_detail {
+
+/// Throws SceneError unless material >= 0, region finite with max > min on both axes,
+/// size finite and > 0, gap finite and >= 0, velocity finite.
+void check_generator_common(std::string_view generator, int material, Vec2d region_min,
+                            Vec2d region_max, double size, double gap, Vec2d velocity);
+
+/// Throws SceneError if `n` triangles is none at all or more than kMaxGeneratedTriangles.
+void check_generated_count(std::string_view generator, std::size_t n);
+
+/// Converts a non-negative count computed in double (which may be astronomically large for
+/// a units mistake) to size_t without overflow: anything too big saturates.
+std::size_t saturating_count(double n);
+
+/// floor(x) tolerant of rounding just below an integer, so that a region exactly k pitches
+/// wide holds k items and not k-1.
+double tolerant_floor(double x);
+
+}  // namespace tridem::scene_detail

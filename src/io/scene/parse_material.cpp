@@ -1,0 +1,43 @@
+// [[material]] blocks and the by-name lookup that triangles and generators use.
+#include "io/scene/scene_sections.hpp"
+
+#include <fmt/format.h>
+
+namespace tridem::scene_detail {
+
+Material parse_material(const toml::table& table, const std::string& source, std::size_t number,
+                        const std::vector<Material>& earlier) {
+  TableReader r(table, source, fmt::format("[[material]] #{}", number));
+  Material m;
+  m.name = r.required(r.string("name"), "name");
+  if (m.name.empty()) r.fail("name", "must not be empty");
+  for (const Material& e : earlier)
+    if (e.name == m.name) r.fail("name", fmt::format("duplicate material name \"{}\"", m.name));
+  m.density = r.required(r.real("density"), "density");
+  if (!(m.density > 0)) r.fail("density", fmt::format("must be > 0 (kg/m^3), got {}", m.density));
+  m.penalty = r.required(r.real("penalty"), "penalty");
+  if (!(m.penalty > 0)) r.fail("penalty", fmt::format("must be > 0 (Pa), got {}", m.penalty));
+  m.friction = r.real("friction").value_or(0.0);
+  if (!(m.friction >= 0)) r.fail("friction", fmt::format("must be >= 0, got {}", m.friction));
+  m.damping = r.real("damping").value_or(0.0);
+  if (!(m.damping >= 0 && m.damping < 1))
+    r.fail("damping", fmt::format("must be in [0, 1), got {}", m.damping));
+  m.tangential_penalty = r.real("tangential_penalty").value_or(0.1 * m.penalty);
+  if (!(m.tangential_penalty > 0))
+    r.fail("tangential_penalty", fmt::format("must be > 0 (Pa), got {}", m.tangential_penalty));
+  r.reject_unknown_keys();
+  return m;
+}
+
+int lookup_material(TableReader& reader, const std::vector<Material>& materials) {
+  const std::string name = reader.required(reader.string("material"), "material");
+  std::string known;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (materials[i].name == name) return static_cast<int>(i);
+    known += fmt::format("{}\"{}\"", known.empty() ? "" : ", ", materials[i].name);
+  }
+  reader.fail("material",
+              fmt::format("unknown material \"{}\" (defined: {})", name, known));
+}
+
+}  // namespace tridem::scene_detail

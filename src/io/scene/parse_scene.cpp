@@ -1,0 +1,115 @@
+// The document level of a scene file: syntax errors, which tables exist, and the order in
+// which sections are read (materials before the triangles that name them).
+#include "io/scene/scene_sections.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+
+#include <fmt/format.h>
+
+namespace tridem {
+namespace {
+
+using scene_detail::where;
+
+// [[name]] blocks, or none. `[name]` (a single table) is a common slip and gets its own
+// message, since toml++ would otherwise happily accept it as a different shape.
+std::vector<const toml::table*> blocks(const toml::table& root, std::string_view name,
+                                       const std::string& source) {
+  std::vector<const toml::table*> out;
+  const toml::node* n = root.get(name);
+  if (!n) return out;
+  const toml::array* array = n->as_array();
+  if (!array)
+    throw SceneError(fmt::format("{}: '{}' must be an array of tables, written [[{}]], got {}",
+                                 where(source, n->source()), name, name,
+                                 scene_detail::describe_type(n->type())));
+  for (const toml::node& element : *array) {
+    const toml::table* t = element.as_table();
+    if (!t)
+      throw SceneError(fmt::format("{}: each '{}' entry must be a table, written [[{}]], got {}",
+                                   where(source, element.source()), name, name,
+                                   scene_detail::describe_type(element.type())));
+    out.push_back(t);
+  }
+  return out;
+}
+
+const toml::table* single_table(const toml::table& root, std::string_view name,
+                                const std::string& source) {
+  const toml::node* n = root.get(name);
+  if (!n) return nullptr;
+  const toml::table* t = n->as_table();
+  if (!t)
+    throw SceneError(fmt::format("{}: '{}' must be a table, written [{}], got {}",
+                                 where(source, n->source()), name, name,
+                                 scene_detail::describe_type(n->type())));
+  return t;
+}
+
+void reject_unknown_top_level(const toml::table& root, const std::string& source) {
+  static constexpr std::string_view kKnown[] = {"simulation", "output", "material", "triangle",
+                                                "generate"};
+  const toml::key* first = nullptr;
+  for (const auto& [key, value] : root) {
+    bool known = false;
+    for (std::string_view k : kKnown) known = known || key.str() == k;
+    if (!known && (!first || scene_detail::precedes(key.source().begin, first->source().begin)))
+      first = &key;
+  }
+  if (first)
+    throw SceneError(fmt::format(
+        "{}: unknown top-level table or key '{}' (expected [simulation], [output], "
+        "[[material]], [[triangle]], [[generate]])",
+        where(source, first->source()), first->str()));
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, std::string source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    throw SceneError(fmt::format("{}: TOML syntax error: {}", where(source_name, e.source()),
+                                 e.description()));
+  }
+  const std::string& source = source_name;
+  reject_unknown_top_level(root, source);
+
+  Scene scene;
+  const toml::table* simulation = single_table(root, "simulation", source);
+  if (!simulation)
+    throw SceneError(fmt::format("{}: missing required table [simulation] (it must set steps)",
+                                 source));
+  scene.simulation = scene_detail::parse_simulation(*simulation, source);
+  if (const toml::table* output = single_table(root, "output", source))
+    scene.output = scene_detail::parse_output(*output, source);
+
+  const auto materials = blocks(root, "material", source);
+  if (materials.empty())
+    throw SceneError(fmt::format("{}: no [[material]] defined; at least one is required", source));
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    scene.materials.push_back(
+        scene_detail::parse_material(*materials[i], source, i + 1, scene.materials));
+
+  // Ids: explicit triangles in file order, then each generator's output in file order.
+  const auto triangles = blocks(root, "triangle", source);
+  const auto generators = blocks(root, "generate", source);
+  scene.triangles.reserve(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    scene.triangles.push_back(scene_detail::parse_triangle(*triangles[i], source, i + 1,
+                                                           scene.triangles.size(),
+                                                           scene.materials));
+  for (std::size_t i = 0; i < generators.size(); ++i)
+    scene_detail::parse_generate(*generators[i], source, i + 1, scene.materials,
+                                 scene.triangles);
+  if (scene.triangles.empty())
+    throw SceneError(fmt::format(
+        "{}: the scene has no triangles; add [[triangle]] or [[generate]] blocks", source));
+
+  scene.source = std::move(source_name);
+  validate_scene(scene);  // a backstop: the checks above should already have caught everything
+  return scene;
+}
+
+}  // namespace tridem

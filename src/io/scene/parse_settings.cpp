@@ -1,0 +1,51 @@
+// [simulation] and [output]. Defaults come from the structs in scene.hpp so that a scene
+// built in code and one read from a file agree on them.
+#include "io/scene/scene_sections.hpp"
+
+#include <fmt/format.h>
+
+namespace tridem::scene_detail {
+
+SimulationSettings parse_simulation(const toml::table& table, const std::string& source) {
+  TableReader r(table, source, "[simulation]");
+  SimulationSettings s;
+  s.steps = r.required(r.integer("steps"), "steps");
+  if (s.steps <= 0) r.fail("steps", fmt::format("must be > 0, got {}", s.steps));
+  if (auto dt = r.real("dt")) {
+    if (!(*dt > 0)) r.fail("dt", fmt::format("must be > 0, got {} (omit dt for automatic)", *dt));
+    s.dt = *dt;
+  }
+  s.safety = r.real("safety").value_or(s.safety);
+  if (!(s.safety > 0 && s.safety <= 1))
+    r.fail("safety", fmt::format("must be in (0, 1], got {}", s.safety));
+  s.gravity = r.vec2("gravity").value_or(s.gravity);
+  s.backend = r.choice<Backend>("backend", {{"auto", Backend::Auto},
+                                            {"cpu", Backend::Cpu},
+                                            {"openmp", Backend::OpenMP},
+                                            {"cuda", Backend::Cuda}})
+                  .value_or(s.backend);
+  s.precision =
+      r.choice<Precision>("precision", {{"double", Precision::Double}, {"float", Precision::Float}})
+          .value_or(s.precision);
+  s.method = r.choice<Method>("method", {{"grid", Method::Grid}, {"all-pairs", Method::AllPairs}})
+                 .value_or(s.method);
+  s.local_damping = r.real("local_damping").value_or(s.local_damping);
+  if (!(s.local_damping >= 0 && s.local_damping < 1))
+    r.fail("local_damping", fmt::format("must be in [0, 1), got {}", s.local_damping));
+  r.reject_unknown_keys();
+  return s;
+}
+
+OutputSettings parse_output(const toml::table& table, const std::string& source) {
+  TableReader r(table, source, "[output]");
+  OutputSettings o;
+  o.dir = r.string("dir").value_or(o.dir);
+  if (o.dir.empty()) r.fail("dir", "must not be empty (use \".\" for the current folder)");
+  o.every = r.integer("every").value_or(o.every);
+  if (o.every < 0) r.fail("every", fmt::format("must be >= 0 (0 = no frames), got {}", o.every));
+  o.contacts = r.boolean("contacts").value_or(o.contacts);
+  r.reject_unknown_keys();
+  return o;
+}
+
+}  // namespace tridem::scene_detail

@@ -1,0 +1,50 @@
+// [[triangle]] blocks: one explicit grain each.
+#include "io/scene/scene_sections.hpp"
+#include "io/scene/triangle_shape.hpp"
+
+#include <fmt/format.h>
+
+namespace tridem::scene_detail {
+namespace {
+
+// `fixed` is the older, shorter spelling of `motion = "fixed"`; both may be given only if
+// they agree, since a file saying both "fixed = true" and "prescribed" has a mistake in it.
+Motion read_motion(TableReader& r) {
+  const std::optional<bool> fixed = r.boolean("fixed");
+  const std::optional<Motion> motion = r.choice<Motion>(
+      "motion",
+      {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}});
+  if (fixed && motion && (*fixed != (*motion == Motion::Fixed)))
+    r.fail("motion", fmt::format("conflicts with fixed = {}", *fixed ? "true" : "false"));
+  if (motion) return *motion;
+  return fixed.value_or(false) ? Motion::Fixed : Motion::Free;
+}
+
+}  // namespace
+
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
+                            std::size_t number, std::size_t id,
+                            const std::vector<Material>& materials) {
+  TableReader r(table, source, fmt::format("[[triangle]] #{} (particle id {})", number, id));
+  TriangleSpec t;
+  t.material = lookup_material(r, materials);
+  t.vertices = r.required(r.points<3>("vertices"), "vertices");
+  if (auto problem = shape_problem(t.vertices)) r.fail("vertices", *problem);
+  make_counter_clockwise(t.vertices);
+  t.velocity = r.vec2("velocity").value_or(Vec2d{});
+  t.angular_velocity = r.real("angular_velocity").value_or(0.0);
+  t.motion = read_motion(r);
+  if (t.motion == Motion::Fixed) {
+    // A fixed grain with a velocity is contradictory; refusing beats guessing which was meant.
+    if (t.velocity.x != 0 || t.velocity.y != 0)
+      r.fail("velocity", "a fixed triangle can't have a velocity (use motion = \"prescribed\" "
+                         "for a moving wall)");
+    if (t.angular_velocity != 0)
+      r.fail("angular_velocity", "a fixed triangle can't have an angular velocity (use "
+                                 "motion = \"prescribed\" for a moving wall)");
+  }
+  r.reject_unknown_keys();
+  return t;
+}
+
+}  // namespace tridem::scene_detail

@@ -1,0 +1,33 @@
+#pragma once
+// One parser per kind of table in a scene file; parse_scene.cpp walks the document and
+// calls them. Each refuses unknown keys in its own table.
+#include "io/scene/toml_table_reader.hpp"
+#include "tridem/scene.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tridem::scene_detail {
+
+SimulationSettings parse_simulation(const toml::table& table, const std::string& source);
+OutputSettings parse_output(const toml::table& table, const std::string& source);
+
+/// `number` is the 1-based position among the [[material]] blocks; `earlier` are those
+/// before it (names must be unique).
+Material parse_material(const toml::table& table, const std::string& source, std::size_t number,
+                        const std::vector<Material>& earlier);
+
+/// Reads the 'material' key of `reader`'s table and returns its index in `materials`.
+int lookup_material(TableReader& reader, const std::vector<Material>& materials);
+
+/// `number` is the 1-based position among the [[triangle]] blocks, `id` the particle id.
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
+                            std::size_t number, std::size_t id,
+                            const std::vector<Material>& materials);
+
+/// Appends the triangles of one [[generate]] block to `out` (whose size is the first id).
+void parse_generate(const toml::table& table, const std::string& source, std::size_t number,
+                    const std::vector<Material>& materials, std::vector<TriangleSpec>& out);
+
+}  // namespace tridem::scene_detail

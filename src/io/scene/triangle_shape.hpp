@@ -1,0 +1,31 @@
+#pragma once
+// Shape rules for one triangle, shared by the file reader, validate_scene and the tests so
+// that "degenerate" means the same thing everywhere.
+#include "tridem/vec2.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace tridem::scene_detail {
+
+/// A triangle is degenerate when its area <= kDegenerateAreaFactor · L², L its longest edge:
+/// scale-free, so it holds for grains of any size, and far above rounding noise of a true
+/// sliver while far below any triangle a user would mean to draw.
+inline constexpr double kDegenerateAreaFactor = 1e-12;
+
+/// Twice the signed area: > 0 for counter-clockwise vertices.
+inline double twice_signed_area(const std::array<Vec2d, 3>& v) {
+  return cross(v[1] - v[0], v[2] - v[0]);
+}
+
+/// Why these vertices can't be a grain (non-finite, degenerate), or nullopt if they can.
+std::optional<std::string> shape_problem(const std::array<Vec2d, 3>& v);
+
+/// Swaps two vertices of a clockwise triangle so that it becomes counter-clockwise.
+inline void make_counter_clockwise(std::array<Vec2d, 3>& v) {
+  if (twice_signed_area(v) < 0) std::swap(v[1], v[2]);
+}
+
+}  // namespace tridem::scene_detail

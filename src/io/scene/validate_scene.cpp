@@ -1,0 +1,103 @@
+// Checks for scenes however they were made. A scene built in code has no line numbers, so
+// messages name the scene's source (if any), the material or the particle id instead.
+#include "io/scene/triangle_shape.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace tridem {
+namespace {
+
+bool finite(Vec2d v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+class Refuser {
+ public:
+  explicit Refuser(const Scene& scene)
+      : prefix_(scene.source.empty() ? std::string("scene built in code") : scene.source) {}
+  [[noreturn]] void operator()(std::string_view what) const {
+    throw SceneError(fmt::format("{}: {}", prefix_, what));
+  }
+
+ private:
+  std::string prefix_;
+};
+
+void check_settings(const Scene& scene, const Refuser& refuse) {
+  const SimulationSettings& s = scene.simulation;
+  if (s.steps <= 0) refuse(fmt::format("[simulation] steps must be > 0, got {}", s.steps));
+  if (s.dt && !(std::isfinite(*s.dt) && *s.dt > 0))
+    refuse(fmt::format("[simulation] dt must be finite and > 0, got {}", *s.dt));
+  if (!(s.safety > 0 && s.safety <= 1))
+    refuse(fmt::format("[simulation] safety must be in (0, 1], got {}", s.safety));
+  if (!finite(s.gravity)) refuse("[simulation] gravity must be finite");
+  if (!(s.local_damping >= 0 && s.local_damping < 1))
+    refuse(fmt::format("[simulation] local_damping must be in [0, 1), got {}", s.local_damping));
+  if (scene.output.every < 0)
+    refuse(fmt::format("[output] every must be >= 0, got {}", scene.output.every));
+  if (scene.output.dir.empty()) refuse("[output] dir must not be empty");
+}
+
+void check_materials(const Scene& scene, const Refuser& refuse) {
+  if (scene.materials.empty()) refuse("no material defined; at least one is required");
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    const std::string which = fmt::format("material #{} \"{}\"", i, m.name);
+    if (m.name.empty()) refuse(fmt::format("material #{} has an empty name", i));
+    for (std::size_t j = 0; j < i; ++j)
+      if (scene.materials[j].name == m.name)
+        refuse(fmt::format("{}: duplicate name (also material #{})", which, j));
+    if (!(std::isfinite(m.density) && m.density > 0))
+      refuse(fmt::format("{}: density must be finite and > 0, got {}", which, m.density));
+    if (!(std::isfinite(m.penalty) && m.penalty > 0))
+      refuse(fmt::format("{}: penalty must be finite and > 0, got {}", which, m.penalty));
+    if (!(std::isfinite(m.tangential_penalty) && m.tangential_penalty > 0))
+      refuse(fmt::format("{}: tangential_penalty must be finite and > 0, got {}", which,
+                         m.tangential_penalty));
+    if (!(std::isfinite(m.friction) && m.friction >= 0))
+      refuse(fmt::format("{}: friction must be finite and >= 0, got {}", which, m.friction));
+    if (!(m.damping >= 0 && m.damping < 1))
+      refuse(fmt::format("{}: damping must be in [0, 1), got {}", which, m.damping));
+  }
+}
+
+void check_triangles(const Scene& scene, const Refuser& refuse) {
+  if (scene.triangles.empty()) refuse("the scene has no triangles");
+  const auto n_materials = static_cast<int>(scene.materials.size());
+  for (std::size_t id = 0; id < scene.triangles.size(); ++id) {
+    const TriangleSpec& t = scene.triangles[id];
+    auto refuse_particle = [&](std::string_view what) {
+      refuse(fmt::format("particle id {}: {}", id, what));
+    };
+    if (t.material < 0 || t.material >= n_materials)
+      refuse_particle(fmt::format("material index {} out of range (scene has {} materials)",
+                                  t.material, n_materials));
+    if (auto problem = scene_detail::shape_problem(t.vertices)) refuse_particle(*problem);
+    if (!finite(t.velocity) || !std::isfinite(t.angular_velocity))
+      refuse_particle("velocity and angular_velocity must be finite");
+    switch (t.motion) {
+      case Motion::Free:
+      case Motion::Prescribed:
+        break;
+      case Motion::Fixed:
+        if (t.velocity.x != 0 || t.velocity.y != 0 || t.angular_velocity != 0)
+          refuse_particle("a fixed triangle must have zero velocity and angular_velocity");
+        break;
+      default:
+        refuse_particle(fmt::format("invalid motion value {}", static_cast<int>(t.motion)));
+    }
+  }
+}
+
+}  // namespace
+
+void validate_scene(const Scene& scene) {
+  const Refuser refuse(scene);
+  check_settings(scene, refuse);
+  check_materials(scene, refuse);
+  check_triangles(scene, refuse);
+}
+
+}  // namespace tridem

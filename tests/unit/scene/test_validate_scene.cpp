@@ -1,0 +1,96 @@
+// validate_scene on scenes built in code: same rules as the reader, messages by particle id.
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace tridem {
+namespace {
+
+Scene valid_scene() {
+  Scene s;
+  s.simulation.steps = 10;
+  Material m;
+  m.name = "m";
+  m.density = 1000;
+  m.penalty = 1e6;
+  m.tangential_penalty = 1e5;
+  s.materials.push_back(m);
+  for (int i = 0; i < 3; ++i) {
+    TriangleSpec t;
+    const double x = 2.0 * i;
+    t.vertices = {Vec2d{x, 0}, Vec2d{x + 1, 0}, Vec2d{x, 1}};
+    s.triangles.push_back(t);
+  }
+  return s;
+}
+
+void expect_refused(const std::function<void(Scene&)>& spoil,
+                    std::initializer_list<std::string_view> parts) {
+  Scene s = valid_scene();
+  spoil(s);
+  try {
+    validate_scene(s);
+    ADD_FAILURE() << "scene was accepted";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    for (std::string_view part : parts)
+      EXPECT_NE(message.find(part), std::string::npos)
+          << "message lacks \"" << part << "\":\n  " << message;
+  }
+}
+
+TEST(SceneValidate, AcceptsValidSceneAndChangesNothing) {
+  Scene s = valid_scene();
+  std::swap(s.triangles[1].vertices[1], s.triangles[1].vertices[2]);  // clockwise is fine
+  const Scene before = s;
+  EXPECT_NO_THROW(validate_scene(s));
+  EXPECT_EQ(s.triangles[1].vertices[1].y, before.triangles[1].vertices[1].y);
+}
+
+TEST(SceneValidate, RefusesBadTriangles) {
+  expect_refused([](Scene& s) { s.triangles[2].material = 1; },
+                 {"scene built in code", "particle id 2", "material index 1"});
+  expect_refused([](Scene& s) { s.triangles[1].material = -1; }, {"particle id 1"});
+  expect_refused([](Scene& s) { s.triangles[1].vertices[2] = {4, 0}; },
+                 {"particle id 1", "degenerate"});
+  expect_refused([](Scene& s) { s.triangles[0].vertices[0].x = NAN; },
+                 {"particle id 0", "not finite"});
+  expect_refused([](Scene& s) { s.triangles[0].velocity.y = INFINITY; }, {"particle id 0"});
+  expect_refused(
+      [](Scene& s) {
+        s.triangles[2].motion = Motion::Fixed;
+        s.triangles[2].angular_velocity = 1;
+      },
+      {"particle id 2", "fixed"});
+  expect_refused([](Scene& s) { s.triangles.clear(); }, {"no triangles"});
+}
+
+TEST(SceneValidate, RefusesBadMaterials) {
+  expect_refused([](Scene& s) { s.materials.clear(); }, {"no material"});
+  expect_refused([](Scene& s) { s.materials[0].density = 0; }, {"\"m\"", "density"});
+  expect_refused([](Scene& s) { s.materials[0].penalty = -1; }, {"penalty"});
+  expect_refused([](Scene& s) { s.materials[0].tangential_penalty = 0; },
+                 {"tangential_penalty"});
+  expect_refused([](Scene& s) { s.materials[0].damping = 1; }, {"damping"});
+  expect_refused([](Scene& s) { s.materials.push_back(s.materials[0]); }, {"duplicate"});
+}
+
+TEST(SceneValidate, RefusesBadSettingsAndNamesTheSource) {
+  expect_refused(
+      [](Scene& s) {
+        s.source = "my.toml";
+        s.simulation.steps = 0;
+      },
+      {"my.toml", "steps"});
+  expect_refused([](Scene& s) { s.simulation.dt = 0.0; }, {"dt"});
+  expect_refused([](Scene& s) { s.simulation.safety = 2; }, {"safety"});
+  expect_refused([](Scene& s) { s.simulation.local_damping = -0.5; }, {"local_damping"});
+  expect_refused([](Scene& s) { s.output.every = -1; }, {"every"});
+}
+
+}  // namespace
+}  // namespace tridem
