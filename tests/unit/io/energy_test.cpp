@@ -17,13 +17,13 @@ void set(Snapshot& s, std::size_t k, double m, double inertia, double x, double 
   s.vx[k] = vx, s.vy[k] = vy, s.omega[k] = w, s.motion[k] = motion;
 }
 
-TEST(Energy, HandComputedFreeParticlesOnly) {
+TEST(ComputeEnergy, HandComputedFreeParticlesOnly) {
   Snapshot s = particles(4);
   s.step = 7;
   s.time = 0.5;
-  // KE = 0.5·2·10 + 0.5·0.5·16 = 14;  p = (6, −2);  L = 2·(1·(−1) − 2·3) + 0.5·4 = −12
+  // KE = ½·2·10 + ½·0.5·16 = 14;  p = (6, −2);  L = 2·(1·(−1) − 2·3) + 0.5·4 = −12
   set(s, 0, 2, 0.5, 1, 2, 3, -1, 4, Motion::Free);
-  // KE = 0.5·1·4 + 0.5·0.25·4 = 2.5;  p = (0, 2);  L = 1·(−1·2 − 0.5·0) + 0.25·(−2) = −2.5
+  // KE = ½·1·4 + ½·0.25·4 = 2.5;  p = (0, 2);  L = 1·(−1·2 − 0.5·0) + 0.25·(−2) = −2.5
   set(s, 1, 1, 0.25, -1, 0.5, 0, 2, -2, Motion::Free);
   // Imposed motion: must not count.
   set(s, 2, 100, 10, 3, 3, 5, 5, 1, Motion::Fixed);
@@ -38,7 +38,7 @@ TEST(Energy, HandComputedFreeParticlesOnly) {
   EXPECT_DOUBLE_EQ(e.angular_momentum, -14.5);
 }
 
-TEST(Energy, EmptyAndAllFixedGiveZero) {
+TEST(ComputeEnergy, EmptyAndAllFixedGiveZero) {
   EXPECT_EQ(compute_energy(particles(0)).kinetic, 0);
   Snapshot s = particles(1);
   set(s, 0, 1, 1, 1, 1, 1, 1, 1, Motion::Fixed);

@@ -1,4 +1,5 @@
 #include "io_test_support.hpp"
+#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <gtest/gtest.h>

@@ -45,8 +45,6 @@ TempDir::TempDir() {
 
 TempDir::~TempDir() {
   std::error_code ec;
-  std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
-                               std::filesystem::perm_options::add, ec);
   std::filesystem::remove_all(path_, ec);
 }
 
@@ -68,7 +66,8 @@ std::vector<std::string> read_lines(const std::filesystem::path& file) {
 std::vector<double> numbers(const std::string& row) {
   std::vector<double> out;
   std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::strtod(cell.c_str(), nullptr));
+  for (std::string cell; std::getline(in, cell, ',');)
+    out.push_back(std::strtod(cell.c_str(), nullptr));
   return out;
 }
 

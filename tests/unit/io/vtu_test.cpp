@@ -93,10 +93,10 @@ TEST(Vtu, DuplicateIdIsRefused) {
   const auto file = tmp.path() / "f.vtu";
   write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
   std::string text = test::read_file(file);
-  const std::string ids = "format=\"ascii\">\n0 1 2";
+  const std::string ids = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 2";
   const auto at = text.find(ids);
   ASSERT_NE(at, std::string::npos);
-  text.replace(at, ids.size(), "format=\"ascii\">\n0 1 1");
+  text.replace(at, ids.size(), "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 1");
   std::ofstream(file, std::ios::binary) << text;
   EXPECT_THROW(read_vtu_frame(file), Error);
 }

@@ -1,0 +1,76 @@
+#pragma once
+// Everything a run writes to disk. Every writer takes the double-precision Snapshot, so
+// none of this depends on the solver's real type or backend. docs/output-format.md is
+// the users' description of the files; keep the two in step.
+#include "tridem/scene.hpp"
+#include "tridem/snapshot.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace tridem {
+
+/// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
+enum class Encoding { Binary, Ascii };
+
+/// Conserved quantities of the free particles at one step. Fixed and prescribed particles
+/// are excluded: their motion is imposed, so they would only hide what the solver does.
+struct EnergyRow {
+  std::int64_t step = 0;
+  double time = 0;
+  double kinetic = 0;           ///< J/m
+  double momentum_x = 0;        ///< kg/s (per unit thickness)
+  double momentum_y = 0;
+  double angular_momentum = 0;  ///< about the origin, kg·m/s
+};
+
+EnergyRow compute_energy(const Snapshot&);
+
+/// Frame and contact file names carry the step padded to 9 digits so that they sort.
+std::string frame_file_name(std::int64_t step);     ///< frame_000000042.vtu
+std::string contacts_file_stem(std::int64_t step);  ///< contacts_000000042
+
+// Single-file writers. OutputSet calls them; tools and tests may call them alone. All
+// throw RunError naming the path and the system's reason when the file cannot be written.
+void write_final_csv(const std::filesystem::path& file, const Snapshot&);
+void write_vtu_frame(const std::filesystem::path& file, const Snapshot&,
+                     Encoding = Encoding::Binary);
+void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
+                        Encoding = Encoding::Binary);
+
+/// Reads back a frame written by write_vtu_frame, in either encoding. Recovers step, time,
+/// vertices, centroids (vertex mean), velocities, forces, torques, material and motion, in
+/// id order. theta, mass and inertia are not stored in frames and come back as 0; contacts
+/// are left empty. Throws Error on a file it cannot read or that is not such a frame.
+Snapshot read_vtu_frame(const std::filesystem::path& file);
+
+/// The files of one run, under one directory:
+///   energy.csv, walls.csv          one block of rows per log() call, flushed each time
+///   frames/frame_<step>.vtu        one per write_frame(), listed in tridem.pvd
+///   contacts/contacts_<step>.csv   and .vtp, with each frame when settings.contacts,
+///                                  the .vtp files listed in contacts.pvd
+///   final.csv                      from write_final()
+/// The .pvd collections are replaced atomically after every frame, so they stay valid
+/// if the run dies. Every failure to create or write throws RunError.
+class OutputSet {
+ public:
+  OutputSet(const OutputSettings&, std::filesystem::path dir, Encoding = Encoding::Binary);
+  ~OutputSet();
+  OutputSet(OutputSet&&) noexcept;
+  OutputSet& operator=(OutputSet&&) noexcept;
+
+  void write_frame(const Snapshot&);
+  void log(const Snapshot&);
+  void write_final(const Snapshot&);
+
+  const std::filesystem::path& dir() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tridem

@@ -1,0 +1,57 @@
+// The contact network as lines between the centroids of the two particles, so ParaView
+// can draw force chains (Tube filter, line width or colour by magnitude).
+#include "io/output/out_file.hpp"
+#include "io/output/snapshot_check.hpp"
+#include "io/output/vtk_xml_writer.hpp"
+#include "tridem/output.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace tridem {
+
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
+                        Encoding encoding) {
+  io::check_snapshot(s, file.string());
+  io::check_contacts(s, file.string());
+  const std::size_t m = s.contacts.size();
+
+  std::vector<double> points(6 * m), force(3 * m), magnitude(m);
+  std::vector<std::int64_t> connectivity(2 * m), offsets(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const ContactRecord& c = s.contacts[k];
+    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+    points[6 * k] = s.x[i];
+    points[6 * k + 1] = s.y[i];
+    points[6 * k + 3] = s.x[j];
+    points[6 * k + 4] = s.y[j];
+    force[3 * k] = c.fx;
+    force[3 * k + 1] = c.fy;
+    magnitude[k] = std::hypot(c.fx, c.fy);
+    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
+    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
+    offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
+  }
+
+  io::OutFile out(file);
+  io::begin_vtk_file(out, "PolyData");
+  out.write("  <PolyData>\n");
+  io::write_time_field_data(out, s.step, s.time, encoding, 4);
+  out.print("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
+            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+            2 * m, m);
+  out.write("      <Points>\n");
+  io::write_data_array<double>(out, "Points", points, 3, encoding, 8);
+  out.write("      </Points>\n      <Lines>\n");
+  io::write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
+  io::write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
+  out.write("      </Lines>\n      <CellData Scalars=\"magnitude\" Vectors=\"force\">\n");
+  io::write_data_array<double>(out, "force", force, 3, encoding, 8);
+  io::write_data_array<double>(out, "magnitude", magnitude, 1, encoding, 8);
+  out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
+  io::end_vtk_file(out);
+  out.close();
+}
+
+}  // namespace tridem

@@ -1,0 +1,48 @@
+#pragma once
+// A file being written, with the one error policy of all output: any failure to open,
+// write or flush throws RunError naming the path and the system's reason. Text is
+// gathered in a buffer and handed to stdio in large pieces, so per-row formatting with
+// fmt costs no system calls.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string_view>
+#include <utility>
+
+namespace tridem::io {
+
+class OutFile {
+ public:
+  /// Creates or truncates the file.
+  explicit OutFile(std::filesystem::path path);
+  ~OutFile();  ///< closes without reporting; call close() where errors must surface
+  OutFile(OutFile&&) noexcept;
+  OutFile& operator=(OutFile&&) noexcept;
+  OutFile(const OutFile&) = delete;
+  OutFile& operator=(const OutFile&) = delete;
+
+  template <class... Args>
+  void print(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(fmt::appender(buffer_), format, std::forward<Args>(args)...);
+    if (buffer_.size() >= kChunk) drain();
+  }
+  void write(std::string_view text);
+
+  /// Pushes everything written so far to the operating system.
+  void flush();
+  void close();
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  static constexpr std::size_t kChunk = 1 << 16;
+  void drain();
+  [[noreturn]] void fail(const char* doing) const;
+
+  std::filesystem::path path_;
+  std::FILE* file_ = nullptr;
+  fmt::memory_buffer buffer_;
+};
+
+}  // namespace tridem::io

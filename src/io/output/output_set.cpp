@@ -1,0 +1,96 @@
+#include "io/output/log_rows.hpp"
+#include "io/output/out_file.hpp"
+#include "io/output/pvd_collection.hpp"
+#include "tridem/error.hpp"
+#include "tridem/output.hpp"
+
+#include <fmt/format.h>
+
+#include <system_error>
+
+namespace tridem {
+namespace {
+
+namespace fs = std::filesystem;
+
+void make_directory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  // An existing regular file of that name is not always reported as an error.
+  if (!ec && !fs::is_directory(dir, ec) && !ec)
+    ec = std::make_error_code(std::errc::not_a_directory);
+  if (ec)
+    throw RunError(fmt::format("cannot create output directory '{}': {}", dir.string(),
+                               ec.message()));
+}
+
+io::OutFile open_log(const fs::path& file, std::string_view header) {
+  io::OutFile out(file);
+  out.write(header);
+  out.flush();
+  return out;
+}
+
+}  // namespace
+
+struct OutputSet::Impl {
+  OutputSettings settings;
+  fs::path dir;
+  Encoding encoding;
+  io::OutFile energy;
+  io::OutFile walls;
+  io::PvdCollection frames;
+  io::PvdCollection contacts;
+  bool subfolders_made = false;
+};
+
+OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding encoding) {
+  make_directory(dir);
+  impl_ = std::make_unique<Impl>(Impl{settings, dir, encoding,
+                                      open_log(dir / "energy.csv", io::kEnergyHeader),
+                                      open_log(dir / "walls.csv", io::kWallsHeader),
+                                      io::PvdCollection(dir / "tridem.pvd"),
+                                      io::PvdCollection(dir / "contacts.pvd")});
+}
+
+OutputSet::~OutputSet() = default;
+OutputSet::OutputSet(OutputSet&&) noexcept = default;
+OutputSet& OutputSet::operator=(OutputSet&&) noexcept = default;
+
+const fs::path& OutputSet::dir() const { return impl_->dir; }
+
+void OutputSet::write_frame(const Snapshot& s) {
+  Impl& o = *impl_;
+  // Made on first use so that a run without frames leaves no empty folders.
+  if (!o.subfolders_made) {
+    make_directory(o.dir / "frames");
+    if (o.settings.contacts) make_directory(o.dir / "contacts");
+    o.subfolders_made = true;
+  }
+  const fs::path frame = o.dir / "frames" / frame_file_name(s.step);
+  write_vtu_frame(frame, s, o.encoding);
+  o.frames.add(s.time, frame);
+
+  if (o.settings.contacts) {
+    const fs::path stem = o.dir / "contacts" / contacts_file_stem(s.step);
+    fs::path csv = stem, vtp = stem;
+    csv += ".csv";
+    vtp += ".vtp";
+    write_contacts_csv(csv, s);
+    write_contacts_vtp(vtp, s, o.encoding);
+    o.contacts.add(s.time, vtp);
+  }
+}
+
+void OutputSet::log(const Snapshot& s) {
+  Impl& o = *impl_;
+  io::write_energy_row(o.energy, compute_energy(s));
+  io::write_wall_rows(o.walls, s);
+  // Flushed every time so that a long run can be watched, and survives a crash.
+  o.energy.flush();
+  o.walls.flush();
+}
+
+void OutputSet::write_final(const Snapshot& s) { write_final_csv(impl_->dir / "final.csv", s); }
+
+}  // namespace tridem

@@ -1,0 +1,31 @@
+#pragma once
+// A ParaView collection (.pvd) listing time steps. It is rewritten whole after every
+// frame, through a temporary file and a rename, so a reader (or a run that dies) never
+// sees it half written.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tridem::io {
+
+class PvdCollection {
+ public:
+  /// `file` is the .pvd; data set paths are stored relative to its folder.
+  explicit PvdCollection(std::filesystem::path file);
+
+  /// Lists `dataset` at `time` and rewrites the file. Adding the same data set again
+  /// (a step written twice) updates its entry instead of duplicating it.
+  void add(double time, const std::filesystem::path& dataset);
+
+ private:
+  struct Entry {
+    double time;
+    std::string file;
+  };
+  void rewrite() const;
+
+  std::filesystem::path file_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace tridem::io

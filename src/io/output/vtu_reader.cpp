@@ -1,0 +1,137 @@
+// Reads back our own frames, for the renderer and for checks; any other VTU is refused
+// with the reason rather than guessed at.
+#include "io/output/vtk_xml_reader.hpp"
+#include "tridem/error.hpp"
+#include "tridem/output.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace tridem {
+namespace {
+
+[[noreturn]] void bad_frame(const std::filesystem::path& file, std::string_view why) {
+  throw Error(fmt::format("cannot read '{}' as a tridem frame: {}", file.string(), why));
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(fmt::format("cannot open '{}': {}", file.string(), std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+    throw Error(fmt::format("cannot read '{}': {}", file.string(), std::strerror(errno)));
+  return std::move(text).str();
+}
+
+std::size_t count_attribute(const std::filesystem::path& file,
+                            const std::map<std::string, std::string>& piece,
+                            const std::string& key) {
+  const auto it = piece.find(key);
+  if (it == piece.end()) bad_frame(file, fmt::format("<Piece> has no {}", key));
+  std::size_t value = 0;
+  const std::string& text = it->second;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size())
+    bad_frame(file, fmt::format("<Piece> {}=\"{}\" is not a count", key, text));
+  return value;
+}
+
+/// Converts an integer-valued array, refusing fractions and values outside [lo, hi].
+std::vector<std::int64_t> integers(const std::filesystem::path& file, std::string_view name,
+                                   const std::vector<double>& values, double lo, double hi) {
+  std::vector<std::int64_t> out(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const double v = values[k];
+    if (!(v >= lo && v <= hi) || std::trunc(v) != v)
+      bad_frame(file, fmt::format("{}[{}] = {} is not an integer in [{}, {}]", name, k, v, lo, hi));
+    out[k] = static_cast<std::int64_t>(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+Snapshot read_vtu_frame(const std::filesystem::path& file) {
+  const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), read_text(file));
+  if (const auto it = f.root.find("type"); it == f.root.end() || it->second != "UnstructuredGrid")
+    bad_frame(file, "it is not a VTK UnstructuredGrid file");
+  const std::size_t n = count_attribute(file, f.piece, "NumberOfCells");
+  const std::size_t points = count_attribute(file, f.piece, "NumberOfPoints");
+
+  const auto array = [&](std::string_view section, std::string_view name, int components,
+                         std::size_t tuples) {
+    const io::XmlDataArray* a = io::find_array(f, section, name);
+    if (!a) bad_frame(file, fmt::format("no array '{}' in <{}>", name, section));
+    return io::decode_array(f, *a, components, tuples);
+  };
+  const auto cells = [&](std::string_view name, int components) {
+    return array("CellData", name, components, n);
+  };
+
+  // Points may be unnamed in files from other writers; ours name it.
+  const io::XmlDataArray* point_array = nullptr;
+  for (const io::XmlDataArray& a : f.arrays)
+    if (a.section == "Points" && !point_array) point_array = &a;
+  if (!point_array) bad_frame(file, "no <Points> array");
+  const std::vector<double> xyz = io::decode_array(f, *point_array, 3, points);
+
+  const double max_point = points == 0 ? 0 : static_cast<double>(points - 1);
+  const auto connectivity = integers(file, "connectivity",
+                                     array("Cells", "connectivity", 1, 3 * n), 0, max_point);
+  const auto offsets = integers(file, "offsets", array("Cells", "offsets", 1, n), 0,
+                                static_cast<double>(3 * n));
+  const auto types = integers(file, "types", array("Cells", "types", 1, n), 0, 255);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (types[k] != 5) bad_frame(file, fmt::format("cell {} is not a triangle", k));
+    if (offsets[k] != static_cast<std::int64_t>(3 * (k + 1)))
+      bad_frame(file, fmt::format("cell {} does not have 3 points", k));
+  }
+
+  const double max_id = n == 0 ? 0 : static_cast<double>(n - 1);
+  const auto ids = integers(file, "id", cells("id", 1), 0, max_id);
+  const auto velocity = cells("velocity", 3);
+  const auto omega = cells("angular_velocity", 1);
+  const auto force = cells("force", 3);
+  const auto torque = cells("torque", 1);
+  const auto material = integers(file, "material", cells("material", 1), 0, 2147483647.0);
+  const auto motion = integers(file, "motion", cells("motion", 1), 0, 2);
+
+  Snapshot s;
+  if (const io::XmlDataArray* a = io::find_array(f, "FieldData", "step"))
+    s.step = integers(file, "step", io::decode_array(f, *a, 1, 1), -9.0e15, 9.0e15)[0];
+  if (const io::XmlDataArray* a = io::find_array(f, "FieldData", "TimeValue"))
+    s.time = io::decode_array(f, *a, 1, 1)[0];
+  s.resize(n);
+  std::vector<bool> seen(n, false);
+  for (std::size_t cell = 0; cell < n; ++cell) {
+    const auto k = static_cast<std::size_t>(ids[cell]);
+    if (seen[k]) bad_frame(file, fmt::format("id {} appears twice", k));
+    seen[k] = true;
+    double* vertex[3][2] = {{&s.x1[k], &s.y1[k]}, {&s.x2[k], &s.y2[k]}, {&s.x3[k], &s.y3[k]}};
+    for (int v = 0; v < 3; ++v) {
+      const auto point = static_cast<std::size_t>(connectivity[3 * cell + v]);
+      *vertex[v][0] = xyz[3 * point];
+      *vertex[v][1] = xyz[3 * point + 1];
+    }
+    s.x[k] = (s.x1[k] + s.x2[k] + s.x3[k]) / 3;
+    s.y[k] = (s.y1[k] + s.y2[k] + s.y3[k]) / 3;
+    s.vx[k] = velocity[3 * cell];
+    s.vy[k] = velocity[3 * cell + 1];
+    s.omega[k] = omega[cell];
+    s.fx[k] = force[3 * cell];
+    s.fy[k] = force[3 * cell + 1];
+    s.torque[k] = torque[cell];
+    s.material[k] = static_cast<int>(material[cell]);
+    s.motion[k] = static_cast<Motion>(motion[cell]);
+  }
+  return s;
+}
+
+}  // namespace tridem

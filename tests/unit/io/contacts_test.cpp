@@ -1,0 +1,88 @@
+#include "io/output/vtk_xml_reader.hpp"
+#include "io_test_support.hpp"
+#include "tridem/error.hpp"
+#include "tridem/output.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tridem {
+namespace {
+
+TEST(Contacts, CsvHoldsEveryContact) {
+  test::TempDir tmp;
+  const Snapshot s = test::sample_snapshot();
+  OutputSet out(OutputSettings{}, tmp.path());
+  out.write_frame(s);
+
+  const auto lines = test::read_lines(tmp.path() / "contacts" / "contacts_000001200.csv");
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "i,j,fx,fy,px,py");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ContactRecord& c = s.contacts[k];
+    EXPECT_EQ(test::numbers(lines[1 + k]),
+              (std::vector<double>{double(c.i), double(c.j), c.fx, c.fy, c.px, c.py}));
+  }
+}
+
+TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
+  test::TempDir tmp;
+  const Snapshot s = test::sample_snapshot();
+  const auto file = tmp.path() / "c.vtp";
+  write_contacts_vtp(file, s, Encoding::Binary);
+
+  const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), test::read_file(file));
+  EXPECT_EQ(f.root.at("type"), "PolyData");
+  EXPECT_EQ(f.piece.at("NumberOfLines"), "2");
+  const auto points = io::decode_array(f, *io::find_array(f, "Points", "Points"), 3, 4);
+  const auto offsets = io::decode_array(f, *io::find_array(f, "Lines", "offsets"), 1, 2);
+  const auto force = io::decode_array(f, *io::find_array(f, "CellData", "force"), 3, 2);
+  const auto magnitude = io::decode_array(f, *io::find_array(f, "CellData", "magnitude"), 1, 2);
+  EXPECT_EQ(offsets, (std::vector<double>{2, 4}));
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ContactRecord& c = s.contacts[k];
+    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+    EXPECT_EQ(points[6 * k], s.x[i]);
+    EXPECT_EQ(points[6 * k + 1], s.y[i]);
+    EXPECT_EQ(points[6 * k + 3], s.x[j]);
+    EXPECT_EQ(points[6 * k + 4], s.y[j]);
+    EXPECT_EQ(force[3 * k], c.fx);
+    EXPECT_EQ(force[3 * k + 1], c.fy);
+    EXPECT_EQ(force[3 * k + 2], 0);
+    EXPECT_DOUBLE_EQ(magnitude[k], std::hypot(c.fx, c.fy));
+  }
+}
+
+TEST(Contacts, NoContactsGiveHeaderOnlyAndEmptyNetwork) {
+  test::TempDir tmp;
+  Snapshot s = test::sample_snapshot();
+  s.contacts.clear();
+  write_contacts_csv(tmp.path() / "c.csv", s);
+  write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
+  EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"), (std::vector<std::string>{"i,j,fx,fy,px,py"}));
+  const io::VtkXmlFile f =
+      io::parse_vtk_xml("c.vtp", test::read_file(tmp.path() / "c.vtp"));
+  EXPECT_EQ(f.piece.at("NumberOfLines"), "0");
+}
+
+TEST(Contacts, ContactWithUnknownParticleIsRefused) {
+  test::TempDir tmp;
+  Snapshot s = test::sample_snapshot();
+  s.contacts.push_back({0, 3, 0, 0, 0, 0});
+  EXPECT_THROW(write_contacts_csv(tmp.path() / "c.csv", s), Error);
+  EXPECT_THROW(write_contacts_vtp(tmp.path() / "c.vtp", s), Error);
+}
+
+TEST(Contacts, NotWrittenWhenSettingsSayNo) {
+  test::TempDir tmp;
+  OutputSettings settings;
+  settings.contacts = false;
+  OutputSet out(settings, tmp.path());
+  out.write_frame(test::sample_snapshot());
+  EXPECT_TRUE(std::filesystem::exists(tmp.path() / "frames" / "frame_000001200.vtu"));
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "contacts"));
+}
+
+}  // namespace
+}  // namespace tridem
