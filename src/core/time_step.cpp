@@ -6,12 +6,24 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <vector>
 
 namespace tridem {
 
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
+  // The stiffest contact a free particle can meet: its material against any material
+  // present (pairs of two walls never interact).
+  const std::size_t n_mat = scene.materials.size();
+  std::vector<char> free_material(n_mat, 0), present(n_mat, 0);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    present[model.material[i]] = 1;
+    if (model.motion[i] == Motion::Free) free_material[model.material[i]] = 1;
+  }
+  const auto laws = contact_law_table(scene.materials);
   double p_max = 0;
-  for (const Material& m : scene.materials) p_max = std::max(p_max, m.penalty);
+  for (std::size_t a = 0; a < n_mat; ++a)
+    for (std::size_t b = 0; b < n_mat; ++b)
+      if (free_material[a] && present[b]) p_max = std::max(p_max, laws[a * n_mat + b].penalty);
   double l_max = 0, h_min = std::numeric_limits<double>::infinity();
   double m_min = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < model.size(); ++i) {

@@ -1,6 +1,6 @@
 #pragma once
 // The stable time step (contact-model.md, "Time integration"): the stiffest contact,
-// k = 3·p_max·L_max/h_min, on the lightest body gives dt_crit = 2·√(m_min/k). m_min takes
+// k = 3·p_max·L_max/h_min (p_max: the stiffest material pair a free particle can meet), on the lightest body gives dt_crit = 2·√(m_min/k). m_min takes
 // rotation into account: a load at distance r from the centroid of a body of inertia I
 // meets an effective mass I/r², smaller than m for slender triangles.
 #include "core/particle_model.hpp"

@@ -40,6 +40,20 @@ struct EdgeLoad {
   Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
 };
 
+/// Narrows [t0, t1] to where f0 + t·fd >= 0; false when nothing of positive length is left.
+template <class Real>
+TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
+  if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
+  const Real t = -f0 / fd;
+  if (fd > Real(0)) t0 = t > t0 ? t : t0;
+  else t1 = t < t1 ? t : t1;
+  return t1 > t0;
+}
+
+/// The edge p + t·d, t in [0, 1], is clipped to the target once; the three lines from the
+/// target's centroid to its vertices then split the inside part among the sub-triangles.
+/// Along the edge every signed area is linear in t, f(t) = f0 + t·fd, and φ in S_k is the
+/// target-edge area f_k scaled by 3/(2A), so each value is computed once.
 template <class Real>
 TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
                                           const Triangle<Real>& target, Real target_area,
@@ -47,21 +61,38 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e
   EdgeLoad<Real> load;
   const Vec2<Real> p = contactor.v[e];
   const Vec2<Real> d = contactor.v[(e + 1) % 3] - p;
+  Real f0[3], fd[3];
+  Real t_lo = Real(0), t_hi = Real(1);
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<Real> edge = target.v[(k + 1) % 3] - target.v[k];
+    f0[k] = cross(edge, p - target.v[k]);
+    fd[k] = cross(edge, d);
+    if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
+  }
+  // g_k >= 0 on the side of the line c → x_k where S_k lies; S_k = {g_k >= 0, g_k+1 <= 0}.
+  Real g0[3], gd[3];
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<Real> ray = target.v[k] - target_centroid;
+    g0[k] = cross(ray, p - target_centroid);
+    gd[k] = cross(ray, d);
+  }
   const Real edge_length = norm(d);
+  const Real to_phi = Real(3) / (Real(2) * target_area);
   Vec2<Real> moment{};
   for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> x0 = target.v[k], x1 = target.v[(k + 1) % 3];
-    Real t0, t1;
-    if (!clip_segment(p, d, target_centroid, x0, x1, t0, t1)) continue;
+    const int next = (k + 1) % 3;
+    Real t0 = t_lo, t1 = t_hi;
+    if (!clip_to_half_plane(g0[k], gd[k], t0, t1)) continue;
+    if (!clip_to_half_plane(-g0[next], -gd[next], t0, t1)) continue;
     const Vec2<Real> q0 = p + d * t0, q1 = p + d * t1;
-    const Real phi0 = potential_in_sub_triangle(target, target_area, k, q0);
-    const Real phi1 = potential_in_sub_triangle(target, target_area, k, q1);
+    const Real phi0 = to_phi * (f0[k] + t0 * fd[k]);
+    const Real phi1 = to_phi * (f0[k] + t1 * fd[k]);
     const LinearLoad<Real> piece = linear_load(q0, q1, phi0, phi1);
     load.integral += piece.integral;
     moment += piece.point * piece.integral;
     // Piece of length ℓ in S_k of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k.
-    load.stiffness += Real(3) * edge_length * (t1 - t0) * norm(x1 - x0) /
-                      (Real(2) * target_area);
+    load.stiffness += edge_length * (t1 - t0) * to_phi *
+                      norm(target.v[next] - target.v[k]);
   }
   if (load.integral > Real(0)) load.point = moment / load.integral;
   return load;
