@@ -24,6 +24,26 @@ void make_directory(const fs::path& dir) {
                                ec.message()));
 }
 
+/// A run owns the tridem files of its directory: frames and contact files of an earlier
+/// run there would otherwise mix with the new ones (ParaView and `tridem render` would
+/// show them). Only files with tridem's own names are removed; nothing else is touched.
+void remove_earlier_run(const fs::path& dir) {
+  auto remove_matching = [](const fs::path& folder, std::string_view prefix) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return;
+    for (const auto& entry : fs::directory_iterator(folder, ec)) {
+      const std::string name = entry.path().filename().string();
+      const std::string ext = entry.path().extension().string();
+      if (name.starts_with(prefix) && (ext == ".vtu" || ext == ".vtp" || ext == ".csv"))
+        fs::remove(entry.path(), ec);
+    }
+  };
+  remove_matching(dir / "frames", "frame_");
+  remove_matching(dir / "contacts", "contacts_");
+  std::error_code ec;
+  for (const char* name : {"tridem.pvd", "contacts.pvd", "final.csv"}) fs::remove(dir / name, ec);
+}
+
 io::OutFile open_log(const fs::path& file, std::string_view header) {
   io::OutFile out(file);
   out.write(header);
@@ -46,6 +66,7 @@ struct OutputSet::Impl {
 
 OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding encoding) {
   make_directory(dir);
+  remove_earlier_run(dir);
   impl_ = std::make_unique<Impl>(Impl{settings, dir, encoding,
                                       open_log(dir / "energy.csv", io::kEnergyHeader),
                                       open_log(dir / "walls.csv", io::kWallsHeader),

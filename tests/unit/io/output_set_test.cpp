@@ -37,6 +37,24 @@ TEST(OutputSet, CreatesDirectoryAndWritesEveryFile) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
 }
 
+TEST(OutputSet, RemovesFilesOfAnEarlierRunAndNothingElse) {
+  test::TempDir tmp;
+  const auto dir = tmp.path() / "run";
+  std::filesystem::create_directories(dir / "frames");
+  std::filesystem::create_directories(dir / "contacts");
+  for (const char* stale : {"frames/frame_000099999.vtu", "contacts/contacts_000099999.csv",
+                            "contacts/contacts_000099999.vtp", "final.csv", "tridem.pvd"})
+    std::ofstream(dir / stale) << "old";
+  std::ofstream(dir / "notes.txt") << "mine";
+  std::ofstream(dir / "frames" / "sketch.png") << "mine";
+  OutputSet out(OutputSettings{}, dir);
+  for (const char* stale : {"frames/frame_000099999.vtu", "contacts/contacts_000099999.csv",
+                            "contacts/contacts_000099999.vtp", "final.csv"})
+    EXPECT_FALSE(std::filesystem::exists(dir / stale)) << stale;
+  EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "sketch.png"));
+}
+
 TEST(OutputSet, NoFramesLeaveNoFrameFolders) {
   test::TempDir tmp;
   OutputSet out(OutputSettings{}, tmp.path());
