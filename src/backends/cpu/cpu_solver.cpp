@@ -238,14 +238,14 @@ void CpuSolver<Real>::integrate() {
   }
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);
+    const physics::Pose<Real> p = advanced_pose(i);
     throw RunError(fmt::format(
-        "blow-up at step {}: particle {} (at x={:g}, y={:g}, speed {:g} m/s) {} in one step; "
-        "the time step {:g} s is too large for the contacts it meets (reduce dt or the "
-        "penalty, or check for initially overlapping particles)",
+        "blow-up at step {}: particle {} (at x={:g}, y={:g}) would reach speed {:g} m/s and "
+        "move more than half its size, or get a non-finite state, in one step; the time "
+        "step {:g} s is too large for the contacts it meets (reduce dt or the penalty, or "
+        "check for initially overlapping particles)",
         step_ + 1, bad, static_cast<double>(x_[i]), static_cast<double>(y_[i]),
-        static_cast<double>(std::hypot(vx_[i], vy_[i])),
-        "would move more than half its size or get a non-finite state",
-        static_cast<double>(dt_)));
+        static_cast<double>(norm(p.v)), static_cast<double>(dt_)));
   }
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# End-to-end checks of the command line: outputs, exit codes and messages.
+# usage: cli_test.sh TRIDEM SOURCE_DIR WORK_DIR
+set -u
+tridem=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_ok() { "$@" >out.txt 2>err.txt || fail "exit $? from: $* :: $(cat err.txt)"; }
+# expect_error PATTERN CMD...: non-zero exit and PATTERN in stderr.
+expect_error() {
+  local pattern=$1; shift
+  if "$@" >out.txt 2>err.txt; then fail "expected failure from: $*"; return; fi
+  grep -q -- "$pattern" err.txt || fail "'$pattern' not in the message of: $* :: $(cat err.txt)"
+}
+
+cat >pile.toml <<'TOML'
+[simulation]
+steps = 200
+gravity = [0, -9.81]
+[output]
+dir = "pile_out"
+every = 100
+[[material]]
+name = "sand"
+density = 2650
+penalty = 1e6
+friction = 0.5
+damping = 0.3
+[[triangle]]
+material = "sand"
+vertices = [[1, 0], [-1, 0], [0, -1]]
+fixed = true
+[[generate]]
+kind = "random"
+material = "sand"
+region = [[-0.5, 0.001], [0.5, 0.3]]
+size = 0.05
+TOML
+
+# A run writes every output, with the contract headers.
+expect_ok "$tridem" run pile.toml --quiet
+grep -q "^dt = .* x dt_crit" out.txt || fail "run does not print dt and its ratio"
+grep -q "triangle-steps/s" out.txt || fail "run does not print the summary"
+[ "$(head -1 pile_out/final.csv)" = "id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3" ] || fail "final.csv header"
+[ "$(head -1 pile_out/energy.csv)" = "step,time,kinetic,momentum_x,momentum_y,angular_momentum" ] || fail "energy.csv header"
+[ "$(head -1 pile_out/walls.csv)" = "step,time,id,fx,fy,torque" ] || fail "walls.csv header"
+[ "$(cut -d, -f1 pile_out/energy.csv | tail -n +2 | tr '\n' ' ')" = "0 100 200 " ] || fail "energy.csv steps"
+for f in frames/frame_000000000.vtu frames/frame_000000100.vtu frames/frame_000000200.vtu tridem.pvd \
+         contacts/contacts_000000200.csv; do
+  [ -s "pile_out/$f" ] || fail "missing output $f"
+done
+n=$(($(wc -l <pile_out/final.csv) - 1))
+[ "$n" -gt 10 ] || fail "final.csv has $n rows"
+
+# --out, --steps and --backend override the scene.
+expect_ok "$tridem" run pile.toml --quiet --out other --steps 10 --backend cpu
+grep -q "cpu (serial)" out.txt || fail "--backend cpu not used"
+[ "$(cut -d, -f1 other/energy.csv | tail -1)" = "10" ] || fail "--steps not used"
+
+# info describes the scene.
+expect_ok "$tridem" info pile.toml
+grep -q "dt critical" out.txt || fail "info lacks dt critical"
+grep -q "memory" out.txt || fail "info lacks memory"
+
+# render draws the last frame to PNG.
+expect_ok "$tridem" render pile_out -o pile.png
+[ "$(head -c 8 pile.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] || fail "render did not write a PNG"
+
+# Refusals: a message naming the cause, exit code 1.
+sed 's/penalty = 1e6/penalty = -5/' pile.toml >bad_penalty.toml
+expect_error "bad_penalty.toml" "$tridem" run bad_penalty.toml
+expect_error "penalty" "$tridem" run bad_penalty.toml
+sed 's/steps = 200/steps = 200\ndt = 1.0/' pile.toml >big_dt.toml
+expect_error "dt_crit" "$tridem" run big_dt.toml --quiet
+sed 's/steps = 200/steps = 3\ndt = 1e-3/' pile.toml >forced.toml
+expect_ok "$tridem" run forced.toml --quiet --force --out forced_out
+expect_error "not available" "$tridem" run pile.toml --backend cuda
+expect_error "" "$tridem" run does_not_exist.toml
+expect_error "" "$tridem" run pile.toml --no-such-option
+"$tridem" --version | grep -q "^tridem [0-9]" || fail "--version"
+"$tridem" --help | grep -q "run" || fail "--help"
+
+# A blow-up names the step and the particle.
+cat >blowup.toml <<'TOML'
+[simulation]
+steps = 100
+dt = 1e-2
+[[material]]
+name = "m"
+density = 1000
+penalty = 1e9
+[[triangle]]
+material = "m"
+vertices = [[0, 0], [1, 0], [0, 1]]
+[[triangle]]
+material = "m"
+vertices = [[0.2, 0.2], [1.2, 0.2], [0.2, 1.2]]
+TOML
+expect_error "blow-up at step" "$tridem" run blowup.toml --force --quiet --out blow_out
+grep -q "particle" err.txt || fail "blow-up message does not name the particle"
+
+if [ "$failures" -gt 0 ]; then echo "$failures failed"; exit 1; fi
+echo "all CLI checks passed"
