@@ -18,16 +18,18 @@ std::string clock_time(double seconds) {
 
 bool is_terminal(std::FILE* stream) { return isatty(fileno(stream)) != 0; }
 
-ProgressBar::ProgressBar(std::int64_t total, bool enabled, std::FILE* stream)
-    : total_(total), enabled_(enabled), stream_(stream), start_(Clock::now()),
-      last_draw_(start_) {}
+ProgressBar::ProgressBar(std::int64_t total, bool enabled, std::FILE* stream,
+                         double quiet_seconds)
+    : total_(total), enabled_(enabled), stream_(stream), quiet_seconds_(quiet_seconds),
+      start_(Clock::now()), last_draw_(start_) {}
 
 void ProgressBar::update(std::int64_t done) {
   if (!enabled_) return;
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   // Short runs stay quiet; then a few redraws a second are plenty.
-  if (elapsed < 2.0 || std::chrono::duration<double>(now - last_draw_).count() < 0.25) return;
+  if (elapsed < quiet_seconds_) return;
+  if (drawn_ && std::chrono::duration<double>(now - last_draw_).count() < 0.25) return;
   last_draw_ = now;
   const double fraction = total_ > 0 ? static_cast<double>(done) / static_cast<double>(total_) : 1;
   const double rate = static_cast<double>(done) / elapsed;

@@ -9,7 +9,9 @@ namespace tridem {
 
 class ProgressBar {
  public:
-  ProgressBar(std::int64_t total, bool enabled, std::FILE* stream = stderr);
+  /// Nothing is drawn before `quiet_seconds` have passed: short runs stay silent.
+  ProgressBar(std::int64_t total, bool enabled, std::FILE* stream = stderr,
+              double quiet_seconds = 2.0);
   /// Redraws at most a few times a second.
   void update(std::int64_t done);
   /// Clears the line.
@@ -21,6 +23,7 @@ class ProgressBar {
   bool enabled_;
   bool drawn_ = false;
   std::FILE* stream_;
+  double quiet_seconds_;
   Clock::time_point start_, last_draw_;
 };
 
