@@ -1,0 +1,216 @@
+// CPU solver benchmark: triangle-steps per second of the serial reference solver (backend
+// cpu) and of its OpenMP twin (backend openmp) on the standard dense settling pile,
+// dense_pile(n), for n = 10^3 .. 10^6. See bench/README.md for how to run and read it.
+//
+// Each case is one Google Benchmark run per repetition: a fresh pile is built and warmed
+// up outside timing, then every timed iteration advances the solver by k steps; the whole
+// timed window lies in the first 52 steps, where the pile is dense at every size (see
+// kWarmupSteps). Counters:
+//   tri_steps_per_s  triangles × steps per second of wall time (the figure of merit)
+//   s_per_step       wall seconds per step
+//   threads          OpenMP threads the solver runs with (1 for the serial solver)
+//   triangles        solver->size(): grains plus the 3 fixed wall triangles
+//   steps_per_iter   k
+//   first_step       the first timed step (after the warm-up)
+//   contacts_per_tri touching pairs per triangle at the end of the window (density check)
+//
+// Extra flags (before or among the --benchmark_* ones):
+//   --max_n=N         skip sizes above N (e.g. --max_n=1e5 to fit a time budget)
+//   --min_n=N         skip sizes below N
+//   --backends=LIST   cpu,openmp (default both)
+//   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
+//   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
+//                     more iterations also move the window later into the decompression
+#include "tridem/solver.hpp"
+#include "tridem/standard_scenes.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using tridem::Backend;
+
+/// The measured window of the run. dense_pile(n) starts with every lattice neighbour
+/// overlapping; from the free top surface the pile then decompresses, at the speed of sound,
+/// so that a small pile loses its dense contact network within a few hundred steps (10^3
+/// grains: 5.7 contacts per triangle at step 10, 4.1 at step 100, 2.3 at step 200). To
+/// measure every size in the same dense state, each repetition starts from a fresh pile,
+/// runs kWarmupSteps untimed steps (first touch of every array, pair lists grown to their
+/// working size), then times `iterations × steps_per_iteration` steps, at most 50 in all.
+constexpr std::int64_t kWarmupSteps = 2;
+
+struct Work {
+  std::int64_t steps_per_iteration;  ///< k: steps done by one solver->advance(k)
+  std::int64_t iterations;           ///< timed iterations per repetition
+};
+
+/// About 5·10^4 .. 2·10^6 triangle-steps per repetition: ≳0.1 s of serial work at every
+/// size on a typical core while keeping the 10^6 serial case affordable.
+Work work(std::size_t n) {
+  if (n >= 1000000) return {1, 2};
+  if (n >= 100000) return {2, 3};
+  if (n >= 10000) return {10, 2};
+  return {50, 1};
+}
+
+const char* backend_name(Backend b) { return b == Backend::Cpu ? "cpu" : "openmp"; }
+
+/// The scene of the last size asked for: built once per size, not once per repetition.
+const tridem::Scene& pile(std::size_t n) {
+  static std::size_t cached_n = 0;
+  static tridem::Scene scene;
+  if (cached_n != n) {
+    scene = tridem::dense_pile(n);
+    cached_n = n;
+  }
+  return scene;
+}
+
+void dense_pile_case(benchmark::State& state, Backend backend, std::size_t n,
+                     std::int64_t k) {
+  std::unique_ptr<tridem::Solver> solver;
+  try {
+    tridem::SolverConfig config;
+    config.backend = backend;
+    solver = tridem::make_solver(pile(n), config);
+    solver->advance(kWarmupSteps);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    for (auto _ : state) {
+    }
+    return;
+  }
+  try {
+    for (auto _ : state) solver->advance(k);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  // Untimed: how dense the pile still is at the end of the window.
+  tridem::Snapshot snap;
+  solver->snapshot(snap, true);
+  const double tri = static_cast<double>(solver->size());
+  using benchmark::Counter;
+  state.counters["tri_steps_per_s"] = Counter(tri * static_cast<double>(k),
+                                              Counter::kIsIterationInvariantRate);
+  // seconds / (k·iterations): wall seconds per step (the console prints it as ms, us)
+  state.counters["s_per_step"] = Counter(static_cast<double>(k),
+                                         Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["threads"] = backend == Backend::Cpu ? 1 : omp_get_max_threads();
+  state.counters["triangles"] = tri;
+  state.counters["steps_per_iter"] = static_cast<double>(k);
+  state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
+  state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  state.SetLabel(solver->description());
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) {
+        auto model = line.substr(colon + 1);
+        model.erase(0, model.find_first_not_of(" \t"));
+        return model;
+      }
+    }
+  return "unknown";
+}
+
+/// Takes "--name=value" out of argv; returns the value or an empty string.
+std::string take_flag(int& argc, char** argv, const std::string& name) {
+  const std::string prefix = "--" + name + "=";
+  std::string value;
+  int out = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind(prefix, 0) == 0)
+      value = arg.substr(prefix.size());
+    else
+      argv[out++] = argv[i];
+  }
+  argc = out;
+  return value;
+}
+
+double parse_number(const std::string& flag, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && v > 0) return v;
+  } catch (const std::exception&) {
+  }
+  std::cerr << "tridem_bench: --" << flag << " wants a positive number, got '" << text << "'\n";
+  std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string max_n_flag = take_flag(argc, argv, "max_n");
+  const std::string min_n_flag = take_flag(argc, argv, "min_n");
+  const std::string backends_flag = take_flag(argc, argv, "backends");
+  const std::string large_reps_flag = take_flag(argc, argv, "large_reps");
+  const std::string iter_scale_flag = take_flag(argc, argv, "iter_scale");
+  const double max_n = max_n_flag.empty() ? 1e6 : parse_number("max_n", max_n_flag);
+  const double min_n = min_n_flag.empty() ? 1e3 : parse_number("min_n", min_n_flag);
+  const int large_reps =
+      large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("large_reps", large_reps_flag));
+  const double iter_scale =
+      iter_scale_flag.empty() ? 1.0 : parse_number("iter_scale", iter_scale_flag);
+  std::vector<Backend> backends;
+  const std::string list = backends_flag.empty() ? "cpu,openmp" : backends_flag;
+  if (list.find("cpu") != std::string::npos) backends.push_back(Backend::Cpu);
+  if (list.find("openmp") != std::string::npos) backends.push_back(Backend::OpenMP);
+  if (backends.empty()) {
+    std::cerr << "tridem_bench: --backends wants cpu, openmp or cpu,openmp\n";
+    return 2;
+  }
+
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+
+  benchmark::AddCustomContext("cpu_model", cpu_model());
+  benchmark::AddCustomContext("hardware_threads",
+                              std::to_string(std::thread::hardware_concurrency()));
+  benchmark::AddCustomContext("omp_max_threads", std::to_string(omp_get_max_threads()));
+  benchmark::AddCustomContext("compiler", TRIDEM_BENCH_COMPILER);
+  benchmark::AddCustomContext("tridem_build_type", TRIDEM_BENCH_BUILD_TYPE);
+  benchmark::AddCustomContext("tridem_version", TRIDEM_VERSION);
+  benchmark::AddCustomContext("scene", "dense_pile(n), double precision, grid broad phase");
+
+  for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000},
+                              std::size_t{1000000}}) {
+    if (static_cast<double>(n) > max_n || static_cast<double>(n) < min_n) continue;
+    for (const Backend b : backends) {
+      const std::string name = std::string("dense_pile/") + backend_name(b) + "/n:" +
+                               std::to_string(n);
+      const Work w = work(n);
+      auto* bm = benchmark::RegisterBenchmark(name.c_str(), dense_pile_case, b, n,
+                                              w.steps_per_iteration);
+      const auto iters = std::max<std::int64_t>(
+          1, std::llround(static_cast<double>(w.iterations) * iter_scale));
+      bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(
+          benchmark::kMillisecond);
+      if (n >= 1000000 && large_reps > 0) bm->Repetitions(large_reps);
+    }
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
