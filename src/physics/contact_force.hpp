@@ -40,6 +40,55 @@ struct EdgeLoad {
   Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
 };
 
+/// Signed areas of the contactor's vertices against the target's edges and against the
+/// rays from the target's centroid to its vertices. Along a contactor edge every such area
+/// is linear, so these nine plus nine numbers give every clipping value of the three edges;
+/// the edge areas are also exactly what the separating-axis test looks at.
+template <class Real>
+struct RoleAreas {
+  Real edge[3][3];  ///< [target edge k][contactor vertex i]: >= 0 on the inner side
+  Real ray[3][3];   ///< [target ray k][contactor vertex i]
+};
+
+/// The edge areas: all the separating-axis test needs.
+template <class Real>
+TRIDEM_HD inline void edge_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
+                                 RoleAreas<Real>& r) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<Real> edge = target.v[(k + 1) % 3] - target.v[k];
+    for (int i = 0; i < 3; ++i) r.edge[k][i] = cross(edge, contactor.v[i] - target.v[k]);
+  }
+}
+
+/// The ray areas, needed only once the pair is known to overlap.
+template <class Real>
+TRIDEM_HD inline void ray_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
+                                Vec2<Real> target_centroid, RoleAreas<Real>& r) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<Real> ray = target.v[k] - target_centroid;
+    for (int i = 0; i < 3; ++i) r.ray[k][i] = cross(ray, contactor.v[i] - target_centroid);
+  }
+}
+
+template <class Real>
+TRIDEM_HD inline RoleAreas<Real> role_areas(const Triangle<Real>& contactor,
+                                            const Triangle<Real>& target,
+                                            Vec2<Real> target_centroid) {
+  RoleAreas<Real> r;
+  edge_areas(contactor, target, r);
+  ray_areas(contactor, target, target_centroid, r);
+  return r;
+}
+
+/// True when an edge of the target has every contactor vertex on or outside it.
+template <class Real>
+TRIDEM_HD inline bool target_edge_separates(const RoleAreas<Real>& r) {
+  for (int k = 0; k < 3; ++k)
+    if (r.edge[k][0] <= Real(0) && r.edge[k][1] <= Real(0) && r.edge[k][2] <= Real(0))
+      return true;
+  return false;
+}
+
 /// Narrows [t0, t1] to where f0 + t·fd >= 0; false when nothing of positive length is left.
 template <class Real>
 TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
@@ -50,52 +99,50 @@ TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
   return t1 > t0;
 }
 
-/// The edge p + t·d, t in [0, 1], is clipped to the target once; the three lines from the
-/// target's centroid to its vertices then split the inside part among the sub-triangles.
-/// Along the edge every signed area is linear in t, f(t) = f0 + t·fd, and φ in S_k is the
-/// target-edge area f_k scaled by 3/(2A), so each value is computed once.
+/// Edge e of the contactor, p + t·d with t in [0, 1], is clipped to the target once; the
+/// three centroid rays then split the inside part among the sub-triangles S_k = {ray_k >=
+/// 0, ray_k+1 <= 0}. φ in S_k is the target-edge area f_k scaled by 3/(2A).
 template <class Real>
-TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
-                                          const Triangle<Real>& target, Real target_area,
-                                          Vec2<Real> target_centroid) {
+TRIDEM_HD inline EdgeLoad<Real> edge_load(const RoleAreas<Real>& areas, int e,
+                                          const Triangle<Real>& contactor,
+                                          const Triangle<Real>& target, Real target_area) {
   EdgeLoad<Real> load;
-  const Vec2<Real> p = contactor.v[e];
-  const Vec2<Real> d = contactor.v[(e + 1) % 3] - p;
-  Real f0[3], fd[3];
+  const int e1 = (e + 1) % 3;
   Real t_lo = Real(0), t_hi = Real(1);
-  for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> edge = target.v[(k + 1) % 3] - target.v[k];
-    f0[k] = cross(edge, p - target.v[k]);
-    fd[k] = cross(edge, d);
-    if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
-  }
-  // g_k >= 0 on the side of the line c → x_k where S_k lies; S_k = {g_k >= 0, g_k+1 <= 0}.
-  Real g0[3], gd[3];
-  for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> ray = target.v[k] - target_centroid;
-    g0[k] = cross(ray, p - target_centroid);
-    gd[k] = cross(ray, d);
-  }
+  for (int k = 0; k < 3; ++k)
+    if (!clip_to_half_plane(areas.edge[k][e], areas.edge[k][e1] - areas.edge[k][e], t_lo, t_hi))
+      return load;
+  const Vec2<Real> p = contactor.v[e];
+  const Vec2<Real> d = contactor.v[e1] - p;
   const Real edge_length = norm(d);
   const Real to_phi = Real(3) / (Real(2) * target_area);
   Vec2<Real> moment{};
   for (int k = 0; k < 3; ++k) {
     const int next = (k + 1) % 3;
     Real t0 = t_lo, t1 = t_hi;
-    if (!clip_to_half_plane(g0[k], gd[k], t0, t1)) continue;
-    if (!clip_to_half_plane(-g0[next], -gd[next], t0, t1)) continue;
+    if (!clip_to_half_plane(areas.ray[k][e], areas.ray[k][e1] - areas.ray[k][e], t0, t1)) continue;
+    if (!clip_to_half_plane(-areas.ray[next][e], areas.ray[next][e] - areas.ray[next][e1], t0, t1))
+      continue;
+    const Real f0 = areas.edge[k][e], fd = areas.edge[k][e1] - f0;
     const Vec2<Real> q0 = p + d * t0, q1 = p + d * t1;
-    const Real phi0 = to_phi * (f0[k] + t0 * fd[k]);
-    const Real phi1 = to_phi * (f0[k] + t1 * fd[k]);
-    const LinearLoad<Real> piece = linear_load(q0, q1, phi0, phi1);
+    const LinearLoad<Real> piece =
+        linear_load(q0, q1, to_phi * (f0 + t0 * fd), to_phi * (f0 + t1 * fd));
     load.integral += piece.integral;
     moment += piece.point * piece.integral;
     // Piece of length ℓ in S_k of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k.
-    load.stiffness += edge_length * (t1 - t0) * to_phi *
-                      norm(target.v[next] - target.v[k]);
+    load.stiffness += edge_length * (t1 - t0) * to_phi * norm(target.v[next] - target.v[k]);
   }
   if (load.integral > Real(0)) load.point = moment / load.integral;
   return load;
+}
+
+/// The same for one edge on its own (tests and tools).
+template <class Real>
+TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
+                                          const Triangle<Real>& target, Real target_area,
+                                          Vec2<Real> target_centroid) {
+  return edge_load(role_areas(contactor, target, target_centroid), e, contactor, target,
+                   target_area);
 }
 
 /// Mass that sets the damping of a pair: the reduced mass, or the free body's mass when
@@ -113,15 +160,23 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
                                             const ContactLaw<Real>& law, Real dt,
                                             PairSlip<Real>& slip) {
   PairForce<Real> out;
+  // The separating-axis test reads the same edge areas the clipping needs.
+  RoleAreas<Real> areas[2];
+  edge_areas(a.tri, b.tri, areas[0]);
+  edge_areas(b.tri, a.tri, areas[1]);
   EdgeLoad<Real> loads[kEdgeContacts];
   Real total_integral = 0, total_stiffness = 0;
-  for (int role = 0; role < 2; ++role) {
-    const Body<Real>& c = role == 0 ? a : b;
-    const Body<Real>& t = role == 0 ? b : a;
-    for (int e = 0; e < 3; ++e) {
-      loads[role * 3 + e] = edge_load(c.tri, e, t.tri, t.area, t.c);
-      total_integral += loads[role * 3 + e].integral;
-      total_stiffness += loads[role * 3 + e].stiffness;
+  if (!target_edge_separates(areas[0]) && !target_edge_separates(areas[1])) {
+    ray_areas(a.tri, b.tri, b.c, areas[0]);
+    ray_areas(b.tri, a.tri, a.c, areas[1]);
+    for (int role = 0; role < 2; ++role) {
+      const Body<Real>& c = role == 0 ? a : b;
+      const Body<Real>& t = role == 0 ? b : a;
+      for (int e = 0; e < 3; ++e) {
+        loads[role * 3 + e] = edge_load(areas[role], e, c.tri, t.tri, t.area);
+        total_integral += loads[role * 3 + e].integral;
+        total_stiffness += loads[role * 3 + e].stiffness;
+      }
     }
   }
   if (!(total_integral > Real(0))) {

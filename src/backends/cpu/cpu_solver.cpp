@@ -176,14 +176,8 @@ void CpuSolver<Real>::compute_pair_forces() {
       while (old < old_end && old_pairs_.partner[old] < j) ++old;
       physics::PairSlip<Real> slip{};
       if (old < old_end && old_pairs_.partner[old] == j) slip = old_slip_[old];
-      const physics::Body<Real> b = body(j);
-      if (physics::triangles_overlap(a.tri, b.tri)) {
-        const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
-        result_[s] = physics::pair_force(a, b, law, dt_, slip);
-      } else {
-        result_[s] = {};
-        slip = {};
-      }
+      const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
+      result_[s] = physics::pair_force(a, body(j), law, dt_, slip);
       slip_[s] = slip;
     }
   }
