@@ -1,6 +1,8 @@
 #include "tridem/run.hpp"
 
 #include "core/progress.hpp"
+#include "core/solver_factory.hpp"
+#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <algorithm>
@@ -31,18 +33,23 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   config.method = scene.simulation.method;
   config.threads = options.threads;
   config.force = options.force;
-  const auto solver = make_solver(scene, config);
-  const SceneInfo info = describe_scene(scene);
+  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
+  const ParticleModel model = build_particle_model(scene);
+  const TimeStep ts = estimate_time_step(scene, model);
+  const auto solver = make_solver(scene, model, ts, config);
+  const auto free = static_cast<std::size_t>(
+      std::count(model.motion.begin(), model.motion.end(), Motion::Free));
 
   const std::int64_t last = scene.simulation.steps;
   const std::int64_t every = scene.output.every;
   std::FILE* log = options.log;
   if (log) {
-    fmt::print(log, "tridem {}: {} triangles ({} free), solver {}\n", TRIDEM_VERSION,
-               solver->size(), info.free, solver->description());
+    fmt::print(log, "tridem {}: {} triangle{} ({} free), solver {}{}\n", TRIDEM_VERSION,
+               solver->size(), solver->size() == 1 ? "" : "s", free, solver->description(),
+               config.backend == Backend::Auto ? " (picked by backend = auto)" : "");
     fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
-               solver->dt(), solver->dt() / info.dt_critical, info.dt_critical,
-               info.dt_automatic ? ", automatic" : "", last,
+               solver->dt(), solver->dt() / ts.critical, ts.critical,
+               ts.automatic ? ", automatic" : "", last,
                static_cast<double>(last) * solver->dt());
     std::fflush(log);
   }

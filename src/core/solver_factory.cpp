@@ -1,6 +1,6 @@
+#include "core/solver_factory.hpp"
+
 #include "backends/cpu/cpu_solver.hpp"
-#include "core/particle_model.hpp"
-#include "core/time_step.hpp"
 #include "tridem/error.hpp"
 #include "tridem/solver.hpp"
 
@@ -39,7 +39,11 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
 std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config) {
   if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
   const ParticleModel model = build_particle_model(scene);
-  const TimeStep ts = estimate_time_step(scene, model);
+  return make_solver(scene, model, estimate_time_step(scene, model), config);
+}
+
+std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& model,
+                                    const TimeStep& ts, const SolverConfig& config) {
   check_time_step(scene, ts, config.force);
   const Backend backend = resolve_backend(config.backend);
   if (config.precision == Precision::Float)
