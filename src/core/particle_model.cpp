@@ -29,6 +29,7 @@ void check_triangle(const Scene& scene, std::size_t id, const TriangleSpec& t) {
 }  // namespace
 
 ParticleModel build_particle_model(const Scene& scene) {
+  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
   ParticleModel m;
   const std::size_t n = scene.triangles.size();
   m.offsets.resize(n);

@@ -23,8 +23,8 @@ struct ParticleModel {
   std::size_t size() const { return centroid.size(); }
 };
 
-/// Builds the model; throws SceneError naming the particle for a degenerate triangle, a
-/// non-finite value or a bad material index.
+/// Builds the model; throws SceneError for a scene without triangles, and one naming the
+/// particle for a degenerate triangle, a non-finite value or a bad material index.
 ParticleModel build_particle_model(const Scene& scene);
 
 /// Contact law for every ordered pair of materials, row-major (a·n + b).

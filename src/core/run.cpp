@@ -2,7 +2,6 @@
 
 #include "core/progress.hpp"
 #include "core/solver_factory.hpp"
-#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <algorithm>
@@ -33,7 +32,6 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   config.method = scene.simulation.method;
   config.threads = options.threads;
   config.force = options.force;
-  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
   const auto solver = make_solver(scene, model, ts, config);

@@ -37,7 +37,6 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
 }  // namespace
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config) {
-  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
   const ParticleModel model = build_particle_model(scene);
   return make_solver(scene, model, estimate_time_step(scene, model), config);
 }

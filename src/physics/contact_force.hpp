@@ -89,16 +89,6 @@ TRIDEM_HD inline bool target_edge_separates(const RoleAreas<Real>& r) {
   return false;
 }
 
-/// Narrows [t0, t1] to where f0 + t·fd >= 0; false when nothing of positive length is left.
-template <class Real>
-TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
-  if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
-  const Real t = -f0 / fd;
-  if (fd > Real(0)) t0 = t > t0 ? t : t0;
-  else t1 = t < t1 ? t : t1;
-  return t1 > t0;
-}
-
 /// Edge e of the contactor, p + t·d with t in [0, 1], is clipped to the target once; the
 /// three centroid rays then split the inside part among the sub-triangles S_k = {ray_k >=
 /// 0, ray_k+1 <= 0}. φ in S_k is the target-edge area f_k scaled by 3/(2A).

@@ -97,27 +97,15 @@ TRIDEM_HD inline bool direct_area_overlap(const Triangle<Real>& a, const Triangl
   return false;
 }
 
-/// Parameter interval [t0, t1] of the segment p + t·d, t in [0, 1], that lies inside the
-/// CCW triangle (u0, u1, u2). Returns false when nothing of positive length remains.
+/// Narrows [t0, t1] to where f0 + t·fd >= 0 (a signed area along a segment, linear in t);
+/// false when nothing of positive length is left. Three of these clip a segment to a
+/// triangle.
 template <class Real>
-TRIDEM_HD inline bool clip_segment(Vec2<Real> p, Vec2<Real> d, Vec2<Real> u0, Vec2<Real> u1,
-                                   Vec2<Real> u2, Real& t0, Real& t1) {
-  t0 = Real(0);
-  t1 = Real(1);
-  const Vec2<Real> u[3] = {u0, u1, u2};
-  for (int k = 0; k < 3; ++k) {
-    // Inside edge k: f(t) = f0 + t·fd >= 0, the signed area with the edge.
-    const Vec2<Real> e = u[(k + 1) % 3] - u[k];
-    const Real f0 = cross(e, p - u[k]);
-    const Real fd = cross(e, d);
-    if (fd == Real(0)) {
-      if (f0 < Real(0)) return false;
-    } else {
-      const Real t = -f0 / fd;
-      if (fd > Real(0)) t0 = t > t0 ? t : t0;
-      else t1 = t < t1 ? t : t1;
-    }
-  }
+TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
+  if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
+  const Real t = -f0 / fd;
+  if (fd > Real(0)) t0 = t > t0 ? t : t0;
+  else t1 = t < t1 ? t : t1;
   return t1 > t0;
 }
 

@@ -76,19 +76,33 @@ TEST(Geometry, EdgeCrossingWithNoVertexInsideIsMissedByDirectAreaMethod) {
   EXPECT_FALSE(direct_area_overlap(a, b));
 }
 
+/// Clips p + t·d to the CCW triangle u with the half-plane of each edge, as edge_load does.
+bool clip_to_triangle(V p, V d, const T& u, double& t0, double& t1) {
+  t0 = 0;
+  t1 = 1;
+  for (int k = 0; k < 3; ++k) {
+    const V e = u.v[(k + 1) % 3] - u.v[k];
+    if (!clip_to_half_plane(cross(e, p - u.v[k]), cross(e, d), t0, t1)) return false;
+  }
+  return true;
+}
+
 TEST(Geometry, ClipSegmentThroughTriangle) {
-  const V u0{0, 0}, u1{4, 0}, u2{0, 4};
+  const T u{{{0, 0}, {4, 0}, {0, 4}}};
   double t0 = -1, t1 = -1;
   // Horizontal line y = 1 from x = -1 to x = 5: inside for x in [0, 3].
-  ASSERT_TRUE(clip_segment(V{-1, 1}, V{6, 0}, u0, u1, u2, t0, t1));
+  ASSERT_TRUE(clip_to_triangle(V{-1, 1}, V{6, 0}, u, t0, t1));
   EXPECT_NEAR(t0, 1.0 / 6.0, 1e-15);
   EXPECT_NEAR(t1, 4.0 / 6.0, 1e-15);
-  // Entirely outside.
-  EXPECT_FALSE(clip_segment(V{-1, 5}, V{6, 0}, u0, u1, u2, t0, t1));
+  // Entirely outside, and parallel to an edge outside it.
+  EXPECT_FALSE(clip_to_triangle(V{-1, 5}, V{6, 0}, u, t0, t1));
+  EXPECT_FALSE(clip_to_triangle(V{-1, -1}, V{6, 0}, u, t0, t1));
   // Entirely inside.
-  ASSERT_TRUE(clip_segment(V{0.5, 0.5}, V{1, 0}, u0, u1, u2, t0, t1));
+  ASSERT_TRUE(clip_to_triangle(V{0.5, 0.5}, V{1, 0}, u, t0, t1));
   EXPECT_EQ(t0, 0.0);
   EXPECT_EQ(t1, 1.0);
+  // Touching at one point only leaves nothing of positive length.
+  EXPECT_FALSE(clip_to_triangle(V{-1, 4}, V{2, 0}, u, t0, t1));  // through the vertex (0, 4)
 }
 
 }  // namespace
