@@ -40,7 +40,7 @@ struct SceneInfo {
   double longest_edge = 0;
   double dt_critical = 0, dt_chosen = 0;
   bool dt_automatic = true;
-  std::size_t memory_bytes = 0;           ///< estimated solver memory
+  std::size_t memory_bytes = 0;           ///< estimated memory of a run (solver and host)
 };
 
 SceneInfo describe_scene(const Scene& scene);

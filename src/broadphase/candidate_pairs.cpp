@@ -120,8 +120,7 @@ void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool pa
     row_count_[i] = count;
   }
   exclusive_scan(row_count_, n_, pairs.offset);
-  if (pairs.partner.size() < static_cast<std::size_t>(pairs.count()))
-    pairs.partner.resize(static_cast<std::size_t>(pairs.count() * 3 / 2 + 16));
+  grow_to(pairs.partner, pairs.count());
 #pragma omp parallel for schedule(dynamic, 256) if (parallel)
   for (std::int64_t i = 0; i < n; ++i) {
     std::int64_t at = pairs.offset[i];

@@ -22,8 +22,7 @@ void build_reverse_index(const PairList& pairs, std::size_t n, bool parallel,
     ++out.cursor[pairs.partner[s]];
   }
   exclusive_scan(out.cursor, n, out.offset);
-  if (out.slot.size() < static_cast<std::size_t>(pairs.count()))
-    out.slot.resize(static_cast<std::size_t>(pairs.count() * 3 / 2 + 16));
+  grow_to(out.slot, pairs.count());
   std::copy(out.offset.begin(), out.offset.end() - 1, out.cursor.begin());
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::int64_t e = 0; e < n_emitters; ++e) {

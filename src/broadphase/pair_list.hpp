@@ -47,6 +47,14 @@ inline void sort_row(T* v, std::int64_t begin, std::int64_t end) {
   }
 }
 
+/// Makes room for `needed` entries, with 20% headroom so that a slowly growing pair count
+/// reallocates rarely; never shrinks. The only allocation in a running time loop.
+template <class Vec>
+inline void grow_to(Vec& v, std::int64_t needed) {
+  if (v.size() < static_cast<std::size_t>(needed))
+    v.resize(static_cast<std::size_t>(needed + needed / 5 + 16));
+}
+
 /// Exclusive prefix sum of counts[0..n) into offset[0..n], offset[0] = 0.
 void exclusive_scan(const std::vector<std::int64_t>& counts, std::size_t n,
                     std::vector<std::int64_t>& offset);

@@ -10,18 +10,24 @@ namespace tridem {
 
 namespace {
 
-/// Bytes the CPU solver holds per particle and per candidate pair, for real type Real.
+/// Bytes a run holds per particle, for real type Real: the CPU solver's arrays, plus the
+/// host copies (scene, particle model, and the snapshot with its contact list on output
+/// steps).
 template <class Real>
-std::size_t solver_bytes(std::size_t n) {
+std::size_t run_bytes(std::size_t n) {
   // Per particle: offsets and vertices (12), mass terms and size (5), state (6), forces
   // (3), boxes (4) reals; material, motion, cell bookkeeping and the pair-row offsets.
   const std::size_t per_particle = 30 * sizeof(Real) + sizeof(int) + 1 + 2 * 4 * 8 + 8 + 4 +
                                    8 + 3 * 8 + 2 * 8;
-  // Per pair, two buffers of partner and slip, one of results and the reverse slot;
-  // about seven candidate pairs per particle in a dense packing (6.6 measured, bench/).
+  // Per pair, two buffers of partner and slip, one of results and the reverse slot. A
+  // dense packing has 6.6 candidate pairs per particle (bench/), and the lists keep 20%
+  // headroom: 8 pairs per particle.
   const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) +
                                sizeof(physics::PairForce<Real>) + 8;
-  return n * (per_particle + 7 * per_pair);
+  // Host copies: TriangleSpec, ParticleModel, Snapshot (17 doubles and two small ints),
+  // and about six contact records of a dense packing.
+  const std::size_t host = sizeof(TriangleSpec) + 136 + 17 * 8 + 8 + 6 * sizeof(ContactRecord);
+  return n * (per_particle + 8 * per_pair + host);
 }
 
 }  // namespace
@@ -51,8 +57,8 @@ SceneInfo describe_scene(const Scene& scene) {
   info.dt_chosen = ts.chosen;
   info.dt_automatic = ts.automatic;
   info.memory_bytes = scene.simulation.precision == Precision::Float
-                          ? solver_bytes<float>(model.size())
-                          : solver_bytes<double>(model.size());
+                          ? run_bytes<float>(model.size())
+                          : run_bytes<double>(model.size());
   return info;
 }
 

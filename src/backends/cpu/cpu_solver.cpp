@@ -17,12 +17,6 @@ std::vector<Real> cast(const std::vector<double>& v) {
   return std::vector<Real>(v.begin(), v.end());
 }
 
-template <class Vec>
-void grow(Vec& v, std::int64_t needed) {
-  if (v.size() < static_cast<std::size_t>(needed))
-    v.resize(static_cast<std::size_t>(needed * 3 / 2 + 16));
-}
-
 }  // namespace
 
 template <class Real>
@@ -144,8 +138,8 @@ template <class Real>
 void CpuSolver<Real>::find_pairs() {
   finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                pairs_);
-  grow(slip_, pairs_.count());
-  grow(result_, pairs_.count());
+  grow_to(slip_, pairs_.count());
+  grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);
 }
 
