@@ -12,9 +12,6 @@
 
 namespace tridem {
 
-/// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
-enum class Encoding { Binary, Ascii };
-
 /// Conserved quantities of the free particles at one step. Fixed and prescribed particles
 /// are excluded: their motion is imposed, so they would only hide what the solver does.
 struct EnergyRow {

@@ -48,10 +48,14 @@ struct SimulationSettings {
   double local_damping = 0;            ///< Cundall's α in [0, 1); 0 = off
 };
 
+/// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
+enum class Encoding { Binary, Ascii };
+
 struct OutputSettings {
   std::string dir = "out";
   std::int64_t every = 0;              ///< steps between frames; 0 = no frames
   bool contacts = true;                ///< write the contact network with each frame
+  Encoding encoding = Encoding::Binary; ///< of the .vtu/.vtp frames
 };
 
 struct Scene {

@@ -52,7 +52,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
     std::fflush(log);
   }
 
-  OutputSet out(scene.output, scene.output.dir);
+  OutputSet out(scene.output, scene.output.dir, scene.output.encoding);
   Snapshot snap;
   auto emit = [&](std::int64_t step) {
     const bool frame = every > 0 && (step % every == 0 || step == last);

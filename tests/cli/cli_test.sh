@@ -58,6 +58,13 @@ expect_ok "$tridem" run pile.toml --quiet --out other --steps 10 --backend cpu
 grep -q "cpu (serial)" out.txt || fail "--backend cpu not used"
 [ "$(cut -d, -f1 other/energy.csv | tail -1)" = "10" ] || fail "--steps not used"
 
+# [output] vtk_encoding = "ascii" writes text frames, which render reads too.
+sed 's/every = 100/every = 100\nvtk_encoding = "ascii"/' pile.toml >ascii.toml
+expect_ok "$tridem" run ascii.toml --quiet --out ascii_out --steps 100
+grep -q 'format="ascii"' ascii_out/frames/frame_000000100.vtu || fail "vtk_encoding = ascii not used"
+grep -q 'format="binary"' pile_out/frames/frame_000000100.vtu || fail "frames are not binary by default"
+expect_ok "$tridem" render ascii_out/frames/frame_000000100.vtu -o ascii.png
+
 # info describes the scene.
 expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"

@@ -44,6 +44,9 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
   o.every = r.integer("every").value_or(o.every);
   if (o.every < 0) r.fail("every", fmt::format("must be >= 0 (0 = no frames), got {}", o.every));
   o.contacts = r.boolean("contacts").value_or(o.contacts);
+  o.encoding = r.choice<Encoding>("vtk_encoding",
+                                  {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}})
+                   .value_or(o.encoding);
   r.reject_unknown_keys();
   return o;
 }

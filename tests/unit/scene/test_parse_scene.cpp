@@ -37,6 +37,7 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
   EXPECT_EQ(s.output.dir, "results");
   EXPECT_EQ(s.output.every, 100);
   EXPECT_FALSE(s.output.contacts);
+  EXPECT_EQ(s.output.encoding, Encoding::Ascii);
 
   ASSERT_EQ(s.materials.size(), 2u);
   EXPECT_EQ(s.materials[0].name, "rock");
@@ -108,6 +109,7 @@ TEST(SceneParse, OmittedKeysTakeDefaults) {
   EXPECT_EQ(s.output.dir, "out");
   EXPECT_EQ(s.output.every, 0);
   EXPECT_TRUE(s.output.contacts);
+  EXPECT_EQ(s.output.encoding, Encoding::Binary);
   EXPECT_DOUBLE_EQ(s.materials[0].friction, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].damping, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].tangential_penalty, 1e6);

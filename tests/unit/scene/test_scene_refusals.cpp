@@ -158,6 +158,8 @@ TEST(SceneRefusals, BadEnumStrings) {
                  {"bad.toml:3:", "key 'precision'", "\"float\""});
   expect_refused("[simulation]\nsteps = 5\nmethod = \"tree\"\n",
                  {"bad.toml:3:", "key 'method'", "\"all-pairs\""});
+  expect_refused("[simulation]\nsteps = 5\n[output]\nvtk_encoding = \"zip\"\n",
+                 {"bad.toml:4:", "key 'vtk_encoding'", "\"ascii\""});
   expect_refused(with_triangle("material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
                                "motion = \"moving\"\n"),
                  {"bad.toml:10:", "particle id 0", "key 'motion'", "\"prescribed\""});
