@@ -36,9 +36,8 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
   }
   TimeStep ts;
   if (l_max > 0) {
-    ts.stiffness = 3.0 * p_max * l_max / h_min;
-    ts.mass = m_min;
-    ts.critical = 2.0 * std::sqrt(m_min / ts.stiffness);
+    const double stiffness = 3.0 * p_max * l_max / h_min;
+    ts.critical = 2.0 * std::sqrt(m_min / stiffness);
   } else {
     ts.critical = std::numeric_limits<double>::infinity();
   }

@@ -11,8 +11,6 @@ namespace tridem {
 struct TimeStep {
   double critical = 0;   ///< dt_crit, s (infinite when nothing moves by forces)
   double chosen = 0;     ///< the dt the run uses
-  double stiffness = 0;  ///< k of the estimate, N/m per metre of thickness
-  double mass = 0;       ///< m_min of the estimate
   bool automatic = true; ///< dt was left out of the scene
 };
 
