@@ -70,17 +70,23 @@ TEST(Vtu, EmptyFrameRoundTrips) {
   EXPECT_EQ(r.step, 3);
 }
 
+/// Writes the sample snapshot as an ASCII frame whose id array reads `ids` instead of
+/// "0 1 2".
+void write_frame_with_ids(const std::filesystem::path& file, const std::string& ids) {
+  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
+  std::string text = test::read_file(file);
+  const std::string header = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  const auto at = text.find(header + "0 1 2");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, header.size() + 5, header + ids);
+  std::ofstream(file, std::ios::binary) << text;
+}
+
 TEST(Vtu, CellsOutOfIdOrderAreReordered) {
   test::TempDir tmp;
   const auto file = tmp.path() / "f.vtu";
-  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
-  std::string text = test::read_file(file);
   // Swap the ids of cells 0 and 1; their data then belongs to the other particle.
-  const std::string ids = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 2";
-  const auto at = text.find(ids);
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, ids.size(), "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n1 0 2");
-  std::ofstream(file, std::ios::binary) << text;
+  write_frame_with_ids(file, "1 0 2");
   const Snapshot s = test::sample_snapshot();
   const Snapshot r = read_vtu_frame(file);
   EXPECT_EQ(r.vx[0], s.vx[1]);
@@ -91,13 +97,7 @@ TEST(Vtu, CellsOutOfIdOrderAreReordered) {
 TEST(Vtu, DuplicateIdIsRefused) {
   test::TempDir tmp;
   const auto file = tmp.path() / "f.vtu";
-  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
-  std::string text = test::read_file(file);
-  const std::string ids = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 2";
-  const auto at = text.find(ids);
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, ids.size(), "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n0 1 1");
-  std::ofstream(file, std::ios::binary) << text;
+  write_frame_with_ids(file, "0 1 1");
   EXPECT_THROW(read_vtu_frame(file), Error);
 }
 
