@@ -1,6 +1,6 @@
 // CPU solver benchmark: triangle-steps per second of the serial reference solver (backend
 // cpu) and of its OpenMP twin (backend openmp) on the standard dense settling pile,
-// dense_pile(n), for n = 10^3 .. 10^6. See bench/README.md for how to run and read it.
+// dense_pile(n), for n = 10^3 .. 10^7, and the GPU solver (backend cuda). See bench/README.md for how to run and read it.
 //
 // Each case is one Google Benchmark run per repetition: a fresh pile is built and warmed
 // up outside timing, then every timed iteration advances the solver by k steps; the whole
@@ -17,10 +17,13 @@
 // Extra flags (before or among the --benchmark_* ones):
 //   --max_n=N         skip sizes above N (e.g. --max_n=1e5 to fit a time budget)
 //   --min_n=N         skip sizes below N
-//   --backends=LIST   cpu,openmp (default both)
+//   --backends=LIST   cpu,openmp,cuda,cuda-float (default cpu,openmp); cuda-float is the
+//                     GPU in single precision, the others double
+//   --frames=1        also time one output frame (snapshot) per variant and size
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
 //   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
 //                     more iterations also move the window later into the decompression
+#include "backends/cuda/cuda_backend.hpp"
 #include "tridem/solver.hpp"
 #include "tridem/standard_scenes.hpp"
 
@@ -60,13 +63,34 @@ struct Work {
 /// About 5·10^4 .. 2·10^6 triangle-steps per repetition: ≳0.1 s of serial work at every
 /// size on a typical core while keeping the 10^6 serial case affordable.
 Work work(std::size_t n) {
+  if (n >= 10000000) return {1, 1};
   if (n >= 1000000) return {1, 2};
   if (n >= 100000) return {2, 3};
   if (n >= 10000) return {10, 2};
   return {50, 1};
 }
 
-const char* backend_name(Backend b) { return b == Backend::Cpu ? "cpu" : "openmp"; }
+/// The GPU does a step in well under a millisecond: it times more steps per iteration, still
+/// inside the dense window of each size (the first 52 steps below 10^6; the first 32 at
+/// 10^6 and above, where the pile stays dense for thousands of steps).
+Work gpu_work(std::size_t n) {
+  if (n >= 1000000) return {10, 3};
+  return {50, 1};
+}
+
+/// A solver to measure: a backend in one precision.
+struct Variant {
+  Backend backend;
+  tridem::Precision precision;
+  const char* name;
+};
+
+const Variant kVariants[] = {
+    {Backend::Cpu, tridem::Precision::Double, "cpu"},
+    {Backend::OpenMP, tridem::Precision::Double, "openmp"},
+    {Backend::Cuda, tridem::Precision::Double, "cuda"},
+    {Backend::Cuda, tridem::Precision::Float, "cuda-float"},
+};
 
 /// The scene of the last size asked for: built once per size, not once per repetition.
 const tridem::Scene& pile(std::size_t n) {
@@ -79,13 +103,18 @@ const tridem::Scene& pile(std::size_t n) {
   return scene;
 }
 
-void dense_pile_case(benchmark::State& state, Backend backend, std::size_t n,
-                     std::int64_t k) {
+std::unique_ptr<tridem::Solver> make(const Variant& v, std::size_t n) {
+  tridem::SolverConfig config;
+  config.backend = v.backend;
+  config.precision = v.precision;
+  return tridem::make_solver(pile(n), config);
+}
+
+void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int64_t k) {
+  const Backend backend = v.backend;
   std::unique_ptr<tridem::Solver> solver;
   try {
-    tridem::SolverConfig config;
-    config.backend = backend;
-    solver = tridem::make_solver(pile(n), config);
+    solver = make(v, n);
     solver->advance(kWarmupSteps);
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
@@ -109,11 +138,36 @@ void dense_pile_case(benchmark::State& state, Backend backend, std::size_t n,
   // seconds / (k·iterations): wall seconds per step (the console prints it as ms, us)
   state.counters["s_per_step"] = Counter(static_cast<double>(k),
                                          Counter::kIsIterationInvariantRate | Counter::kInvert);
-  state.counters["threads"] = backend == Backend::Cpu ? 1 : omp_get_max_threads();
+  state.counters["threads"] =
+      backend == Backend::Cpu ? 1 : (backend == Backend::OpenMP ? omp_get_max_threads() : 0);
   state.counters["triangles"] = tri;
   state.counters["steps_per_iter"] = static_cast<double>(k);
   state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  state.SetLabel(solver->description());
+}
+
+/// The cost of one output frame: the state (9 arrays of n) copied from the solver's
+/// memory into a host Snapshot, without and with the contact network.
+void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool contacts) {
+  std::unique_ptr<tridem::Solver> solver;
+  try {
+    solver = make(v, n);
+    solver->advance(kWarmupSteps);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    for (auto _ : state) {
+    }
+    return;
+  }
+  tridem::Snapshot snap;
+  for (auto _ : state) solver->snapshot(snap, contacts);
+  const double real = v.precision == tridem::Precision::Float ? 4 : 8;
+  using benchmark::Counter;
+  state.counters["s_per_frame"] = Counter(1, Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["state_bytes"] = 9 * real * static_cast<double>(solver->size());
+  state.counters["contacts"] = static_cast<double>(snap.contacts.size());
+  state.counters["triangles"] = static_cast<double>(solver->size());
   state.SetLabel(solver->description());
 }
 
@@ -173,14 +227,23 @@ int main(int argc, char** argv) {
       large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("large_reps", large_reps_flag));
   const double iter_scale =
       iter_scale_flag.empty() ? 1.0 : parse_number("iter_scale", iter_scale_flag);
-  std::vector<Backend> backends;
+  std::vector<Variant> variants;
   const std::string list = backends_flag.empty() ? "cpu,openmp" : backends_flag;
-  if (list.find("cpu") != std::string::npos) backends.push_back(Backend::Cpu);
-  if (list.find("openmp") != std::string::npos) backends.push_back(Backend::OpenMP);
-  if (backends.empty()) {
-    std::cerr << "tridem_bench: --backends wants cpu, openmp or cpu,openmp\n";
-    return 2;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    const auto* v = std::find_if(std::begin(kVariants), std::end(kVariants),
+                                 [&](const Variant& x) { return name == x.name; });
+    if (v == std::end(kVariants)) {
+      std::cerr << "tridem_bench: --backends wants a list of cpu, openmp, cuda, cuda-float; got '"
+                << name << "'\n";
+      return 2;
+    }
+    variants.push_back(*v);
+    start = comma + 1;
   }
+  const bool frames = !take_flag(argc, argv, "frames").empty();
 
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
@@ -192,22 +255,30 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("compiler", TRIDEM_BENCH_COMPILER);
   benchmark::AddCustomContext("tridem_build_type", TRIDEM_BENCH_BUILD_TYPE);
   benchmark::AddCustomContext("tridem_version", TRIDEM_VERSION);
-  benchmark::AddCustomContext("scene", "dense_pile(n), double precision, grid broad phase");
+  benchmark::AddCustomContext("gpu", tridem::cuda_device_description());
+  benchmark::AddCustomContext("scene", "dense_pile(n), grid broad phase");
 
   for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000},
-                              std::size_t{1000000}}) {
+                              std::size_t{1000000}, std::size_t{10000000}}) {
     if (static_cast<double>(n) > max_n || static_cast<double>(n) < min_n) continue;
-    for (const Backend b : backends) {
-      const std::string name = std::string("dense_pile/") + backend_name(b) + "/n:" +
-                               std::to_string(n);
-      const Work w = work(n);
-      auto* bm = benchmark::RegisterBenchmark(name.c_str(), dense_pile_case, b, n,
-                                              w.steps_per_iteration);
+    for (const Variant& v : variants) {
+      const std::string size = "/n:" + std::to_string(n);
+      const Work w = v.backend == Backend::Cuda ? gpu_work(n) : work(n);
+      auto* bm = benchmark::RegisterBenchmark(
+          (std::string("dense_pile/") + v.name + size).c_str(), dense_pile_case, v, n,
+          w.steps_per_iteration);
       const auto iters = std::max<std::int64_t>(
           1, std::llround(static_cast<double>(w.iterations) * iter_scale));
       bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(
           benchmark::kMillisecond);
       if (n >= 1000000 && large_reps > 0) bm->Repetitions(large_reps);
+      if (!frames) continue;
+      for (const bool contacts : {false, true}) {
+        auto* fb = benchmark::RegisterBenchmark(
+            (std::string(contacts ? "frame_with_contacts/" : "frame/") + v.name + size).c_str(),
+            snapshot_case, v, n, contacts);
+        fb->Iterations(3)->UseRealTime()->Unit(benchmark::kMillisecond);
+      }
     }
   }
   benchmark::RunSpecifiedBenchmarks();

@@ -46,6 +46,9 @@ struct SimulationSettings {
   Precision precision = Precision::Double;
   Method method = Method::Grid;
   double local_damping = 0;            ///< Cundall's α in [0, 1); 0 = off
+  /// Verlet skin of the CUDA pair list, per side of a bounding box, as a fraction of the
+  /// grid cell L: the list is rebuilt only when a box leaves its grown copy.
+  double skin = 0.05;
 };
 
 /// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).

@@ -3,25 +3,35 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace tridem {
+
+GridClasses classify_for_grid(const std::vector<double>& longest_edge,
+                              const std::vector<Motion>& motion) {
+  double l_free = 0, l_all = 0;
+  for (std::size_t i = 0; i < longest_edge.size(); ++i) {
+    l_all = std::max(l_all, longest_edge[i]);
+    if (motion[i] == Motion::Free) l_free = std::max(l_free, longest_edge[i]);
+  }
+  GridClasses g;
+  g.cell = l_free > 0 ? l_free : l_all;
+  g.small.resize(longest_edge.size());
+  for (std::size_t i = 0; i < longest_edge.size(); ++i) g.small[i] = longest_edge[i] <= g.cell;
+  return g;
+}
 
 template <class Real>
 CandidatePairs<Real>::CandidatePairs(const std::vector<double>& longest_edge,
                                      const std::vector<Motion>& motion)
-    : n_(longest_edge.size()), small_(n_), free_(n_) {
-  double l_free = 0, l_all = 0;
+    : n_(longest_edge.size()), free_(n_) {
+  GridClasses classes = classify_for_grid(longest_edge, motion);
+  small_ = std::move(classes.small);
   for (std::size_t i = 0; i < n_; ++i) {
     free_[i] = motion[i] == Motion::Free;
-    l_all = std::max(l_all, longest_edge[i]);
-    if (free_[i]) l_free = std::max(l_free, longest_edge[i]);
-  }
-  const double l = l_free > 0 ? l_free : l_all;
-  for (std::size_t i = 0; i < n_; ++i) {
-    small_[i] = longest_edge[i] <= l;
     if (!small_[i]) large_.push_back(static_cast<std::int32_t>(i));
   }
-  cell_size_ = static_cast<Real>(l);
+  cell_size_ = static_cast<Real>(classes.cell);
   cell_of_.resize(n_);
   sorted_.resize(n_);
   row_count_.resize(n_);

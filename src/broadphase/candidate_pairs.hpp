@@ -14,6 +14,16 @@
 
 namespace tridem {
 
+/// Which particles the grid bins ("small": longest edge at most L) and the cell size L:
+/// the longest edge among free particles, or among all when none is free. Every backend
+/// bins by this rule.
+struct GridClasses {
+  double cell = 0;
+  std::vector<std::uint8_t> small;
+};
+GridClasses classify_for_grid(const std::vector<double>& longest_edge,
+                              const std::vector<Motion>& motion);
+
 template <class Real>
 struct BoxArrays {
   const Real* lo_x;

@@ -3,6 +3,8 @@
 // pairs of emitter i are partner[offset[i] .. offset[i+1]), partners ascending. Every pair
 // appears once. Grouping by emitter lets each pair find its contact history of the
 // previous step in the emitter's old row, and keeps the order deterministic.
+#include "broadphase/row_sort.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -36,15 +38,7 @@ inline void sort_row(T* v, std::int64_t begin, std::int64_t end) {
     std::sort(v + begin, v + end);
     return;
   }
-  for (std::int64_t a = begin + 1; a < end; ++a) {
-    const T key = v[a];
-    std::int64_t b = a - 1;
-    while (b >= begin && v[b] > key) {
-      v[b + 1] = v[b];
-      --b;
-    }
-    v[b + 1] = key;
-  }
+  insertion_sort(v, begin, end);
 }
 
 /// Makes room for `needed` entries, with 20% headroom so that a slowly growing pair count

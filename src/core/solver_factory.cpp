@@ -1,6 +1,7 @@
 #include "core/solver_factory.hpp"
 
 #include "backends/cpu/cpu_solver.hpp"
+#include "backends/cuda/cuda_backend.hpp"
 #include "tridem/error.hpp"
 #include "tridem/solver.hpp"
 
@@ -10,6 +11,7 @@ namespace tridem {
 
 Backend resolve_backend(Backend requested) {
   if (requested != Backend::Auto) return requested;
+  if (cuda_available()) return Backend::Cuda;
   return omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu;
 }
 
@@ -25,9 +27,7 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
     case Backend::OpenMP:
       return std::make_unique<CpuSolver<Real>>(scene, model, ts, config, true);
     case Backend::Cuda:
-      throw RunError(
-          "backend 'cuda' is not available in this build: the CUDA backend is not "
-          "implemented yet; use backend = \"cpu\", \"openmp\" or \"auto\"");
+      return make_cuda_solver(scene, model, ts, config);
     case Backend::Auto:
       break;
   }

@@ -44,4 +44,23 @@ TRIDEM_HD inline void integrate_prescribed(Pose<Real>& p, Real dt) {
   p.theta += p.w * dt;
 }
 
+/// The step every backend takes for one body: free bodies by their forces, the others by
+/// prescription.
+template <class Real>
+TRIDEM_HD inline void advance_body(Pose<Real>& p, bool free, Vec2<Real> f, Real m,
+                                   Real inv_mass, Real inv_inertia, Vec2<Real> g, Real alpha,
+                                   Real dt) {
+  if (free) integrate_free(p, f, m, inv_mass, inv_inertia, g, alpha, dt);
+  else integrate_prescribed(p, dt);
+}
+
+/// True when the advanced pose of a free body is non-finite or has moved more than half
+/// the body's size in one step: the contact forces are then no longer resolved in time.
+template <class Real>
+TRIDEM_HD inline bool runaway_step(const Pose<Real>& p, Real half_size, Real dt) {
+  const bool finite = isfinite(p.c.x) && isfinite(p.c.y) && isfinite(p.theta) &&
+                      isfinite(p.v.x) && isfinite(p.v.y) && isfinite(p.w);
+  return !finite || norm(p.v) * dt > half_size;
+}
+
 }  // namespace tridem::physics

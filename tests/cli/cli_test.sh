@@ -82,7 +82,13 @@ sed 's/steps = 200/steps = 200\ndt = 1.0/' pile.toml >big_dt.toml
 expect_error "dt_crit" "$tridem" run big_dt.toml --quiet
 sed 's/steps = 200/steps = 3\ndt = 1e-3/' pile.toml >forced.toml
 expect_ok "$tridem" run forced.toml --quiet --force --out forced_out
-expect_error "not available" "$tridem" run pile.toml --backend cuda
+# The CUDA backend runs where a GPU is, and says why not elsewhere.
+if nvidia-smi -L >/dev/null 2>&1; then
+  expect_ok "$tridem" run pile.toml --backend cuda --quiet --out cuda_out
+  grep -q "solver cuda" out.txt || fail "--backend cuda did not report the cuda solver"
+else
+  expect_error "not available" "$tridem" run pile.toml --backend cuda
+fi
 expect_error "" "$tridem" run does_not_exist.toml
 expect_error "" "$tridem" run pile.toml --no-such-option
 "$tridem" --version | grep -q "^tridem [0-9]" || fail "--version"

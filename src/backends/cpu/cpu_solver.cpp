@@ -202,11 +202,8 @@ void CpuSolver<Real>::accumulate() {
 template <class Real>
 physics::Pose<Real> CpuSolver<Real>::advanced_pose(std::size_t i) const {
   physics::Pose<Real> p{{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
-  if (motion_[i] == Motion::Free)
-    physics::integrate_free(p, {fx_[i], fy_[i]}, torque_[i], inv_mass_[i], inv_inertia_[i],
-                            gravity_, local_damping_, dt_);
-  else
-    physics::integrate_prescribed(p, dt_);
+  physics::advance_body(p, motion_[i] == Motion::Free, {fx_[i], fy_[i]}, torque_[i],
+                        inv_mass_[i], inv_inertia_[i], gravity_, local_damping_, dt_);
   return p;
 }
 
@@ -219,10 +216,7 @@ void CpuSolver<Real>::integrate() {
   for (std::int64_t i = 0; i < n; ++i) {
     if (motion_[i] != Motion::Free) continue;
     const physics::Pose<Real> p = advanced_pose(static_cast<std::size_t>(i));
-    const bool finite = std::isfinite(p.c.x) && std::isfinite(p.c.y) &&
-                        std::isfinite(p.theta) && std::isfinite(p.v.x) &&
-                        std::isfinite(p.v.y) && std::isfinite(p.w);
-    if (!finite || norm(p.v) * dt_ > half_size_[i]) bad = std::min(bad, i);
+    if (physics::runaway_step(p, half_size_[i], dt_)) bad = std::min(bad, i);
   }
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);

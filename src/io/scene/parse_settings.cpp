@@ -32,6 +32,9 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
   s.local_damping = r.real("local_damping").value_or(s.local_damping);
   if (!(s.local_damping >= 0 && s.local_damping < 1))
     r.fail("local_damping", fmt::format("must be in [0, 1), got {}", s.local_damping));
+  s.skin = r.real("skin").value_or(s.skin);
+  if (!(s.skin >= 0 && s.skin <= 1))
+    r.fail("skin", fmt::format("must be in [0, 1] (a fraction of the grid cell), got {}", s.skin));
   r.reject_unknown_keys();
   return s;
 }

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Packs what the GPU machine needs to run tridem built here into .devbin/ (git-ignored;
+# name it in the device tool's `carry`): the programs and every shared library they load
+# except the C library's own, which the machine has in a newer version. The CUDA runtime is
+# linked statically, so a recent driver is all the GPU side needs.
+#   scripts/device_bundle.sh [BUILD_DIR]      (default build/)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build}"
+dest="$root/.devbin"
+rm -rf "$dest"
+mkdir -p "$dest/lib" "$dest/app" "$dest/bench" "$dest/tests"
+cp "$build/app/tridem" "$dest/app/"
+cp "$build/bench/tridem_bench" "$dest/bench/"
+cp "$build/tests/tridem_tests" "$dest/tests/"
+for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/tests/tridem_tests; do
+  ldd "$bin" | awk '/=> \// {print $3}'
+done | sort -u | grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
+  while read -r lib; do cp -L "$lib" "$dest/lib/"; done
+du -sh "$dest"

@@ -1,0 +1,199 @@
+#pragma once
+// Kernels of the pair-list build, run when some particle has left its build box: the
+// CPU's cell grid (broadphase/candidate_pairs.hpp) rebuilt on the GPU. Each small particle
+// is binned by the lower-left corner of its build box (its box grown by the skin); cells
+// are as wide as the widest build box, so a 3×3 scan finds every overlapping pair. The
+// particles are sorted by cell with CUB's radix sort; each emitter then writes its own row
+// twice (count, fill), so no two threads write the same memory and the result does not
+// depend on scheduling.
+#include "backends/cuda/grid_types.cuh"
+#include "broadphase/row_sort.hpp"
+
+#include <cstdint>
+
+namespace tridem::cuda {
+
+template <class Real>
+__global__ void init_bounds_kernel(CornerBounds<Real>* b) {
+  using B = OrderedBits<Real>;
+  b->min_x = b->min_y = ~typename B::Bits(0);
+  b->max_x = b->max_y = 0;
+}
+
+/// Build boxes from the current ones, and the extent of the small particles' corners.
+template <class Real>
+__global__ void grow_boxes_kernel(ParticleArrays<Real> p, Real margin, CornerBounds<Real>* b) {
+  using B = OrderedBits<Real>;
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  bool small = false;
+  Real x = 0, y = 0;
+  if (i < p.n) {
+    x = p.lo_x[i] - margin;
+    y = p.lo_y[i] - margin;
+    p.build_lo_x[i] = x;
+    p.build_lo_y[i] = y;
+    p.build_hi_x[i] = p.hi_x[i] + margin;
+    p.build_hi_y[i] = p.hi_y[i] + margin;
+    small = p.small[i] != 0;
+  }
+  // Warp-level extent first, then one atomic per warp and bound.
+  const unsigned mask = __ballot_sync(0xffffffffu, small);
+  if (mask == 0) return;
+  typename B::Bits lo_x = small ? B::encode(x) : ~typename B::Bits(0);
+  typename B::Bits lo_y = small ? B::encode(y) : ~typename B::Bits(0);
+  typename B::Bits hi_x = small ? B::encode(x) : 0;
+  typename B::Bits hi_y = small ? B::encode(y) : 0;
+  for (int d = 16; d > 0; d /= 2) {
+    const auto ox = __shfl_down_sync(0xffffffffu, lo_x, d);
+    const auto oy = __shfl_down_sync(0xffffffffu, lo_y, d);
+    const auto px = __shfl_down_sync(0xffffffffu, hi_x, d);
+    const auto py = __shfl_down_sync(0xffffffffu, hi_y, d);
+    lo_x = ox < lo_x ? ox : lo_x;
+    lo_y = oy < lo_y ? oy : lo_y;
+    hi_x = px > hi_x ? px : hi_x;
+    hi_y = py > hi_y ? py : hi_y;
+  }
+  if ((threadIdx.x & 31) == 0) {
+    atomicMin(&b->min_x, lo_x);
+    atomicMin(&b->min_y, lo_y);
+    atomicMax(&b->max_x, hi_x);
+    atomicMax(&b->max_y, hi_y);
+  }
+}
+
+/// The grid over the corners, by the CPU's rule: cells of the given size, grown while the
+/// grid would have more than `max_cells` cells (a particle thrown far away must not make
+/// it huge). Resets the bounds for the next build.
+template <class Real>
+__global__ void grid_kernel(CornerBounds<Real>* b, Real base_cell, long long max_cells,
+                            GridParams<Real>* grid) {
+  using B = OrderedBits<Real>;
+  const Real min_x = B::decode(b->min_x), min_y = B::decode(b->min_y);
+  const Real max_x = B::decode(b->max_x), max_y = B::decode(b->max_y);
+  double cell = static_cast<double>(base_cell);
+  const double wx = static_cast<double>(max_x) - static_cast<double>(min_x);
+  const double wy = static_cast<double>(max_y) - static_cast<double>(min_y);
+  long long nx, ny;
+  for (;;) {
+    nx = static_cast<long long>(wx / cell) + 1;
+    ny = static_cast<long long>(wy / cell) + 1;
+    if (static_cast<double>(nx) * static_cast<double>(ny) <= static_cast<double>(max_cells)) break;
+    cell *= 1.5;
+  }
+  *grid = {min_x, min_y, static_cast<Real>(cell), static_cast<int>(nx), static_cast<int>(ny)};
+  b->min_x = b->min_y = ~typename B::Bits(0);
+  b->max_x = b->max_y = 0;
+}
+
+/// Cell of each particle (large ones get `beyond`, after every cell) and its index.
+template <class Real>
+__global__ void cell_key_kernel(CandidateSearch<Real> c, unsigned int beyond,
+                                unsigned int* key, int* index) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= c.n) return;
+  index[i] = i;
+  if (!c.small[i]) {
+    key[i] = beyond;
+    return;
+  }
+  const GridParams<Real> g = *c.grid;
+  long long cx = static_cast<long long>((c.lo_x[i] - g.origin_x) / g.cell);
+  long long cy = static_cast<long long>((c.lo_y[i] - g.origin_y) / g.cell);
+  cx = cx < 0 ? 0 : (cx > g.nx - 1 ? g.nx - 1 : cx);
+  cy = cy < 0 ? 0 : (cy > g.ny - 1 ? g.ny - 1 : cy);
+  key[i] = static_cast<unsigned int>(cx + cy * g.nx);
+}
+
+/// First and one-past-last sorted position of every occupied cell (others stay empty).
+__global__ void cell_range_kernel(const unsigned int* sorted_key, int n, unsigned int beyond,
+                                  int* cell_start, int* cell_end) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n) return;
+  const unsigned int key = sorted_key[k];
+  if (key == beyond) return;
+  if (k == 0 || sorted_key[k - 1] != key) cell_start[key] = k;
+  if (k == n - 1 || sorted_key[k + 1] != key) cell_end[key] = k + 1;
+}
+
+/// Calls visit(j) for every pair (i, j) that i emits: build boxes overlapping, at least one
+/// particle free; i emits to higher-index small particles and to every large one (in
+/// all-pairs mode, to every higher index). The same rule as CandidatePairs on the CPU.
+template <class Real, class Visit>
+__device__ inline void visit_candidates(const CandidateSearch<Real>& c, int i, Visit&& visit) {
+  const bool free_i = c.free[i] != 0;
+  const Real lx = c.lo_x[i], ly = c.lo_y[i], hx = c.hi_x[i], hy = c.hi_y[i];
+  auto consider = [&](int j) {
+    if ((free_i || c.free[j]) && lx <= c.hi_x[j] && c.lo_x[j] <= hx && ly <= c.hi_y[j] &&
+        c.lo_y[j] <= hy)
+      visit(j);
+  };
+  if (c.all_pairs) {
+    for (int j = i + 1; j < c.n; ++j) consider(j);
+    return;
+  }
+  if (!c.small[i]) return;
+  const int nx = c.grid->nx, ny = c.grid->ny;
+  const int cx = static_cast<int>(c.cell_of[i] % static_cast<unsigned int>(nx));
+  const int cy = static_cast<int>(c.cell_of[i] / static_cast<unsigned int>(nx));
+  for (int y = cy > 0 ? cy - 1 : 0; y <= (cy + 1 < ny ? cy + 1 : ny - 1); ++y)
+    for (int x = cx > 0 ? cx - 1 : 0; x <= (cx + 1 < nx ? cx + 1 : nx - 1); ++x) {
+      const int cell = x + y * nx;
+      for (int k = c.cell_start[cell]; k < c.cell_end[cell]; ++k) {
+        const int j = c.sorted[k];
+        if (j > i) consider(j);
+      }
+    }
+  for (int k = 0; k < c.n_large; ++k) consider(c.large[k]);
+}
+
+template <class Real>
+__global__ void count_rows_kernel(CandidateSearch<Real> c, int* count) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= c.n) return;
+  int k = 0;
+  visit_candidates(c, i, [&k](int) { ++k; });
+  count[i] = k;
+}
+
+/// The rows of the new list, partners ascending, each pair with its contact history: the
+/// slip stored for the same pair in the emitter's old row (both sorted by partner), or
+/// zero for a new pair.
+template <class Real>
+__global__ void fill_rows_kernel(CandidateSearch<Real> c, const int* offset, int* partner,
+                                 int* emitter, int* slot_id, physics::PairSlip<Real>* slip,
+                                 const int* old_offset, const int* old_partner,
+                                 const physics::PairSlip<Real>* old_slip) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= c.n) return;
+  const int begin = offset[i], end = offset[i + 1];
+  int at = begin;
+  visit_candidates(c, i, [&](int j) { partner[at++] = j; });
+  insertion_sort(partner, begin, end);
+  int old = old_offset[i];
+  const int old_end = old_offset[i + 1];
+  for (int s = begin; s < end; ++s) {
+    const int j = partner[s];
+    while (old < old_end && old_partner[old] < j) ++old;
+    physics::PairSlip<Real> h{};
+    if (old < old_end && old_partner[old] == j) h = old_slip[old];
+    slip[s] = h;
+    emitter[s] = i;
+    slot_id[s] = s;
+  }
+}
+
+/// reverse_offset[p] = first position of partner p in the partner-sorted slots.
+__global__ void reverse_offset_kernel(const int* sorted_partner, int count, int n,
+                                      int* reverse_offset) {
+  const int p = blockIdx.x * blockDim.x + threadIdx.x;
+  if (p > n) return;
+  int lo = 0, hi = count;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (sorted_partner[mid] < p) lo = mid + 1;
+    else hi = mid;
+  }
+  reverse_offset[p] = lo;
+}
+
+}  // namespace tridem::cuda

@@ -1,0 +1,27 @@
+// Builds without nvcc: the CUDA backend is absent and says so when asked for.
+#include "backends/cuda/cuda_backend.hpp"
+#include "tridem/error.hpp"
+
+namespace tridem {
+
+namespace {
+constexpr const char* kAbsent =
+    "this tridem was built without CUDA (no nvcc found, or -DTRIDEM_ENABLE_CUDA=OFF)";
+}
+
+bool cuda_available(std::string* reason) {
+  if (reason) *reason = kAbsent;
+  return false;
+}
+
+std::string cuda_device_description() { return {}; }
+
+std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, const TimeStep&,
+                                         const SolverConfig&) {
+  throw RunError(std::string("backend 'cuda' is not available: ") + kAbsent +
+                 "; use backend = \"cpu\", \"openmp\" or \"auto\"");
+}
+
+std::size_t cuda_solver_bytes(std::size_t, std::size_t, Precision) { return 0; }
+
+}  // namespace tridem

@@ -1,0 +1,383 @@
+#include "backends/cuda/cuda_solver.cuh"
+
+#include "backends/cuda/cuda_backend.hpp"
+#include "backends/cuda/step_kernels.cuh"
+#include "broadphase/candidate_pairs.hpp"
+#include "tridem/error.hpp"
+
+#include <climits>
+#include <cstdio>
+#include <string>
+
+namespace tridem::cuda {
+
+namespace {
+
+constexpr int kBlock = 256;
+
+int blocks(std::size_t items) { return static_cast<int>((items + kBlock - 1) / kBlock); }
+
+template <class Real>
+std::vector<Real> to_real(const std::vector<double>& v) {
+  return std::vector<Real>(v.begin(), v.end());
+}
+
+std::string mib(std::size_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+}  // namespace
+
+template <class Real>
+CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+                             const SolverConfig& config)
+    : n_(model.size()), method_(config.method) {
+  std::string reason;
+  if (!cuda_available(&reason))
+    throw RunError("backend 'cuda' is not available: " + reason +
+                   "; use backend = \"cpu\", \"openmp\" or \"auto\"");
+  if (n_ > static_cast<std::size_t>(INT_MAX / 8))
+    throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
+                   " particles on one GPU");
+  cudaDeviceProp prop{};
+  TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+  device_name_ = prop.name;
+  // Refuse before allocating anything: a scene that does not fit says so up front.
+  const std::size_t reserve = kCudaPairsPerParticle * n_ + 1024;
+  const std::size_t need = cuda_solver_bytes(n_, reserve, config.precision);
+  std::size_t free_bytes = 0, total_bytes = 0;
+  TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
+  if (need > free_bytes)
+    throw RunError("the scene needs about " + mib(need) + " of GPU memory for " +
+                   std::to_string(n_) + " particles, but the GPU (" + device_name_ + ") has " +
+                   mib(free_bytes) + " free of " + mib(total_bytes) +
+                   ": use precision = \"float\", fewer particles, or backend = \"openmp\"");
+  TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
+
+  params_.dt = static_cast<Real>(ts.chosen);
+  params_.gravity = {static_cast<Real>(scene.simulation.gravity.x),
+                     static_cast<Real>(scene.simulation.gravity.y)};
+  params_.local_damping = static_cast<Real>(scene.simulation.local_damping);
+  params_.n_materials = static_cast<int>(scene.materials.size());
+  std::vector<physics::ContactLaw<Real>> laws;
+  for (const auto& law : contact_law_table(scene.materials))
+    laws.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
+                    static_cast<Real>(law.friction), static_cast<Real>(law.damping)});
+  laws_.upload(laws);
+  params_.laws = laws_.data();
+  upload_model(model);
+
+  const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
+  margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
+  pairs_ = std::make_unique<PairListBuilder<Real>>(
+      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, reserve, stream_);
+  status_.allocate(1);
+  host_status_.allocate(1);
+  staging_.allocate(9 * n_);
+  update_geometry();
+}
+
+template <class Real>
+CudaSolver<Real>::~CudaSolver() {
+  if (stream_) cudaStreamDestroy(stream_);
+}
+
+template <class Real>
+void CudaSolver<Real>::upload_model(const ParticleModel& model) {
+  std::vector<Real> ox[3], oy[3], inv_mass(n_), inv_inertia(n_), mass(n_), half(n_);
+  std::vector<std::uint8_t> free(n_);
+  host_offsets_.resize(3 * n_);
+  host_mass_.resize(n_);
+  host_inertia_.resize(n_);
+  for (int k = 0; k < 3; ++k) {
+    ox[k].resize(n_);
+    oy[k].resize(n_);
+  }
+  for (std::size_t i = 0; i < n_; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ox[k][i] = static_cast<Real>(model.offsets[i][k].x);
+      oy[k][i] = static_cast<Real>(model.offsets[i][k].y);
+      host_offsets_[3 * i + k] = {ox[k][i], oy[k][i]};
+    }
+    free[i] = model.motion[i] == Motion::Free;
+    mass[i] = free[i] ? static_cast<Real>(model.mass[i]) : Real(0);
+    inv_mass[i] = free[i] ? static_cast<Real>(1.0 / model.mass[i]) : Real(0);
+    inv_inertia[i] = free[i] ? static_cast<Real>(1.0 / model.inertia[i]) : Real(0);
+    half[i] = static_cast<Real>(0.5 * model.longest_edge[i]);
+    // What a snapshot reports, as the CPU solver does: 1/(1/m) in the solver's precision.
+    host_mass_[i] = inv_mass[i] > 0 ? 1.0 / static_cast<double>(inv_mass[i]) : 0.0;
+    host_inertia_[i] = inv_inertia[i] > 0 ? 1.0 / static_cast<double>(inv_inertia[i]) : 0.0;
+  }
+  for (int k = 0; k < 3; ++k) {
+    offset_x_[k].upload(ox[k]);
+    offset_y_[k].upload(oy[k]);
+  }
+  inv_mass_.upload(inv_mass);
+  inv_inertia_.upload(inv_inertia);
+  mass_.upload(mass);
+  half_size_.upload(half);
+  area_.upload(to_real<Real>(model.area));
+  material_.upload(model.material);
+  free_.upload(free);
+  host_material_ = model.material;
+  host_motion_ = model.motion;
+
+  std::vector<Real> x(n_), y(n_), vx(n_), vy(n_), w(n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    x[i] = static_cast<Real>(model.centroid[i].x);
+    y[i] = static_cast<Real>(model.centroid[i].y);
+    vx[i] = static_cast<Real>(model.velocity[i].x);
+    vy[i] = static_cast<Real>(model.velocity[i].y);
+    w[i] = static_cast<Real>(model.angular_velocity[i]);
+  }
+  x_.upload(x);
+  y_.upload(y);
+  vx_.upload(vx);
+  vy_.upload(vy);
+  w_.upload(w);
+  const std::vector<Real> zeros(n_, Real(0));
+  for (auto* b : {&theta_, &fx_, &fy_, &torque_}) b->upload(zeros);
+  for (int k = 0; k < 3; ++k) {
+    vert_x_[k].allocate(n_);
+    vert_y_[k].allocate(n_);
+  }
+  for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_, &build_lo_x_, &build_lo_y_, &build_hi_x_,
+                  &build_hi_y_})
+    b->allocate(n_);
+}
+
+template <class Real>
+ParticleArrays<Real> CudaSolver<Real>::arrays() const {
+  ParticleArrays<Real> p;
+  p.n = static_cast<int>(n_);
+  for (int k = 0; k < 3; ++k) {
+    p.offset_x[k] = offset_x_[k].data();
+    p.offset_y[k] = offset_y_[k].data();
+    p.vert_x[k] = vert_x_[k].data();
+    p.vert_y[k] = vert_y_[k].data();
+  }
+  p.inv_mass = inv_mass_.data();
+  p.inv_inertia = inv_inertia_.data();
+  p.mass = mass_.data();
+  p.area = area_.data();
+  p.half_size = half_size_.data();
+  p.material = material_.data();
+  p.free = free_.data();
+  p.small = nullptr;  // the builder keeps its own
+  p.x = x_.data();
+  p.y = y_.data();
+  p.theta = theta_.data();
+  p.vx = vx_.data();
+  p.vy = vy_.data();
+  p.w = w_.data();
+  p.fx = fx_.data();
+  p.fy = fy_.data();
+  p.torque = torque_.data();
+  p.lo_x = lo_x_.data();
+  p.lo_y = lo_y_.data();
+  p.hi_x = hi_x_.data();
+  p.hi_y = hi_y_.data();
+  p.build_lo_x = build_lo_x_.data();
+  p.build_lo_y = build_lo_y_.data();
+  p.build_hi_x = build_hi_x_.data();
+  p.build_hi_y = build_hi_y_.data();
+  return p;
+}
+
+template <class Real>
+void CudaSolver<Real>::update_geometry() {
+  const StepStatus fresh{0, INT_MAX};
+  TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
+                                    cudaMemcpyHostToDevice, stream_));
+  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), params_, status_.data(),
+                                                             false);
+  TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  rebuild_ = true;
+}
+
+template <class Real>
+void CudaSolver<Real>::advance(std::int64_t steps) {
+  const ParticleArrays<Real> p = arrays();
+  StepStatus* status = status_.data();
+  StepStatus* host = host_status_.data();
+  for (std::int64_t s = 0; s < steps; ++s) {
+    if (rebuild_) {
+      pairs_->rebuild(p, margin_);
+      rebuild_ = false;
+    }
+    const PairArrays<Real> q = pairs_->arrays();
+    *host = {0, INT_MAX};
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
+    if (q.count > 0) {
+      pair_forces_kernel<Real><<<blocks(static_cast<std::size_t>(q.count)), kBlock, 0, stream_>>>(
+          p, q, params_);
+      TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+    }
+    gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, false);
+    TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+    integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, params_, status, true);
+    TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host, status, sizeof *host, cudaMemcpyDeviceToHost, stream_));
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    if (host->bad != INT_MAX) report_runaway(host->bad);
+    rebuild_ = host->rebuild != 0;
+    ++step_;
+    time_ += static_cast<double>(params_.dt);
+  }
+}
+
+template <class Real>
+void CudaSolver<Real>::report_runaway(int i) const {
+  // The state on the GPU is still the last good one; redo the failed step of particle i on
+  // the host, with the same physics, to say how fast it would have gone.
+  Real v[9];
+  const DeviceBuffer<Real>* arrays[9] = {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
+  for (int k = 0; k < 9; ++k)
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&v[k], arrays[k]->data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+  Real inv_mass, inv_inertia;
+  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_mass, inv_mass_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_inertia, inv_inertia_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+  physics::Pose<Real> pose{{v[0], v[1]}, v[2], {v[3], v[4]}, v[5]};
+  physics::advance_body(pose, true, Vec2<Real>{v[6], v[7]}, v[8], inv_mass, inv_inertia,
+                        params_.gravity, params_.local_damping, params_.dt);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "blow-up at step %lld: particle %d (at x=%g, y=%g) would reach speed %g m/s and "
+                "move more than half its size, or get a non-finite state, in one step; the time "
+                "step %g s is too large for the contacts it meets (reduce dt or the penalty, or "
+                "check for initially overlapping particles)",
+                static_cast<long long>(step_ + 1), i, static_cast<double>(v[0]),
+                static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
+                static_cast<double>(params_.dt));
+  throw RunError(text);
+}
+
+template <class Real>
+void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
+  const std::size_t n = n_;
+  if (step_ > 0) {
+    // Walls' forces are summed only here: the time loop does not need them.
+    gather_kernel<Real><<<blocks(n), kBlock, 0, stream_>>>(arrays(), pairs_->arrays(), params_,
+                                                           status_.data(), true);
+    TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+  }
+  const DeviceBuffer<Real>* arrays[9] = {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
+  for (int k = 0; k < 9; ++k)
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(staging_.data() + k * n, arrays[k]->data(), n * sizeof(Real),
+                                      cudaMemcpyDeviceToHost, stream_));
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  out.step = step_;
+  out.time = time_;
+  out.resize(n);
+  std::vector<double>* fields[9] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy,
+                                    &out.omega, &out.fx, &out.fy, &out.torque};
+  for (int k = 0; k < 9; ++k) {
+    const Real* from = staging_.data() + k * n;
+    std::vector<double>& to = *fields[k];
+    for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<double>(from[i]);
+  }
+  const Real* x = staging_.data();
+  const Real* y = x + n;
+  const Real* theta = y + n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto t = physics::place(Vec2<Real>{x[i], y[i]}, theta[i], &host_offsets_[3 * i]);
+    out.x1[i] = t.v[0].x;
+    out.y1[i] = t.v[0].y;
+    out.x2[i] = t.v[1].x;
+    out.y2[i] = t.v[1].y;
+    out.x3[i] = t.v[2].x;
+    out.y3[i] = t.v[2].y;
+  }
+  out.mass = host_mass_;
+  out.inertia = host_inertia_;
+  out.material = host_material_;
+  out.motion = host_motion_;
+  out.contacts.clear();
+  if (!with_contacts || step_ == 0) return;
+  std::vector<int> offset, partner;
+  std::vector<physics::PairForce<Real>> result;
+  pairs_->download(offset, partner, nullptr, &result);
+  for (std::size_t e = 0; e < n; ++e)
+    for (int s = offset[e]; s < offset[e + 1]; ++s) {
+      const auto& r = result[static_cast<std::size_t>(s)];
+      if (!r.touching) continue;
+      out.contacts.push_back({static_cast<std::int64_t>(e), partner[static_cast<std::size_t>(s)],
+                              r.force_a.x, r.force_a.y, r.point.x, r.point.y});
+    }
+}
+
+template <class Real>
+std::string CudaSolver<Real>::description() const {
+  char skin[64];
+  std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
+  return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
+         (method_ == Method::Grid ? "grid" : "all-pairs") + skin;
+}
+
+template class CudaSolver<float>;
+template class CudaSolver<double>;
+
+}  // namespace tridem::cuda
+
+namespace tridem {
+
+bool cuda_available(std::string* reason) {
+  int count = 0;
+  const cudaError_t error = cudaGetDeviceCount(&count);
+  if (error != cudaSuccess) {
+    if (reason)
+      *reason = std::string("no usable GPU: no NVIDIA driver or device found (CUDA says: ") +
+                cudaGetErrorString(error) + ")";
+    cudaGetLastError();  // clear it: the CPU backends go on
+    return false;
+  }
+  if (count == 0) {
+    if (reason) *reason = "no CUDA device is present";
+    return false;
+  }
+  return true;
+}
+
+std::string cuda_device_description() {
+  if (!cuda_available()) return {};
+  cudaDeviceProp prop{};
+  if (cudaGetDeviceProperties(&prop, 0) != cudaSuccess) return {};
+  char text[256];
+  std::snprintf(text, sizeof text, "%s (sm_%d%d, %d SMs, %.0f GiB)", prop.name, prop.major,
+                prop.minor, prop.multiProcessorCount,
+                static_cast<double>(prop.totalGlobalMem) / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+
+std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
+                                         const TimeStep& ts, const SolverConfig& config) {
+  if (config.precision == Precision::Float)
+    return std::make_unique<cuda::CudaSolver<float>>(scene, model, ts, config);
+  return std::make_unique<cuda::CudaSolver<double>>(scene, model, ts, config);
+}
+
+namespace {
+
+template <class Real>
+std::size_t bytes_for(std::size_t n, std::size_t pairs) {
+  // Per particle: 34 reals (offsets, mass terms, state, forces, vertices, two boxes), flags
+  // and material, the grid (keys, indices, 4 cells of start and end), the row offsets
+  // (new, old, reverse, counts); 9 reals of pinned host staging are not GPU memory.
+  const std::size_t per_particle = 34 * sizeof(Real) + 4 + 2 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
+  // Per pair: partner and slip twice (new and old list), emitter, slot id, result,
+  // reverse sort keys and slots, and CUB's sort scratch (keys and values).
+  const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +
+                               sizeof(physics::PairForce<Real>) + 4 + 4 + 8;
+  return n * per_particle + pairs * per_pair + (16u << 20);
+}
+
+}  // namespace
+
+std::size_t cuda_solver_bytes(std::size_t n, std::size_t pairs, Precision precision) {
+  return precision == Precision::Float ? bytes_for<float>(n, pairs) : bytes_for<double>(n, pairs);
+}
+
+}  // namespace tridem

@@ -1,0 +1,75 @@
+#pragma once
+// The CUDA solver: the whole time loop on one GPU with the single-source physics. The
+// state stays on the GPU; only snapshots (output steps) copy it back. One step is
+//   [pair-list build, when some particle has left its build box]
+//   pair forces (thread per pair) → gather + runaway check (thread per particle)
+//   → integrate + geometry of the new state (thread per particle) → status to the host,
+// the CPU solver's stages with the same sums in the same order, so that both agree to
+// rounding and two runs of one scene agree bit for bit.
+#include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/pair_list_builder.cuh"
+#include "core/particle_model.hpp"
+#include "core/time_step.hpp"
+#include "tridem/solver.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tridem::cuda {
+
+template <class Real>
+class CudaSolver final : public Solver {
+ public:
+  CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+             const SolverConfig& config);
+  ~CudaSolver() override;
+
+  void advance(std::int64_t steps) override;
+  void snapshot(Snapshot& out, bool with_contacts) const override;
+  std::int64_t step() const override { return step_; }
+  double time() const override { return time_; }
+  double dt() const override { return static_cast<double>(params_.dt); }
+  std::size_t size() const override { return n_; }
+  std::string description() const override;
+
+  std::int64_t list_builds() const { return pairs_->builds(); }
+
+ private:
+  void upload_model(const ParticleModel& model);
+  ParticleArrays<Real> arrays() const;
+  void update_geometry();
+  [[noreturn]] void report_runaway(int particle) const;
+
+  std::size_t n_;
+  Method method_;
+  Real margin_;  ///< skin on each side of a build box
+  StepParams<Real> params_{};
+  std::int64_t step_ = 0;
+  double time_ = 0;
+  bool rebuild_ = true;
+  std::string device_name_;
+  cudaStream_t stream_ = nullptr;
+
+  // Fixed per particle: device and the host copies a snapshot needs.
+  DeviceBuffer<Real> offset_x_[3], offset_y_[3];
+  DeviceBuffer<Real> inv_mass_, inv_inertia_, mass_, area_, half_size_;
+  DeviceBuffer<int> material_;
+  DeviceBuffer<std::uint8_t> free_;
+  DeviceBuffer<physics::ContactLaw<Real>> laws_;
+  std::vector<Vec2<Real>> host_offsets_;  ///< 3 per particle
+  std::vector<double> host_mass_, host_inertia_;
+  std::vector<int> host_material_;
+  std::vector<Motion> host_motion_;
+  // State, forces, geometry.
+  DeviceBuffer<Real> x_, y_, theta_, vx_, vy_, w_, fx_, fy_, torque_;
+  DeviceBuffer<Real> vert_x_[3], vert_y_[3];
+  DeviceBuffer<Real> lo_x_, lo_y_, hi_x_, hi_y_;
+  DeviceBuffer<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
+  std::unique_ptr<PairListBuilder<Real>> pairs_;
+  DeviceBuffer<StepStatus> status_;
+  PinnedBuffer<StepStatus> host_status_;
+  mutable PinnedBuffer<Real> staging_;  ///< 9 arrays of n: the state a snapshot copies
+};
+
+}  // namespace tridem::cuda

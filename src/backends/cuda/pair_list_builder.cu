@@ -1,0 +1,228 @@
+#include "backends/cuda/pair_list_builder.cuh"
+
+#include "backends/cuda/broad_phase_kernels.cuh"
+
+#include "tridem/error.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_scan.cuh>
+#include <string>
+
+namespace tridem::cuda {
+
+namespace {
+
+constexpr int kBlock = 256;
+
+int blocks(long long items) { return static_cast<int>((items + kBlock - 1) / kBlock); }
+
+int bits_for(unsigned long long largest) {
+  int b = 1;
+  while (b < 32 && (1ull << b) <= largest) ++b;
+  return b;
+}
+
+/// Cells at most: the CPU's cap of 4 per particle.
+long long max_cells(int n) { return 4ll * n + 16; }
+
+}  // namespace
+
+template <class Real>
+PairListBuilder<Real>::PairListBuilder(const std::vector<std::uint8_t>& small, Method method,
+                                       Real cell, std::size_t pair_capacity,
+                                       cudaStream_t stream)
+    : n_(static_cast<int>(small.size())), method_(method), cell_(cell), stream_(stream) {
+  beyond_ = static_cast<unsigned int>(max_cells(n_));
+  cell_bits_ = bits_for(beyond_);
+  particle_bits_ = bits_for(static_cast<unsigned long long>(n_));
+  small_.upload(small);
+  std::vector<int> large;
+  for (int i = 0; i < n_; ++i)
+    if (!small[i]) large.push_back(i);
+  n_large_ = static_cast<int>(large.size());
+  large_.upload(large);
+  bounds_.allocate(1);
+  grid_.allocate(1);
+  init_bounds_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("init_bounds_kernel");
+  const auto n = static_cast<std::size_t>(n_);
+  cell_of_.allocate(n);
+  sorted_cell_.allocate(n);
+  index_.allocate(n);
+  sorted_.allocate(n);
+  cell_start_.allocate(static_cast<std::size_t>(beyond_));
+  cell_end_.allocate(static_cast<std::size_t>(beyond_));
+  row_count_.allocate(n + 1);
+  TRIDEM_CUDA_CHECK(cudaMemsetAsync(row_count_.data(), 0, row_count_.bytes(), stream_));
+  for (auto* b : {&offset_, &old_offset_, &reverse_offset_}) {
+    b->allocate(n + 1);
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(b->data(), 0, b->bytes(), stream_));
+  }
+  total_.allocate(1);
+  reserve_pairs(pair_capacity);
+}
+
+template <class Real>
+void PairListBuilder<Real>::reserve_pairs(std::size_t pairs) {
+  pairs = std::max<std::size_t>(pairs, 1);
+  if (pairs > static_cast<std::size_t>(INT_MAX))
+    throw RunError("the pair list would need more than 2^31 pairs: too many particles for one GPU");
+  // Each buffer is grown on its own: the old list must survive while the new one is built.
+  auto grow = [pairs](auto& buffer) {
+    if (buffer.size() < pairs) buffer.allocate(pairs);
+  };
+  grow(partner_);
+  grow(slip_);
+  grow(emitter_);
+  grow(slot_id_);
+  grow(result_);
+  grow(sorted_partner_);
+  grow(reverse_slot_);
+  size_temp_storage();
+}
+
+template <class Real>
+void PairListBuilder<Real>::size_temp_storage() {
+  std::size_t need = 0, bytes = 0;
+  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+      nullptr, bytes, cell_of_.data(), sorted_cell_.data(), index_.data(), sorted_.data(), n_,
+      0, cell_bits_, stream_));
+  need = std::max(need, bytes);
+  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+      nullptr, bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
+      reverse_slot_.data(), static_cast<int>(partner_.size()), 0, particle_bits_, stream_));
+  need = std::max(need, bytes);
+  TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, bytes, row_count_.data(),
+                                                  offset_.data(), n_ + 1, stream_));
+  need = std::max(need, bytes);
+  if (temp_.size() < need) temp_.allocate(need);
+}
+
+template <class Real>
+CandidateSearch<Real> PairListBuilder<Real>::search(const ParticleArrays<Real>& p) const {
+  return {n_,
+          method_ == Method::AllPairs,
+          p.free,
+          small_.data(),
+          p.build_lo_x,
+          p.build_lo_y,
+          p.build_hi_x,
+          p.build_hi_y,
+          grid_.data(),
+          cell_of_.data(),
+          sorted_.data(),
+          cell_start_.data(),
+          cell_end_.data(),
+          large_.data(),
+          n_large_};
+}
+
+template <class Real>
+void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) {
+  const CandidateSearch<Real> c = search(p);
+  grow_boxes_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, margin, bounds_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("grow_boxes_kernel");
+  if (method_ == Method::Grid) {
+    grid_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data(), cell_, max_cells(n_), grid_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("grid_kernel");
+    cell_key_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, beyond_, cell_of_.data(),
+                                                               index_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("cell_key_kernel");
+    std::size_t bytes = temp_.size();
+    TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+        temp_.data(), bytes, cell_of_.data(), sorted_cell_.data(), index_.data(),
+        sorted_.data(), n_, 0, cell_bits_, stream_));
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_start_.data(), 0, cell_start_.bytes(), stream_));
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_end_.data(), 0, cell_end_.bytes(), stream_));
+    cell_range_kernel<<<blocks(n_), kBlock, 0, stream_>>>(sorted_cell_.data(), n_, beyond_,
+                                                          cell_start_.data(), cell_end_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("cell_range_kernel");
+  }
+  count_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, row_count_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("count_rows_kernel");
+  offset_.swap(old_offset_);
+  partner_.swap(old_partner_);
+  slip_.swap(old_slip_);
+  std::size_t bytes = temp_.size();
+  TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp_.data(), bytes, row_count_.data(),
+                                                  offset_.data(), n_ + 1, stream_));
+  TRIDEM_CUDA_CHECK(cudaMemcpyAsync(total_.data(), offset_.data() + n_, sizeof(int),
+                                    cudaMemcpyDeviceToHost, stream_));
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  count_ = *total_.data();
+  if (count_ < 0) throw RunError("the pair list overflowed 2^31 pairs: too many particles for one GPU");
+  // Denser than reserved: grow with headroom (the only allocation a running loop makes).
+  if (static_cast<std::size_t>(count_) > partner_.size() ||
+      static_cast<std::size_t>(count_) > slip_.size())
+    reserve_pairs(static_cast<std::size_t>(count_) + static_cast<std::size_t>(count_) / 5 + 1024);
+  fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
+      c, offset_.data(), partner_.data(), emitter_.data(), slot_id_.data(), slip_.data(),
+      old_offset_.data(), old_partner_.data(), old_slip_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
+  bytes = temp_.size();
+  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+      temp_.data(), bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
+      reverse_slot_.data(), count_, 0, particle_bits_, stream_));
+  reverse_offset_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(sorted_partner_.data(), count_,
+                                                                n_, reverse_offset_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("reverse_offset_kernel");
+  ++builds_;
+}
+
+template <class Real>
+void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vector<int>& partner,
+                                 const std::vector<physics::PairSlip<Real>>& slip) {
+  if (partner.size() > partner_.size() || slip.size() > slip_.size())
+    reserve_pairs(partner.size() + partner.size() / 5 + 1024);
+  auto copy = [this](auto& buffer, const auto& host) {
+    if (!host.empty())
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(buffer.data(), host.data(),
+                                        host.size() * sizeof(host[0]),
+                                        cudaMemcpyHostToDevice, stream_));
+  };
+  copy(offset_, offset);
+  copy(partner_, partner);
+  copy(slip_, slip);
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  count_ = static_cast<int>(partner.size());
+}
+
+template <class Real>
+PairArrays<Real> PairListBuilder<Real>::arrays() const {
+  return {count_,         offset_.data(),        partner_.data(),
+          emitter_.data(), slip_.data(),          result_.data(),
+          reverse_offset_.data(), reverse_slot_.data()};
+}
+
+template <class Real>
+void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>& partner,
+                                     std::vector<physics::PairSlip<Real>>* slip,
+                                     std::vector<physics::PairForce<Real>>* result) const {
+  const auto count = static_cast<std::size_t>(count_);
+  offset.resize(static_cast<std::size_t>(n_) + 1);
+  partner.resize(count);
+  auto copy = [this](auto& host, const auto& buffer) {
+    if (!host.empty())
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host.data(), buffer.data(),
+                                        host.size() * sizeof(host[0]),
+                                        cudaMemcpyDeviceToHost, stream_));
+  };
+  copy(offset, offset_);
+  copy(partner, partner_);
+  if (slip) {
+    slip->resize(count);
+    copy(*slip, slip_);
+  }
+  if (result) {
+    result->resize(count);
+    copy(*result, result_);
+  }
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+}
+
+template class PairListBuilder<float>;
+template class PairListBuilder<double>;
+
+}  // namespace tridem::cuda

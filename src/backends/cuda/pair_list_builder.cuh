@@ -1,0 +1,77 @@
+#pragma once
+// The candidate-pair list of the CUDA solver and how it is rebuilt: sizes fixed at start
+// (grown only if a run packs denser than reserved), the build itself in
+// broad_phase_kernels.cuh. Between builds the list stays, and with it every pair's slot
+// and contact history: a pair is in the list as long as the boxes grown by the skin
+// overlap.
+#include "backends/cuda/grid_types.cuh"
+#include "backends/cuda/device_buffer.cuh"
+#include "tridem/scene.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tridem::cuda {
+
+template <class Real>
+class PairListBuilder {
+ public:
+  /// `small`, `free` per particle; `cell` the width of the widest build box.
+  PairListBuilder(const std::vector<std::uint8_t>& small, Method method, Real cell,
+                  std::size_t pair_capacity, cudaStream_t stream);
+
+  /// A new list for the current boxes, grown by `margin`; carries the contact history
+  /// of the old list over. Synchronises once, to learn the number of pairs.
+  void rebuild(const ParticleArrays<Real>& p, Real margin);
+
+  /// Replaces the list (and its history) by one given on the host: rows by emitter,
+  /// partners ascending. The next rebuild carries its slips over.
+  void load(const std::vector<int>& offset, const std::vector<int>& partner,
+            const std::vector<physics::PairSlip<Real>>& slip);
+
+  PairArrays<Real> arrays() const;
+  int count() const { return count_; }
+  std::size_t capacity() const { return partner_.size(); }
+  std::int64_t builds() const { return builds_; }
+
+  /// The list of the last step on the host (for contact output and checkpoints).
+  void download(std::vector<int>& offset, std::vector<int>& partner,
+                std::vector<physics::PairSlip<Real>>* slip,
+                std::vector<physics::PairForce<Real>>* result) const;
+
+ private:
+  void reserve_pairs(std::size_t pairs);
+  void size_temp_storage();
+  CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
+
+  int n_;
+  Method method_;
+  Real cell_;
+  cudaStream_t stream_;
+  unsigned int beyond_;  ///< key of particles outside the grid; > every cell index
+  int cell_bits_, particle_bits_;
+  int count_ = 0;
+  std::int64_t builds_ = 0;
+  int n_large_ = 0;
+
+  DeviceBuffer<std::uint8_t> small_;
+  DeviceBuffer<int> large_;
+  DeviceBuffer<CornerBounds<Real>> bounds_;
+  DeviceBuffer<GridParams<Real>> grid_;
+  DeviceBuffer<unsigned int> cell_of_, sorted_cell_;
+  DeviceBuffer<int> index_, sorted_;
+  DeviceBuffer<int> cell_start_, cell_end_;
+  DeviceBuffer<int> row_count_;
+  // The list and the one it replaces (for the history), swapped at each build.
+  DeviceBuffer<int> offset_, old_offset_;
+  DeviceBuffer<int> partner_, old_partner_;
+  DeviceBuffer<physics::PairSlip<Real>> slip_, old_slip_;
+  DeviceBuffer<int> emitter_, slot_id_;
+  DeviceBuffer<physics::PairForce<Real>> result_;
+  // Reverse index: slots sorted by partner.
+  DeviceBuffer<int> sorted_partner_, reverse_slot_, reverse_offset_;
+  DeviceBuffer<std::uint8_t> temp_;  ///< CUB scratch
+  PinnedBuffer<int> total_;
+};
+
+}  // namespace tridem::cuda

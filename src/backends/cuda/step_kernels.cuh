@@ -1,0 +1,127 @@
+#pragma once
+// The kernels of one time step after the broad phase: pair forces (one thread per
+// candidate pair), the per-particle sum of those forces with the runaway check (one
+// thread per particle, in the CPU's fixed order, so that results do not depend on
+// scheduling), and the integration fused with the geometry of the new state.
+#include "backends/cuda/device_views.cuh"
+#include "physics/contact_force.hpp"
+#include "physics/integrate.hpp"
+
+#include <climits>
+
+namespace tridem::cuda {
+
+template <class Real>
+__device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, int i) {
+  physics::Body<Real> b;
+  for (int k = 0; k < 3; ++k) b.tri.v[k] = {p.vert_x[k][i], p.vert_y[k][i]};
+  b.c = {p.x[i], p.y[i]};
+  b.v = {p.vx[i], p.vy[i]};
+  b.w = p.w[i];
+  b.area = p.area[i];
+  b.mass = p.mass[i];
+  return b;
+}
+
+template <class Real>
+__global__ void pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
+                                   StepParams<Real> sp) {
+  const int s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s >= q.count) return;
+  const int e = q.emitter[s], j = q.partner[s];
+  physics::PairSlip<Real> slip = q.slip[s];
+  const physics::ContactLaw<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
+  q.result[s] = physics::pair_force(load_body(p, e), load_body(p, j), law, sp.dt, slip);
+  q.slip[s] = slip;
+}
+
+/// The total contact force and torque on particle i: its own pairs, then the pairs where
+/// it is the partner, each in ascending slot order (the CPU solver's order).
+template <class Real>
+__device__ inline void sum_pair_forces(const PairArrays<Real>& q, int i, Vec2<Real>& f,
+                                       Real& t) {
+  f = Vec2<Real>{};
+  t = Real(0);
+  for (int s = q.offset[i]; s < q.offset[i + 1]; ++s) {
+    f += q.result[s].force_a;
+    t += q.result[s].torque_a;
+  }
+  for (int r = q.reverse_offset[i]; r < q.reverse_offset[i + 1]; ++r) {
+    const physics::PairForce<Real>& res = q.result[q.reverse_slot[r]];
+    f -= res.force_a;
+    t += res.torque_b;
+  }
+}
+
+template <class Real>
+__device__ inline physics::Pose<Real> advanced_pose(const ParticleArrays<Real>& p,
+                                                    const StepParams<Real>& sp, int i) {
+  physics::Pose<Real> pose{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
+  physics::advance_body(pose, p.free[i] != 0, {p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
+                        p.inv_inertia[i], sp.gravity, sp.local_damping, sp.dt);
+  return pose;
+}
+
+/// Sums the forces of free particles and flags the lowest one whose step would run away
+/// (the state is not written yet). With `prescribed`, sums those of the other particles
+/// instead: only output needs them (wall forces), and walls can touch thousands of grains.
+template <class Real>
+__global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
+                              StepStatus* status, bool prescribed) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n || (p.free[i] != 0) == prescribed) return;
+  Vec2<Real> f;
+  Real t;
+  sum_pair_forces(q, i, f, t);
+  p.fx[i] = f.x;
+  p.fy[i] = f.y;
+  p.torque[i] = t;
+  if (prescribed) return;
+  if (physics::runaway_step(advanced_pose(p, sp, i), p.half_size[i], sp.dt))
+    atomicMin(&status->bad, i);
+}
+
+/// Vertices and box of particle i at its current pose; flags a rebuild of the pair list
+/// when the box has left its build box.
+template <class Real>
+__device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
+                                       StepStatus* status) {
+  const Vec2<Real> offsets[3] = {{p.offset_x[0][i], p.offset_y[0][i]},
+                                 {p.offset_x[1][i], p.offset_y[1][i]},
+                                 {p.offset_x[2][i], p.offset_y[2][i]}};
+  const physics::Triangle<Real> t = physics::place(Vec2<Real>{p.x[i], p.y[i]}, p.theta[i], offsets);
+  const physics::Aabb<Real> box = physics::bounding_box(t);
+  for (int k = 0; k < 3; ++k) {
+    p.vert_x[k][i] = t.v[k].x;
+    p.vert_y[k][i] = t.v[k].y;
+  }
+  p.lo_x[i] = box.lo.x;
+  p.lo_y[i] = box.lo.y;
+  p.hi_x[i] = box.hi.x;
+  p.hi_y[i] = box.hi.y;
+  const bool inside = box.lo.x >= p.build_lo_x[i] && box.lo.y >= p.build_lo_y[i] &&
+                      box.hi.x <= p.build_hi_x[i] && box.hi.y <= p.build_hi_y[i];
+  if (!inside) atomicOr(&status->rebuild, 1);
+}
+
+/// Writes the advanced state (unless some particle ran away: then the last good state
+/// stays, as on the CPU) and the geometry of the state it leaves.
+template <class Real>
+__global__ void integrate_kernel(ParticleArrays<Real> p, StepParams<Real> sp,
+                                 StepStatus* status, bool advance) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n) return;
+  if (advance) {
+    if (status->bad != INT_MAX) return;
+    const physics::Pose<Real> pose = advanced_pose(p, sp, i);
+    p.x[i] = pose.c.x;
+    p.y[i] = pose.c.y;
+    p.theta[i] = pose.theta;
+    p.vx[i] = pose.v.x;
+    p.vy[i] = pose.v.y;
+    p.w[i] = pose.w;
+  }
+  update_geometry(p, i, status);
+}
+
+}  // namespace tridem::cuda
