@@ -144,7 +144,8 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
   state.counters["steps_per_iter"] = static_cast<double>(k);
   state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
-  state.SetLabel(solver->description());
+  const std::string stats = solver->statistics();
+  state.SetLabel(solver->description() + (stats.empty() ? "" : "; " + stats));
 }
 
 /// The cost of one output frame: the state (9 arrays of n) copied from the solver's

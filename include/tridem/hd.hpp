@@ -7,6 +7,14 @@
 #define TRIDEM_HD
 #endif
 
+// Unrolls a loop of fixed trip count on the device, so that the small arrays it indexes
+// stay in registers instead of local memory. The host compilers decide for themselves.
+#if defined(__CUDA_ARCH__)
+#define TRIDEM_UNROLL _Pragma("unroll")
+#else
+#define TRIDEM_UNROLL
+#endif
+
 #include <math.h>
 
 namespace tridem::math {

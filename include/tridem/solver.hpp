@@ -41,6 +41,9 @@ class Solver {
   virtual std::size_t size() const = 0;
   /// e.g. "openmp (2 threads), double, grid"
   virtual std::string description() const = 0;
+  /// What the solver did so far, for the run's summary (e.g. how often the CUDA pair list
+  /// was rebuilt); empty when there is nothing to say.
+  virtual std::string statistics() const { return {}; }
 };
 
 /// The backend named by the config (Auto picks the fastest available and says so in

@@ -98,6 +98,8 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
                "outputs in {}\n",
                last, seconds, summary.steps_per_second, summary.triangle_steps_per_second,
                scene.output.dir);
+    if (const std::string stats = solver->statistics(); !stats.empty())
+      fmt::print(log, "{}: {}\n", solver->description(), stats);
     std::fflush(log);
   }
   return summary;

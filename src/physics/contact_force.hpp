@@ -54,8 +54,10 @@ struct RoleAreas {
 template <class Real>
 TRIDEM_HD inline void edge_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
                                  RoleAreas<Real>& r) {
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) {
     const Vec2<Real> edge = target.v[(k + 1) % 3] - target.v[k];
+    TRIDEM_UNROLL
     for (int i = 0; i < 3; ++i) r.edge[k][i] = cross(edge, contactor.v[i] - target.v[k]);
   }
 }
@@ -64,8 +66,10 @@ TRIDEM_HD inline void edge_areas(const Triangle<Real>& contactor, const Triangle
 template <class Real>
 TRIDEM_HD inline void ray_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
                                 Vec2<Real> target_centroid, RoleAreas<Real>& r) {
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) {
     const Vec2<Real> ray = target.v[k] - target_centroid;
+    TRIDEM_UNROLL
     for (int i = 0; i < 3; ++i) r.ray[k][i] = cross(ray, contactor.v[i] - target_centroid);
   }
 }
@@ -83,6 +87,7 @@ TRIDEM_HD inline RoleAreas<Real> role_areas(const Triangle<Real>& contactor,
 /// True when an edge of the target has every contactor vertex on or outside it.
 template <class Real>
 TRIDEM_HD inline bool target_edge_separates(const RoleAreas<Real>& r) {
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k)
     if (r.edge[k][0] <= Real(0) && r.edge[k][1] <= Real(0) && r.edge[k][2] <= Real(0))
       return true;
@@ -99,6 +104,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(const RoleAreas<Real>& areas, int e,
   EdgeLoad<Real> load;
   const int e1 = (e + 1) % 3;
   Real t_lo = Real(0), t_hi = Real(1);
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k)
     if (!clip_to_half_plane(areas.edge[k][e], areas.edge[k][e1] - areas.edge[k][e], t_lo, t_hi))
       return load;
@@ -107,6 +113,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(const RoleAreas<Real>& areas, int e,
   const Real edge_length = norm(d);
   const Real to_phi = Real(3) / (Real(2) * target_area);
   Vec2<Real> moment{};
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) {
     const int next = (k + 1) % 3;
     Real t0 = t_lo, t1 = t_hi;
@@ -159,9 +166,11 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   if (!target_edge_separates(areas[0]) && !target_edge_separates(areas[1])) {
     ray_areas(a.tri, b.tri, b.c, areas[0]);
     ray_areas(b.tri, a.tri, a.c, areas[1]);
+    TRIDEM_UNROLL
     for (int role = 0; role < 2; ++role) {
       const Body<Real>& c = role == 0 ? a : b;
       const Body<Real>& t = role == 0 ? b : a;
+      TRIDEM_UNROLL
       for (int e = 0; e < 3; ++e) {
         loads[role * 3 + e] = edge_load(areas[role], e, c.tri, t.tri, t.area);
         total_integral += loads[role * 3 + e].integral;
@@ -170,6 +179,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
     }
   }
   if (!(total_integral > Real(0))) {
+    TRIDEM_UNROLL
     for (int i = 0; i < kEdgeContacts; ++i) slip.s[i] = Real(0);
     return out;
   }
@@ -180,9 +190,11 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   const Real k_total = law.penalty * total_stiffness;
   const Real c_total = Real(2) * law.damping * math::sqrt(effective_mass(a.mass, b.mass) * k_total);
   Vec2<Real> point_moment{};
+  TRIDEM_UNROLL
   for (int role = 0; role < 2; ++role) {
     const Body<Real>& c = role == 0 ? a : b;
     const Body<Real>& t = role == 0 ? b : a;
+    TRIDEM_UNROLL
     for (int e = 0; e < 3; ++e) {
       const int i = role * 3 + e;
       const EdgeLoad<Real>& load = loads[i];

@@ -45,6 +45,7 @@ TRIDEM_HD inline Triangle<Real> place(Vec2<Real> c, Real theta, const Vec2<Real>
 template <class Real>
 TRIDEM_HD inline Aabb<Real> bounding_box(const Triangle<Real>& t) {
   Aabb<Real> b{t.v[0], t.v[0]};
+  TRIDEM_UNROLL
   for (int k = 1; k < 3; ++k) {
     b.lo.x = t.v[k].x < b.lo.x ? t.v[k].x : b.lo.x;
     b.lo.y = t.v[k].y < b.lo.y ? t.v[k].y : b.lo.y;
@@ -64,11 +65,13 @@ TRIDEM_HD inline bool boxes_overlap(const Aabb<Real>& a, const Aabb<Real>& b) {
 /// the overlap then has zero area and the contact force is zero).
 template <class Real>
 TRIDEM_HD inline bool edge_of_a_separates(const Triangle<Real>& a, const Triangle<Real>& b) {
+  TRIDEM_UNROLL
   for (int e = 0; e < 3; ++e) {
     const Vec2<Real> p = a.v[e];
     const Vec2<Real> d = a.v[(e + 1) % 3] - p;
     // For a CCW triangle, cross(d, q - p) >= 0 on the inner side of edge e.
     bool all_outside = true;
+    TRIDEM_UNROLL
     for (int k = 0; k < 3 && all_outside; ++k) all_outside = cross(d, b.v[k] - p) <= Real(0);
     if (all_outside) return true;
   }
@@ -92,6 +95,7 @@ TRIDEM_HD inline bool point_inside(const Triangle<Real>& t, Vec2<Real> p) {
 /// The paper's direct area method: some vertex of one triangle lies inside the other.
 template <class Real>
 TRIDEM_HD inline bool direct_area_overlap(const Triangle<Real>& a, const Triangle<Real>& b) {
+  TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k)
     if (point_inside(b, a.v[k]) || point_inside(a, b.v[k])) return true;
   return false;
@@ -113,6 +117,7 @@ TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
 template <class Real>
 TRIDEM_HD inline Real longest_edge(const Triangle<Real>& t) {
   Real l = Real(0);
+  TRIDEM_UNROLL
   for (int e = 0; e < 3; ++e) {
     const Real le = norm(t.v[(e + 1) % 3] - t.v[e]);
     l = le > l ? le : l;

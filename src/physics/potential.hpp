@@ -20,6 +20,7 @@ TRIDEM_HD inline Real potential_in_sub_triangle(const Triangle<Real>& t, Real ar
 template <class Real>
 TRIDEM_HD inline Real potential(const Triangle<Real>& t, Real area, Vec2<Real> p) {
   Real phi = potential_in_sub_triangle(t, area, 0, p);
+  TRIDEM_UNROLL
   for (int k = 1; k < 3; ++k) {
     const Real pk = potential_in_sub_triangle(t, area, k, p);
     phi = pk < phi ? pk : phi;

@@ -22,7 +22,8 @@ __global__ void init_bounds_kernel(CornerBounds<Real>* b) {
 
 /// Build boxes from the current ones, and the extent of the small particles' corners.
 template <class Real>
-__global__ void grow_boxes_kernel(ParticleArrays<Real> p, Real margin, CornerBounds<Real>* b) {
+__global__ void grow_boxes_kernel(ParticleArrays<Real> p, const std::uint8_t* is_small,
+                                  Real margin, CornerBounds<Real>* b) {
   using B = OrderedBits<Real>;
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   bool small = false;
@@ -34,7 +35,7 @@ __global__ void grow_boxes_kernel(ParticleArrays<Real> p, Real margin, CornerBou
     p.build_lo_y[i] = y;
     p.build_hi_x[i] = p.hi_x[i] + margin;
     p.build_hi_y[i] = p.hi_y[i] + margin;
-    small = p.small[i] != 0;
+    small = is_small[i] != 0;
   }
   // Warp-level extent first, then one atomic per warp and bound.
   const unsigned mask = __ballot_sync(0xffffffffu, small);

@@ -165,7 +165,6 @@ ParticleArrays<Real> CudaSolver<Real>::arrays() const {
   p.half_size = half_size_.data();
   p.material = material_.data();
   p.free = free_.data();
-  p.small = nullptr;  // the builder keeps its own
   p.x = x_.data();
   p.y = y_.data();
   p.theta = theta_.data();
@@ -315,6 +314,15 @@ std::string CudaSolver<Real>::description() const {
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
          (method_ == Method::Grid ? "grid" : "all-pairs") + skin;
+}
+
+template <class Real>
+std::string CudaSolver<Real>::statistics() const {
+  char text[160];
+  std::snprintf(text, sizeof text, "pair list built %lld times in %lld steps; %d pairs (room for %zu)",
+                static_cast<long long>(pairs_->builds()), static_cast<long long>(step_),
+                pairs_->count(), pairs_->capacity());
+  return text;
 }
 
 template class CudaSolver<float>;

@@ -32,8 +32,7 @@ class CudaSolver final : public Solver {
   double dt() const override { return static_cast<double>(params_.dt); }
   std::size_t size() const override { return n_; }
   std::string description() const override;
-
-  std::int64_t list_builds() const { return pairs_->builds(); }
+  std::string statistics() const override;
 
  private:
   void upload_model(const ParticleModel& model);

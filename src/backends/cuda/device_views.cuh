@@ -21,7 +21,6 @@ struct ParticleArrays {
   const Real* half_size;
   const int* material;
   const std::uint8_t* free;   ///< 1 for bodies moved by forces
-  const std::uint8_t* small;  ///< 1 for bodies binned in the cell grid
   // State.
   Real *x, *y, *theta, *vx, *vy, *w;
   Real *fx, *fy, *torque;

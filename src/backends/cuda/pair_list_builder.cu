@@ -61,6 +61,8 @@ PairListBuilder<Real>::PairListBuilder(const std::vector<std::uint8_t>& small, M
     TRIDEM_CUDA_CHECK(cudaMemsetAsync(b->data(), 0, b->bytes(), stream_));
   }
   total_.allocate(1);
+  old_partner_.allocate(std::max<std::size_t>(pair_capacity, 1));
+  old_slip_.allocate(std::max<std::size_t>(pair_capacity, 1));
   reserve_pairs(pair_capacity);
 }
 
@@ -122,7 +124,8 @@ CandidateSearch<Real> PairListBuilder<Real>::search(const ParticleArrays<Real>& 
 template <class Real>
 void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) {
   const CandidateSearch<Real> c = search(p);
-  grow_boxes_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, margin, bounds_.data());
+  grow_boxes_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, small_.data(), margin,
+                                                                bounds_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("grow_boxes_kernel");
   if (method_ == Method::Grid) {
     grid_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data(), cell_, max_cells(n_), grid_.data());
