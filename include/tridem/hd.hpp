@@ -17,6 +17,17 @@
 
 #include <math.h>
 
+namespace tridem {
+/// Index of the lowest set bit of a non-zero mask.
+TRIDEM_HD inline int lowest_bit(unsigned mask) {
+#if defined(__CUDA_ARCH__)
+  return __ffs(static_cast<int>(mask)) - 1;
+#else
+  return __builtin_ctz(mask);
+#endif
+}
+}  // namespace tridem
+
 namespace tridem::math {
 // Overloads that keep float arithmetic in float on host and device alike (the global
 // ::cos of <math.h> would promote a float to double on the host).

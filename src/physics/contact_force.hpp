@@ -40,106 +40,127 @@ struct EdgeLoad {
   Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
 };
 
-/// Signed areas of the contactor's vertices against the target's edges and against the
-/// rays from the target's centroid to its vertices. Along a contactor edge every such area
-/// is linear, so these nine plus nine numbers give every clipping value of the three edges;
-/// the edge areas are also exactly what the separating-axis test looks at.
+/// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
+/// inner side. Along a contactor edge each is linear, and they are exactly what the
+/// separating-axis test looks at.
 template <class Real>
-struct RoleAreas {
-  Real edge[3][3];  ///< [target edge k][contactor vertex i]: >= 0 on the inner side
-  Real ray[3][3];   ///< [target ray k][contactor vertex i]
+struct EdgeAreas {
+  Real a[3][3];  ///< [target edge k][contactor vertex i]
 };
 
-/// The edge areas: all the separating-axis test needs.
 template <class Real>
-TRIDEM_HD inline void edge_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
-                                 RoleAreas<Real>& r) {
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> edge = target.v[(k + 1) % 3] - target.v[k];
-    TRIDEM_UNROLL
-    for (int i = 0; i < 3; ++i) r.edge[k][i] = cross(edge, contactor.v[i] - target.v[k]);
-  }
-}
-
-/// The ray areas, needed only once the pair is known to overlap.
-template <class Real>
-TRIDEM_HD inline void ray_areas(const Triangle<Real>& contactor, const Triangle<Real>& target,
-                                Vec2<Real> target_centroid, RoleAreas<Real>& r) {
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> ray = target.v[k] - target_centroid;
-    TRIDEM_UNROLL
-    for (int i = 0; i < 3; ++i) r.ray[k][i] = cross(ray, contactor.v[i] - target_centroid);
-  }
+TRIDEM_HD inline Real edge_area(const Triangle<Real>& target, int k, Vec2<Real> p) {
+  return cross(target.v[(k + 1) % 3] - target.v[k], p - target.v[k]);
 }
 
 template <class Real>
-TRIDEM_HD inline RoleAreas<Real> role_areas(const Triangle<Real>& contactor,
-                                            const Triangle<Real>& target,
-                                            Vec2<Real> target_centroid) {
-  RoleAreas<Real> r;
-  edge_areas(contactor, target, r);
-  ray_areas(contactor, target, target_centroid, r);
+TRIDEM_HD inline EdgeAreas<Real> edge_areas(const Triangle<Real>& contactor,
+                                            const Triangle<Real>& target) {
+  EdgeAreas<Real> r;
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    TRIDEM_UNROLL
+    for (int i = 0; i < 3; ++i) r.a[k][i] = edge_area(target, k, contactor.v[i]);
+  }
   return r;
 }
 
 /// True when an edge of the target has every contactor vertex on or outside it.
 template <class Real>
-TRIDEM_HD inline bool target_edge_separates(const RoleAreas<Real>& r) {
+TRIDEM_HD inline bool target_edge_separates(const EdgeAreas<Real>& r) {
   TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k)
-    if (r.edge[k][0] <= Real(0) && r.edge[k][1] <= Real(0) && r.edge[k][2] <= Real(0))
-      return true;
+    if (r.a[k][0] <= Real(0) && r.a[k][1] <= Real(0) && r.a[k][2] <= Real(0)) return true;
   return false;
 }
 
-/// Edge e of the contactor, p + t·d with t in [0, 1], is clipped to the target once; the
-/// three centroid rays then split the inside part among the sub-triangles S_k = {ray_k >=
-/// 0, ray_k+1 <= 0}. φ in S_k is the target-edge area f_k scaled by 3/(2A).
+/// False only when contactor edge e certainly misses the target: both ends strictly
+/// outside one target edge, where edge_load's clipping would find nothing whatever the
+/// rounding. Costs no division, so a pair spends its clipping on the edges that matter.
 template <class Real>
-TRIDEM_HD inline EdgeLoad<Real> edge_load(const RoleAreas<Real>& areas, int e,
-                                          const Triangle<Real>& contactor,
-                                          const Triangle<Real>& target, Real target_area) {
-  EdgeLoad<Real> load;
+TRIDEM_HD inline bool edge_may_enter(const EdgeAreas<Real>& r, int e) {
   const int e1 = (e + 1) % 3;
-  Real t_lo = Real(0), t_hi = Real(1);
   TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k)
-    if (!clip_to_half_plane(areas.edge[k][e], areas.edge[k][e1] - areas.edge[k][e], t_lo, t_hi))
-      return load;
-  const Vec2<Real> p = contactor.v[e];
-  const Vec2<Real> d = contactor.v[e1] - p;
+    if (r.a[k][e] < Real(0) && r.a[k][e1] < Real(0)) return false;
+  return true;
+}
+
+/// What edge_load needs of the target, computed once per role.
+template <class Real>
+struct TargetShape {
+  Triangle<Real> tri;
+  Vec2<Real> centroid;
+  Real to_phi;          ///< 3/(2A): φ in sub-triangle k is to_phi times edge area k
+  Real edge_length[3];  ///< |v_k+1 − v_k|
+};
+
+template <class Real>
+TRIDEM_HD inline TargetShape<Real> target_shape(const Triangle<Real>& t, Real area,
+                                                Vec2<Real> centroid) {
+  TargetShape<Real> s{t, centroid, Real(3) / (Real(2) * area), {}};
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) s.edge_length[k] = norm(t.v[(k + 1) % 3] - t.v[k]);
+  return s;
+}
+
+/// The contactor edge p0 + t·(p1 − p0), t in [0, 1], is clipped to the target once; the
+/// three centroid rays then split the inside part among the sub-triangles S_k = {ray_k >=
+/// 0, ray_k+1 <= 0}, where φ is linear. Every clipping value is a signed area, linear
+/// along the edge, so the areas at the two ends give them all.
+template <class Real>
+TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
+                                          const TargetShape<Real>& target) {
+  EdgeLoad<Real> load;
+  Real f0[3], fd[3];
+  Real t_lo = Real(0), t_hi = Real(1);
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    f0[k] = edge_area(target.tri, k, p0);
+    fd[k] = edge_area(target.tri, k, p1) - f0[k];
+    if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
+  }
+  // Where the edge crosses each ray: each ray bounds two sub-triangles.
+  Real r0[3], rd[3], crossing[3];
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<Real> ray = target.tri.v[k] - target.centroid;
+    r0[k] = cross(ray, p0 - target.centroid);
+    rd[k] = cross(ray, p1 - target.centroid) - r0[k];
+    crossing[k] = rd[k] != Real(0) ? -r0[k] / rd[k] : Real(0);
+  }
+  const Vec2<Real> d = p1 - p0;
   const Real edge_length = norm(d);
-  const Real to_phi = Real(3) / (Real(2) * target_area);
   Vec2<Real> moment{};
   TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) {
     const int next = (k + 1) % 3;
     Real t0 = t_lo, t1 = t_hi;
-    if (!clip_to_half_plane(areas.ray[k][e], areas.ray[k][e1] - areas.ray[k][e], t0, t1)) continue;
-    if (!clip_to_half_plane(-areas.ray[next][e], areas.ray[next][e] - areas.ray[next][e1], t0, t1))
-      continue;
-    const Real f0 = areas.edge[k][e], fd = areas.edge[k][e1] - f0;
-    const Vec2<Real> q0 = p + d * t0, q1 = p + d * t1;
-    const LinearLoad<Real> piece =
-        linear_load(q0, q1, to_phi * (f0 + t0 * fd), to_phi * (f0 + t1 * fd));
+    // ray_k >= 0 ...
+    if (!clip_at_crossing(r0[k], rd[k], crossing[k], t0, t1)) continue;
+    // ... and ray_k+1 <= 0.
+    if (!clip_at_crossing(-r0[next], -rd[next], crossing[next], t0, t1)) continue;
+    const Real phi0 = target.to_phi * (f0[k] + t0 * fd[k]);
+    const Real phi1 = target.to_phi * (f0[k] + t1 * fd[k]);
+    const Real length = edge_length * (t1 - t0);
+    const Vec2<Real> q0 = p0 + d * t0, q1 = p0 + d * t1;
+    const LinearLoad<Real> piece = linear_load(q0, q1, length, phi0, phi1);
     load.integral += piece.integral;
     moment += piece.point * piece.integral;
     // Piece of length ℓ in S_k of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k.
-    load.stiffness += edge_length * (t1 - t0) * to_phi * norm(target.v[next] - target.v[k]);
+    load.stiffness += length * target.to_phi * target.edge_length[k];
   }
   if (load.integral > Real(0)) load.point = moment / load.integral;
   return load;
 }
 
-/// The same for one edge on its own (tests and tools).
+/// The same for edge e of a whole contactor (tests and tools).
 template <class Real>
 TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
                                           const Triangle<Real>& target, Real target_area,
                                           Vec2<Real> target_centroid) {
-  return edge_load(role_areas(contactor, target, target_centroid), e, contactor, target,
-                   target_area);
+  return edge_load(contactor.v[e], contactor.v[(e + 1) % 3],
+                   target_shape(target, target_area, target_centroid));
 }
 
 /// Mass that sets the damping of a pair: the reduced mass, or the free body's mass when
@@ -149,32 +170,66 @@ TRIDEM_HD inline Real effective_mass(Real ma, Real mb) {
   return (ma > Real(0) && mb > Real(0)) ? ma * mb / (ma + mb) : ma + mb;
 }
 
+/// Element i of a small array with a run-time index, without forcing the array out of
+/// registers on the device (the loop unrolls to predicated moves).
+template <class T, int N>
+TRIDEM_HD inline T pick(const T (&array)[N], int i) {
+  T v = array[0];
+  TRIDEM_UNROLL
+  for (int k = 1; k < N; ++k)
+    if (k == i) v = array[k];
+  return v;
+}
+
+template <class T, int N>
+TRIDEM_HD inline void put(T (&array)[N], int i, const T& v) {
+  TRIDEM_UNROLL
+  for (int k = 0; k < N; ++k)
+    if (k == i) array[k] = v;
+}
+
+/// Vertex k of t for a run-time k.
+template <class Real>
+TRIDEM_HD inline Vec2<Real> vertex(const Triangle<Real>& t, int k) {
+  return k == 0 ? t.v[0] : (k == 1 ? t.v[1] : t.v[2]);
+}
+
 /// Force, torques and new slips of the pair (a, b) over a step dt. `slip` holds the
 /// slips of the previous step on entry (zeros for a new contact) and the new ones on exit;
 /// an edge contact that has opened gets slip 0.
+///
+/// Edge contacts are numbered i = 3·role + e (role 0: a's edges in b, role 1: b's in a);
+/// only those that may carry a load are visited, in that order, so that the threads of a
+/// GPU warp each spend their time on their own few edges rather than on all six.
 template <class Real>
 TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real>& b,
                                             const ContactLaw<Real>& law, Real dt,
                                             PairSlip<Real>& slip) {
   PairForce<Real> out;
-  // The separating-axis test reads the same edge areas the clipping needs.
-  RoleAreas<Real> areas[2];
-  edge_areas(a.tri, b.tri, areas[0]);
-  edge_areas(b.tri, a.tri, areas[1]);
+  // The separating-axis test reads the same edge areas that tell which edges may enter.
+  const EdgeAreas<Real> areas[2] = {edge_areas(a.tri, b.tri), edge_areas(b.tri, a.tri)};
+  unsigned active = 0;
+  if (!target_edge_separates(areas[0]) && !target_edge_separates(areas[1])) {
+    TRIDEM_UNROLL
+    for (int i = 0; i < kEdgeContacts; ++i)
+      if (edge_may_enter(areas[i / 3], i % 3)) active |= 1u << i;
+  }
   EdgeLoad<Real> loads[kEdgeContacts];
   Real total_integral = 0, total_stiffness = 0;
-  if (!target_edge_separates(areas[0]) && !target_edge_separates(areas[1])) {
-    ray_areas(a.tri, b.tri, b.c, areas[0]);
-    ray_areas(b.tri, a.tri, a.c, areas[1]);
+  if (active != 0) {
+    const TargetShape<Real> b_shape = target_shape(b.tri, b.area, b.c);
+    const TargetShape<Real> a_shape = target_shape(a.tri, a.area, a.c);
     TRIDEM_UNROLL
     for (int role = 0; role < 2; ++role) {
-      const Body<Real>& c = role == 0 ? a : b;
-      const Body<Real>& t = role == 0 ? b : a;
-      TRIDEM_UNROLL
-      for (int e = 0; e < 3; ++e) {
-        loads[role * 3 + e] = edge_load(areas[role], e, c.tri, t.tri, t.area);
-        total_integral += loads[role * 3 + e].integral;
-        total_stiffness += loads[role * 3 + e].stiffness;
+      const Triangle<Real>& contactor = role == 0 ? a.tri : b.tri;
+      const TargetShape<Real>& target = role == 0 ? b_shape : a_shape;
+      for (unsigned left = (active >> (3 * role)) & 7u; left != 0; left &= left - 1) {
+        const int e = lowest_bit(left);
+        const EdgeLoad<Real> load =
+            edge_load(vertex(contactor, e), vertex(contactor, (e + 1) % 3), target);
+        put(loads, 3 * role + e, load);
+        total_integral += load.integral;
+        total_stiffness += load.stiffness;
       }
     }
   }
@@ -190,19 +245,17 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   const Real k_total = law.penalty * total_stiffness;
   const Real c_total = Real(2) * law.damping * math::sqrt(effective_mass(a.mass, b.mass) * k_total);
   Vec2<Real> point_moment{};
+  Real new_slip[kEdgeContacts] = {};
   TRIDEM_UNROLL
   for (int role = 0; role < 2; ++role) {
     const Body<Real>& c = role == 0 ? a : b;
     const Body<Real>& t = role == 0 ? b : a;
-    TRIDEM_UNROLL
-    for (int e = 0; e < 3; ++e) {
-      const int i = role * 3 + e;
-      const EdgeLoad<Real>& load = loads[i];
-      if (!(load.integral > Real(0))) {
-        slip.s[i] = Real(0);
-        continue;
-      }
-      const Vec2<Real> d = c.tri.v[(e + 1) % 3] - c.tri.v[e];
+    for (unsigned left = (active >> (3 * role)) & 7u; left != 0; left &= left - 1) {
+      const int e = lowest_bit(left);
+      const int i = 3 * role + e;
+      const EdgeLoad<Real> load = pick(loads, i);
+      if (!(load.integral > Real(0))) continue;
+      const Vec2<Real> d = vertex(c.tri, (e + 1) % 3) - vertex(c.tri, e);
       const Vec2<Real> tangent = d / norm(d);
       const Vec2<Real> normal{tangent.y, -tangent.x};  // outward for a CCW contactor
       const Vec2<Real> r = load.point;
@@ -210,14 +263,14 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       const Real damping = c_total * load.stiffness / total_stiffness;
       const Real f_normal = law.penalty * load.integral + damping * dot(v_rel, normal);
       // Elastic–perfectly-plastic tangential spring (Coulomb friction, contact-model.md).
-      Real s = slip.s[i] + dot(v_rel, tangent) * dt;
+      Real s = pick(slip.s, i) + dot(v_rel, tangent) * dt;
       Real f_tangent = -law.tangential_penalty * s;
       const Real cap = law.friction * (f_normal > Real(0) ? f_normal : Real(0));
       if (f_tangent > cap || f_tangent < -cap) {
         f_tangent = f_tangent > Real(0) ? cap : -cap;
         s = -f_tangent / law.tangential_penalty;
       }
-      slip.s[i] = s;
+      put(new_slip, i, s);
       const Vec2<Real> f_on_c = normal * (-f_normal) + tangent * f_tangent;
       const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;
       out.force_a += f_on_a;
@@ -226,6 +279,9 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       point_moment += r * load.integral;
     }
   }
+  // Edge contacts without a load (opened or never closed) forget their slip.
+  TRIDEM_UNROLL
+  for (int i = 0; i < kEdgeContacts; ++i) slip.s[i] = new_slip[i];
   out.point = point_moment / total_integral;
   return out;
 }

@@ -113,6 +113,16 @@ TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
   return t1 > t0;
 }
 
+/// clip_to_half_plane for an area f0 + t·fd whose zero, -f0/fd, is already known: the
+/// same result, so that a ray shared by two sub-triangles is divided by once.
+template <class Real>
+TRIDEM_HD inline bool clip_at_crossing(Real f0, Real fd, Real crossing, Real& t0, Real& t1) {
+  if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
+  if (fd > Real(0)) t0 = crossing > t0 ? crossing : t0;
+  else t1 = crossing < t1 ? crossing : t1;
+  return t1 > t0;
+}
+
 /// Length of the longest edge.
 template <class Real>
 TRIDEM_HD inline Real longest_edge(const Triangle<Real>& t) {
