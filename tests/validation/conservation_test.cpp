@@ -1,6 +1,7 @@
 // A dense cloud of colliding triangles with friction and damping, no gravity and no
 // walls: every pair force acts at one point on both bodies, so linear and angular momentum
 // are conserved to rounding, while friction and damping dissipate energy.
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/output.hpp"
 
@@ -10,6 +11,8 @@
 
 namespace tridem {
 namespace {
+
+using Conservation = test::BackendTest;
 
 Scene colliding_cloud(int side) {
   Scene s = test::empty_scene(1e7, 1000, 0.5, 0.1);
@@ -35,10 +38,10 @@ Scene colliding_cloud(int side) {
   return s;
 }
 
-TEST(Conservation, CollidingCloudConservesMomentum) {
+TEST_P(Conservation, CollidingCloudConservesMomentum) {
   const Scene s = colliding_cloud(12);
   SolverConfig config;
-  config.backend = Backend::Cpu;
+  config.backend = GetParam();
   auto solver = make_solver(s, config);
   Snapshot snap;
   solver->snapshot(snap, false);
@@ -65,6 +68,9 @@ TEST(Conservation, CollidingCloudConservesMomentum) {
   EXPECT_GT(contacts, 100u) << "the cloud must actually collide";
   EXPECT_LT(kinetic, 0.9 * before.kinetic) << "friction and damping must dissipate";
 }
+
+INSTANTIATE_TEST_SUITE_P(Cpu, Conservation, ::testing::Values(Backend::Cpu));
+INSTANTIATE_TEST_SUITE_P(Gpu, Conservation, ::testing::Values(Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

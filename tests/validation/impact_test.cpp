@@ -1,6 +1,7 @@
 // Head-on impact of two triangles meeting face to face: without damping the restitution is
 // 1; with damping ratio ζ it is the linear spring-dashpot value exp(−πζ/√(1−ζ²))
 // (docs/model.md, "Normal damping").
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 
 #include <cmath>
@@ -9,9 +10,11 @@
 namespace tridem {
 namespace {
 
+using Impact = test::BackendTest;
+
 /// Relative speed after over before for two equal right triangles whose vertical faces
 /// meet, approaching at 2 m/s.
-double restitution(double damping, double dt = 0, Backend backend = Backend::Cpu) {
+double restitution(double damping, double dt, Backend backend) {
   Scene s = test::empty_scene(1e8, 1000, 0.0, damping);
   if (dt > 0) s.simulation.dt = dt;
   const double gap = 0.005;
@@ -31,20 +34,23 @@ double restitution(double damping, double dt = 0, Backend backend = Backend::Cpu
   return (snap.vx[1] - snap.vx[0]) / 2.0;
 }
 
-TEST(Impact, UndampedHeadOnImpactKeepsRestitutionOne) {
-  EXPECT_NEAR(restitution(0.0), 1.0, 0.02);
+TEST_P(Impact, UndampedHeadOnImpactKeepsRestitutionOne) {
+  EXPECT_NEAR(restitution(0.0, 0, GetParam()), 1.0, 0.02);
 }
 
-TEST(Impact, DampingGivesPredictedRestitution) {
+TEST_P(Impact, DampingGivesPredictedRestitution) {
   // A step of about 1/200 of the contact time, so that the model, not the integrator's
   // error at the default step (about 20 steps per contact), is what is measured.
   for (double zeta : {0.05, 0.2, 0.5}) {
     const double predicted = std::exp(-M_PI * zeta / std::sqrt(1 - zeta * zeta));
-    const double e = restitution(zeta, 1e-5);
+    const double e = restitution(zeta, 1e-5, GetParam());
     EXPECT_LT(e, 1.0);
     EXPECT_NEAR(e, predicted, 0.03 * predicted) << "zeta " << zeta;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Cpu, Impact, ::testing::Values(Backend::Cpu));
+INSTANTIATE_TEST_SUITE_P(Gpu, Impact, ::testing::Values(Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

@@ -1,5 +1,6 @@
 // A block on a 30° incline (gravity tilted by 30° over a flat fixed floor): with μ < tan θ
 // it slides with a = g(sin θ − μ cos θ); with μ > tan θ the friction spring holds it.
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 
 #include <cmath>
@@ -8,6 +9,8 @@
 namespace tridem {
 namespace {
 
+using Incline = test::BackendTest;
+
 constexpr double kAngle = M_PI / 6, kG = 9.81;
 
 struct Slide {
@@ -15,14 +18,14 @@ struct Slide {
   double displacement;  ///< over the measuring window
 };
 
-Slide slide(double mu) {
+Slide slide(double mu, Backend backend) {
   Scene s = test::empty_scene(1e8, 2000, mu, 0.3);
   s.simulation.gravity = {kG * std::sin(kAngle), -kG * std::cos(kAngle)};
   s.triangles.push_back(test::floor_triangle(-5, 5));
   // A flat block lying on its long edge, just touching the floor.
   s.triangles.push_back(test::triangle({-0.1, 0}, {0.1, 0}, {0, 0.05}));
   SolverConfig config;
-  config.backend = Backend::Cpu;
+  config.backend = backend;
   auto solver = make_solver(s, config);
   Snapshot snap;
   // Let the normal contact settle, then measure v over a fixed window.
@@ -36,23 +39,26 @@ Slide slide(double mu) {
   return {(snap.vx[1] - v0) / (snap.time - t0), snap.x[1] - x0};
 }
 
-TEST(Incline, BlockSlidesWithCoulombAcceleration) {
+TEST_P(Incline, BlockSlidesWithCoulombAcceleration) {
   const double mu = 0.3;
   const double expected = kG * (std::sin(kAngle) - mu * std::cos(kAngle));
-  const Slide r = slide(mu);
+  const Slide r = slide(mu, GetParam());
   EXPECT_NEAR(r.acceleration, expected, 0.05 * expected);
 }
 
-TEST(Incline, FrictionlessBlockSlidesWithGSinTheta) {
+TEST_P(Incline, FrictionlessBlockSlidesWithGSinTheta) {
   const double expected = kG * std::sin(kAngle);
-  EXPECT_NEAR(slide(0.0).acceleration, expected, 0.05 * expected);
+  EXPECT_NEAR(slide(0.0, GetParam()).acceleration, expected, 0.05 * expected);
 }
 
-TEST(Incline, BlockHoldsWhenFrictionExceedsSlope) {
-  const Slide r = slide(0.8);  // tan 30° = 0.577
+TEST_P(Incline, BlockHoldsWhenFrictionExceedsSlope) {
+  const Slide r = slide(0.8, GetParam());  // tan 30° = 0.577
   EXPECT_LT(std::abs(r.displacement), 1e-5);
   EXPECT_LT(std::abs(r.acceleration), 1e-3);
 }
+
+INSTANTIATE_TEST_SUITE_P(Cpu, Incline, ::testing::Values(Backend::Cpu));
+INSTANTIATE_TEST_SUITE_P(Gpu, Incline, ::testing::Values(Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

@@ -1,6 +1,7 @@
 // Motion without contact: free fall and spin under symplectic Euler, prescribed walls that
 // follow their velocity exactly and push what they meet, and Cundall local damping.
 #include "physics/integrate.hpp"
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 
 #include <cmath>
@@ -9,13 +10,15 @@
 namespace tridem {
 namespace {
 
-TEST(Motion, FreeFallAndSpinFollowTheAnalyticSolution) {
+using MotionTest = test::BackendTest;  // not "Motion": that is the enum tridem::Motion
+
+TEST_P(MotionTest, FreeFallAndSpinFollowTheAnalyticSolution) {
   Scene s = test::empty_scene();
   s.simulation.gravity = {0.5, -9.81};
   s.simulation.dt = 1e-5;
   s.triangles.push_back(test::triangle({0, 0}, {0.1, 0}, {0, 0.1}, {1.0, 2.0}, Motion::Free, 3.0));
   SolverConfig config;
-  config.backend = Backend::Cpu;
+  config.backend = GetParam();
   auto solver = make_solver(s, config);
   Snapshot start, end;
   solver->snapshot(start, false);
@@ -32,7 +35,7 @@ TEST(Motion, FreeFallAndSpinFollowTheAnalyticSolution) {
   EXPECT_NEAR(end.omega[0], 3.0, 1e-12);
 }
 
-TEST(Motion, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
+TEST_P(MotionTest, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
   Scene s = test::empty_scene(1e7, 1000, 0.0, 0.2);
   // A plate moving right at 0.5 m/s and turning slowly; a grain at rest in its way.
   s.triangles.push_back(test::triangle({-0.2, -0.5}, {0.0, 0.0}, {-0.2, 0.5}, {0.5, 0},
@@ -41,7 +44,7 @@ TEST(Motion, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
   s.triangles.push_back(test::triangle({5, 5}, {5.1, 5}, {5, 5.1}, {0, 0}, Motion::Prescribed,
                                        2.0));
   SolverConfig config;
-  config.backend = Backend::Cpu;
+  config.backend = GetParam();
   auto solver = make_solver(s, config);
   Snapshot start, end;
   solver->snapshot(start, false);
@@ -62,20 +65,23 @@ TEST(Motion, LocalDampingOpposesVelocityByAFractionOfTheForce) {
   EXPECT_DOUBLE_EQ(physics::local_damping(10.0, 0.0, 0.3), 10.0);   // at rest: unchanged
 }
 
-TEST(Motion, LocalDampingSettlesABouncingGrainFaster) {
-  auto kinetic_after = [](double alpha) {
+TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {
+  auto kinetic_after = [backend = GetParam()](double alpha) {
     Scene s = test::empty_scene(1e6, 1000);
     s.simulation.gravity = {0, -9.81};
     s.simulation.local_damping = alpha;
     s.triangles.push_back(test::floor_triangle(-1, 1));
     s.triangles.push_back(test::triangle({-0.05, 0.05}, {0.05, 0.05}, {0, 0.12}));
-    const Snapshot snap = test::run_to(s, Backend::Cpu, 20000);
+    const Snapshot snap = test::run_to(s, backend, 20000);
     return 0.5 * snap.mass[1] * (snap.vx[1] * snap.vx[1] + snap.vy[1] * snap.vy[1]);
   };
   const double undamped = kinetic_after(0.0), damped = kinetic_after(0.7);
   EXPECT_GT(undamped, 1e-4);  // an elastic grain keeps bouncing
   EXPECT_LT(damped, 1e-3 * undamped);
 }
+
+INSTANTIATE_TEST_SUITE_P(Cpu, MotionTest, ::testing::Values(Backend::Cpu));
+INSTANTIATE_TEST_SUITE_P(Gpu, MotionTest, ::testing::Values(Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

@@ -1,5 +1,6 @@
 // A triangle dropped on a fixed floor under gravity comes to rest on it: the floor carries
 // its weight and the penetration is what the penalty predicts.
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 
 #include <cmath>
@@ -8,7 +9,9 @@
 namespace tridem {
 namespace {
 
-TEST(Resting, TriangleComesToRestOnFixedFloor) {
+using Resting = test::BackendTest;
+
+TEST_P(Resting, TriangleComesToRestOnFixedFloor) {
   const double p = 1e7, rho = 2000, g = 9.81;
   Scene s = test::empty_scene(p, rho, 0.5, 0.5);
   s.simulation.gravity = {0, -g};
@@ -17,7 +20,7 @@ TEST(Resting, TriangleComesToRestOnFixedFloor) {
   s.triangles.push_back(test::triangle({-0.1, 0.05}, {0.1, 0.05}, {0, 0.15}, {0, 0},
                                        Motion::Free, 0.5));
   SolverConfig config;
-  config.backend = Backend::Cpu;
+  config.backend = GetParam();
   auto solver = make_solver(s, config);
   solver->advance(static_cast<std::int64_t>(1.0 / solver->dt()));
   Snapshot snap;
@@ -34,6 +37,9 @@ TEST(Resting, TriangleComesToRestOnFixedFloor) {
   EXPECT_NEAR(snap.fy[1], mass * g, 1e-2 * mass * g);
   EXPECT_EQ(snap.x[0], 0.0);  // fixed means fixed
 }
+
+INSTANTIATE_TEST_SUITE_P(Cpu, Resting, ::testing::Values(Backend::Cpu));
+INSTANTIATE_TEST_SUITE_P(Gpu, Resting, ::testing::Values(Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

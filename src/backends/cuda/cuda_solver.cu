@@ -211,7 +211,8 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
     *host = {0, INT_MAX};
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
     if (q.count > 0) {
-      pair_forces_kernel<Real><<<blocks(static_cast<std::size_t>(q.count)), kBlock, 0, stream_>>>(
+      constexpr int threads = PairKernelShape<Real>::threads;
+      pair_forces_kernel<Real><<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(
           p, q, params_);
       TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
     }

@@ -23,9 +23,23 @@ __device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, i
   return b;
 }
 
+/// Launch shape of the pair-force kernel: 128-thread blocks with a register cap, measured
+/// best on an H100 (bench/results/cuda_tuning.md): the double kernel needs 226 registers
+/// uncapped, so 4 blocks per SM (128 registers, a few spills) beat 8 warps without spills.
 template <class Real>
-__global__ void pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
-                                   StepParams<Real> sp) {
+struct PairKernelShape;
+template <>
+struct PairKernelShape<double> {
+  static constexpr int threads = 128, min_blocks = 4;
+};
+template <>
+struct PairKernelShape<float> {
+  static constexpr int threads = 128, min_blocks = 6;
+};
+
+template <class Real>
+__global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
+    pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp) {
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
