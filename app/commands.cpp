@@ -87,8 +87,12 @@ int info(const std::string& path) {
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
              backend_name(resolve_backend(sim.backend)),
              sim.precision == Precision::Float ? "float" : "double");
-  fmt::print("memory       about {:.1f} MiB\n",
+  fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
+  if (info.gpu_memory_bytes > 0)
+    fmt::print("gpu memory   about {:.1f} MiB reserved by the cuda backend; GPU: {}\n",
+               static_cast<double>(info.gpu_memory_bytes) / (1024.0 * 1024.0),
+               info.gpu.empty() ? "none usable here" : info.gpu);
   return 0;
 }
 

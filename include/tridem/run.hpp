@@ -41,6 +41,9 @@ struct SceneInfo {
   double dt_critical = 0, dt_chosen = 0;
   bool dt_automatic = true;
   std::size_t memory_bytes = 0;           ///< estimated memory of a run (solver and host)
+  std::size_t gpu_memory_bytes = 0;       ///< GPU memory the cuda backend reserves at start
+                                          ///< (0 in a build without CUDA)
+  std::string gpu;                        ///< the GPU found, empty when none is usable
 };
 
 SceneInfo describe_scene(const Scene& scene);

@@ -1,3 +1,4 @@
+#include "backends/cuda/cuda_backend.hpp"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
 #include "physics/contact_force.hpp"
@@ -59,6 +60,9 @@ SceneInfo describe_scene(const Scene& scene) {
   info.memory_bytes = scene.simulation.precision == Precision::Float
                           ? run_bytes<float>(model.size())
                           : run_bytes<double>(model.size());
+  info.gpu_memory_bytes = cuda_solver_bytes(
+      model.size(), kCudaPairsPerParticle * model.size() + 1024, scene.simulation.precision);
+  info.gpu = cuda_device_description();
   return info;
 }
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of the command line: outputs, exit codes and messages.
-# usage: cli_test.sh TRIDEM SOURCE_DIR WORK_DIR
+# usage: cli_test.sh TRIDEM SOURCE_DIR WORK_DIR [HAVE_CUDA]
 set -u
-tridem=$1 src=$2 work=$3
+tridem=$1 src=$2 work=$3 have_cuda=${4:-0}
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -69,6 +69,9 @@ expect_ok "$tridem" render ascii_out/frames/frame_000000100.vtu -o ascii.png
 expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"
 grep -q "memory" out.txt || fail "info lacks memory"
+if [ "$have_cuda" = 1 ]; then
+  grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"
+fi
 
 # render draws the last frame to PNG.
 expect_ok "$tridem" render pile_out -o pile.png
