@@ -106,6 +106,7 @@ TEST(SceneParse, OmittedKeysTakeDefaults) {
   EXPECT_EQ(s.simulation.precision, Precision::Double);
   EXPECT_EQ(s.simulation.method, Method::Grid);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0);
+  EXPECT_DOUBLE_EQ(s.simulation.skin, 0.05);
   EXPECT_EQ(s.output.dir, "out");
   EXPECT_EQ(s.output.every, 0);
   EXPECT_TRUE(s.output.contacts);

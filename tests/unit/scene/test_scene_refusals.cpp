@@ -182,6 +182,8 @@ TEST(SceneRefusals, SettingRanges) {
   expect_refused("[simulation]\nsteps = 5\nsafety = 1.5\n", {"bad.toml:3:", "key 'safety'"});
   expect_refused("[simulation]\nsteps = 5\nlocal_damping = 1\n",
                  {"bad.toml:3:", "key 'local_damping'"});
+  expect_refused("[simulation]\nsteps = 5\nskin = -0.1\n", {"bad.toml:3:", "key 'skin'"});
+  expect_refused("[simulation]\nsteps = 5\nskin = 2\n", {"bad.toml:3:", "key 'skin'"});
   expect_refused("[simulation]\nsteps = 5\n[output]\nevery = -1\n",
                  {"bad.toml:4:", "key 'every'"});
 }
