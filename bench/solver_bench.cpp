@@ -1,6 +1,7 @@
-// CPU solver benchmark: triangle-steps per second of the serial reference solver (backend
+// Solver benchmark: triangle-steps per second of the serial reference solver (backend
 // cpu) and of its OpenMP twin (backend openmp) on the standard dense settling pile,
-// dense_pile(n), for n = 10^3 .. 10^7, and the GPU solver (backend cuda). See bench/README.md for how to run and read it.
+// dense_pile(n), for n = 10^3 .. 10^7, and the GPU solver (backend cuda). See
+// bench/README.md for how to run and read it.
 //
 // Each case is one Google Benchmark run per repetition: a fresh pile is built and warmed
 // up outside timing, then every timed iteration advances the solver by k steps; the whole
@@ -110,18 +111,25 @@ std::unique_ptr<tridem::Solver> make(const Variant& v, std::size_t n) {
   return tridem::make_solver(pile(n), config);
 }
 
-void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int64_t k) {
-  const Backend backend = v.backend;
-  std::unique_ptr<tridem::Solver> solver;
+/// A solver past its warm-up steps, or none (the case then reports why and is skipped).
+std::unique_ptr<tridem::Solver> warmed_up(benchmark::State& state, const Variant& v,
+                                          std::size_t n) {
   try {
-    solver = make(v, n);
+    auto solver = make(v, n);
     solver->advance(kWarmupSteps);
+    return solver;
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     for (auto _ : state) {
     }
-    return;
+    return nullptr;
   }
+}
+
+void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int64_t k) {
+  const Backend backend = v.backend;
+  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
+  if (!solver) return;
   try {
     for (auto _ : state) solver->advance(k);
   } catch (const std::exception& e) {
@@ -151,16 +159,8 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
 /// The cost of one output frame: the state (9 arrays of n) copied from the solver's
 /// memory into a host Snapshot, without and with the contact network.
 void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool contacts) {
-  std::unique_ptr<tridem::Solver> solver;
-  try {
-    solver = make(v, n);
-    solver->advance(kWarmupSteps);
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    for (auto _ : state) {
-    }
-    return;
-  }
+  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
+  if (!solver) return;
   tridem::Snapshot snap;
   for (auto _ : state) solver->snapshot(snap, contacts);
   const double real = v.precision == tridem::Precision::Float ? 4 : 8;

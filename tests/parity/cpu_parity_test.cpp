@@ -3,25 +3,13 @@
 // cell grid (rounding apart: its pairs are summed in another order), and float must stay
 // close over a short run.
 #include "support/scene_builder.hpp"
+#include "support/snapshot_compare.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
 
 namespace tridem {
 namespace {
-
-void expect_identical(const Snapshot& a, const Snapshot& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(a.x[i], b.x[i]) << "particle " << i;
-    ASSERT_EQ(a.y[i], b.y[i]) << "particle " << i;
-    ASSERT_EQ(a.theta[i], b.theta[i]) << "particle " << i;
-    ASSERT_EQ(a.vx[i], b.vx[i]) << "particle " << i;
-    ASSERT_EQ(a.omega[i], b.omega[i]) << "particle " << i;
-    ASSERT_EQ(a.fx[i], b.fx[i]) << "particle " << i;
-  }
-  ASSERT_EQ(a.contacts.size(), b.contacts.size());
-}
 
 TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
   const Scene s = test::jostling_pile(20, 12);
@@ -30,7 +18,7 @@ TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
   for (int threads : {2, 3, 4}) {
     omp_set_num_threads(threads);
     const Snapshot parallel = test::run_to(s, Backend::OpenMP, 400);
-    expect_identical(serial, parallel);
+    test::expect_identical(serial, parallel);
   }
   omp_set_num_threads(saved);
   EXPECT_GT(serial.contacts.size(), 30u) << "the pile must be in contact at the last step";
@@ -38,7 +26,7 @@ TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
 
 TEST(CpuParity, SerialRunIsDeterministic) {
   const Scene s = test::jostling_pile(10, 6);
-  expect_identical(test::run_to(s, Backend::Cpu, 300), test::run_to(s, Backend::Cpu, 300));
+  test::expect_identical(test::run_to(s, Backend::Cpu, 300), test::run_to(s, Backend::Cpu, 300));
 }
 
 TEST(CpuParity, AllPairsAgreesWithCellGrid) {

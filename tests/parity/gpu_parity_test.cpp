@@ -8,6 +8,7 @@
 // signed pair force exceeds by far. The measured differences are printed.
 #include "support/gpu.hpp"
 #include "support/scene_builder.hpp"
+#include "support/snapshot_compare.hpp"
 #include "tridem/error.hpp"
 
 #include <algorithm>
@@ -56,21 +57,6 @@ void expect_agreement(const Snapshot& cpu, const Snapshot& gpu, const char* what
     }
 }
 
-void expect_identical(const Snapshot& a, const Snapshot& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(a.x[i], b.x[i]) << "particle " << i;
-    ASSERT_EQ(a.y[i], b.y[i]) << "particle " << i;
-    ASSERT_EQ(a.theta[i], b.theta[i]) << "particle " << i;
-    ASSERT_EQ(a.vx[i], b.vx[i]) << "particle " << i;
-    ASSERT_EQ(a.vy[i], b.vy[i]) << "particle " << i;
-    ASSERT_EQ(a.omega[i], b.omega[i]) << "particle " << i;
-    ASSERT_EQ(a.fx[i], b.fx[i]) << "particle " << i;
-    ASSERT_EQ(a.torque[i], b.torque[i]) << "particle " << i;
-  }
-  ASSERT_EQ(a.contacts.size(), b.contacts.size());
-}
-
 TEST(GpuParity, DoubleAgreesWithSerialOnJostlingPiles) {
   TRIDEM_SKIP_WITHOUT_GPU();
   for (unsigned seed : {5u, 6u, 7u}) {
@@ -94,7 +80,7 @@ TEST(GpuParity, TwoRunsAreBitIdentical) {
   TRIDEM_SKIP_WITHOUT_GPU();
   const Scene s = test::jostling_pile(20, 12);
   for (Precision p : {Precision::Double, Precision::Float})
-    expect_identical(test::run_to(s, Backend::Cuda, 300, p), test::run_to(s, Backend::Cuda, 300, p));
+    test::expect_identical(test::run_to(s, Backend::Cuda, 300, p), test::run_to(s, Backend::Cuda, 300, p));
 }
 
 // Pairs kept in the list by the skin but not touching add exact zeros, and the touching
@@ -105,7 +91,7 @@ TEST(GpuParity, SkinDoesNotChangeTheResult) {
   rebuild_every_step.simulation.skin = 0;
   Scene wide = rebuild_every_step;
   wide.simulation.skin = 0.3;
-  expect_identical(test::run_to(rebuild_every_step, Backend::Cuda, 300),
+  test::expect_identical(test::run_to(rebuild_every_step, Backend::Cuda, 300),
                    test::run_to(wide, Backend::Cuda, 300));
 }
 

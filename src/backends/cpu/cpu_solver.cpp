@@ -1,5 +1,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 
+#include "core/snapshot_fill.hpp"
+
 #include "physics/integrate.hpp"
 #include "tridem/error.hpp"
 
@@ -259,13 +261,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
     const Vec2<Real> off[3] = {{offset_x_[0][i], offset_y_[0][i]},
                                {offset_x_[1][i], offset_y_[1][i]},
                                {offset_x_[2][i], offset_y_[2][i]}};
-    const auto t = physics::place(Vec2<Real>{x_[i], y_[i]}, theta_[i], off);
-    out.x1[i] = t.v[0].x;
-    out.y1[i] = t.v[0].y;
-    out.x2[i] = t.v[1].x;
-    out.y2[i] = t.v[1].y;
-    out.x3[i] = t.v[2].x;
-    out.y3[i] = t.v[2].y;
+    set_vertices(out, i, physics::place(Vec2<Real>{x_[i], y_[i]}, theta_[i], off));
     out.mass[i] = inv_mass_[i] > 0 ? 1.0 / inv_mass_[i] : 0.0;
     out.inertia[i] = inv_inertia_[i] > 0 ? 1.0 / inv_inertia_[i] : 0.0;
     out.material[i] = material_[i];
@@ -274,13 +270,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
-  for (std::size_t e = 0; e < n_; ++e)
-    for (std::int64_t s = old_pairs_.offset[e]; s < old_pairs_.offset[e + 1]; ++s) {
-      const auto& r = result_[s];
-      if (!r.touching) continue;
-      out.contacts.push_back({static_cast<std::int64_t>(e), old_pairs_.partner[s],
-                              r.force_a.x, r.force_a.y, r.point.x, r.point.y});
-    }
+  append_contacts(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), result_.data());
 }
 
 template class CpuSolver<float>;

@@ -3,6 +3,7 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/step_kernels.cuh"
 #include "broadphase/candidate_pairs.hpp"
+#include "core/snapshot_fill.hpp"
 #include "tridem/error.hpp"
 
 #include <climits>
@@ -283,13 +284,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   const Real* y = x + n;
   const Real* theta = y + n;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto t = physics::place(Vec2<Real>{x[i], y[i]}, theta[i], &host_offsets_[3 * i]);
-    out.x1[i] = t.v[0].x;
-    out.y1[i] = t.v[0].y;
-    out.x2[i] = t.v[1].x;
-    out.y2[i] = t.v[1].y;
-    out.x3[i] = t.v[2].x;
-    out.y3[i] = t.v[2].y;
+    set_vertices(out, i, physics::place(Vec2<Real>{x[i], y[i]}, theta[i], &host_offsets_[3 * i]));
   }
   out.mass = host_mass_;
   out.inertia = host_inertia_;
@@ -300,13 +295,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   std::vector<int> offset, partner;
   std::vector<physics::PairForce<Real>> result;
   pairs_->download(offset, partner, nullptr, &result);
-  for (std::size_t e = 0; e < n; ++e)
-    for (int s = offset[e]; s < offset[e + 1]; ++s) {
-      const auto& r = result[static_cast<std::size_t>(s)];
-      if (!r.touching) continue;
-      out.contacts.push_back({static_cast<std::int64_t>(e), partner[static_cast<std::size_t>(s)],
-                              r.force_a.x, r.force_a.y, r.point.x, r.point.y});
-    }
+  append_contacts(out, n, offset.data(), partner.data(), result.data());
 }
 
 template <class Real>
