@@ -75,7 +75,9 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
       const std::int64_t n = std::min(chunk, target - solver->step());
       solver->advance(n);
       const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (took < 0.05) chunk *= 2;
+      // Capped: doubled unchecked at every fast chunk it overflowed after ~63 output
+      // events and the loop stalled.
+      if (took < 0.05) chunk = std::min<std::int64_t>(2 * chunk, std::int64_t{1} << 20);
       else if (took > 0.2 && chunk > 1) chunk /= 2;
       bar.update(solver->step());
     }

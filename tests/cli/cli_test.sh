@@ -77,6 +77,11 @@ fi
 expect_ok "$tridem" render pile_out -o pile.png
 [ "$(head -c 8 pile.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] || fail "render did not write a PNG"
 
+# Many output events (one per step) must not stall the time loop (it once did after 63).
+sed 's/every = 100/every = 1/' pile.toml >every_step.toml
+expect_ok timeout 120 "$tridem" run every_step.toml --quiet --steps 150 --out every_out
+[ "$(ls every_out/frames/*.vtu 2>/dev/null | wc -l)" -eq 151 ] || fail "every = 1 did not write 151 frames"
+
 # Refusals: a message naming the cause, exit code 1.
 sed 's/penalty = 1e6/penalty = -5/' pile.toml >bad_penalty.toml
 expect_error "bad_penalty.toml" "$tridem" run bad_penalty.toml
