@@ -1,5 +1,7 @@
 #include "broadphase/candidate_pairs.hpp"
 
+#include "broadphase/grid_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -56,29 +58,21 @@ void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   }
   origin_x_ = min_x;
   origin_y_ = min_y;
-  // A particle thrown far away must not make the grid huge: past 4 cells per particle the
-  // cells grow instead (more candidates, same pairs).
-  const double cap = static_cast<double>(4 * n_ + 16);
-  double cell = static_cast<double>(cell_size_);
-  const double wx = static_cast<double>(max_x) - static_cast<double>(min_x);
-  const double wy = static_cast<double>(max_y) - static_cast<double>(min_y);
-  for (;;) {
-    nx_ = static_cast<std::int64_t>(wx / cell) + 1;
-    ny_ = static_cast<std::int64_t>(wy / cell) + 1;
-    if (static_cast<double>(nx_) * static_cast<double>(ny_) <= cap) break;
-    cell *= 1.5;
-  }
-  grid_cell_ = static_cast<Real>(cell);
+  // At most 4 cells per particle.
+  const GridFit fit =
+      fit_grid(static_cast<double>(max_x) - static_cast<double>(min_x),
+               static_cast<double>(max_y) - static_cast<double>(min_y),
+               static_cast<double>(cell_size_), static_cast<double>(4 * n_ + 16));
+  nx_ = fit.nx;
+  ny_ = fit.ny;
+  grid_cell_ = static_cast<Real>(fit.cell);
   const std::int64_t cells = nx_ * ny_;
   std::fill(cell_count_.begin(), cell_count_.begin() + cells, 0);
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
-    auto cx = static_cast<std::int64_t>((b.lo_x[i] - origin_x_) / grid_cell_);
-    auto cy = static_cast<std::int64_t>((b.lo_y[i] - origin_y_) / grid_cell_);
-    cx = std::clamp<std::int64_t>(cx, 0, nx_ - 1);
-    cy = std::clamp<std::int64_t>(cy, 0, ny_ - 1);
-    cell_of_[i] = cx + cy * nx_;
+    cell_of_[i] = cell_coordinate(b.lo_x[i], origin_x_, grid_cell_, nx_) +
+                  cell_coordinate(b.lo_y[i], origin_y_, grid_cell_, ny_) * nx_;
   }
   // Counting sort by cell; serial, and in index order within a cell.
   for (std::int64_t i = 0; i < n; ++i)

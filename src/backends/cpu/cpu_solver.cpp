@@ -1,5 +1,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 
+#include "broadphase/pair_sums.hpp"
+#include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 
 #include "physics/integrate.hpp"
@@ -184,17 +186,10 @@ void CpuSolver<Real>::accumulate() {
   const auto n = static_cast<std::int64_t>(n_);
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t p = 0; p < n; ++p) {
-    Vec2<Real> f{};
-    Real t = 0;
-    for (std::int64_t s = pairs_.offset[p]; s < pairs_.offset[p + 1]; ++s) {
-      f += result_[s].force_a;
-      t += result_[s].torque_a;
-    }
-    for (std::int64_t r = reverse_.offset[p]; r < reverse_.offset[p + 1]; ++r) {
-      const auto& res = result_[reverse_.slot[r]];
-      f -= res.force_a;
-      t += res.torque_b;
-    }
+    Vec2<Real> f;
+    Real t;
+    sum_pair_forces(p, pairs_.offset.data(), reverse_.offset.data(), reverse_.slot.data(),
+                    result_.data(), f, t);
     fx_[p] = f.x;
     fy_[p] = f.y;
     torque_[p] = t;
@@ -223,13 +218,9 @@ void CpuSolver<Real>::integrate() {
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);
     const physics::Pose<Real> p = advanced_pose(i);
-    throw RunError(fmt::format(
-        "blow-up at step {}: particle {} (at x={:g}, y={:g}) would reach speed {:g} m/s and "
-        "move more than half its size, or get a non-finite state, in one step; the time "
-        "step {:g} s is too large for the contacts it meets (reduce dt or the penalty, or "
-        "check for initially overlapping particles)",
-        step_ + 1, bad, static_cast<double>(x_[i]), static_cast<double>(y_[i]),
-        static_cast<double>(norm(p.v)), static_cast<double>(dt_)));
+    throw RunError(runaway_message(step_ + 1, bad, static_cast<double>(x_[i]),
+                                   static_cast<double>(y_[i]), static_cast<double>(norm(p.v)),
+                                   static_cast<double>(dt_)));
   }
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -7,6 +7,7 @@
 // twice (count, fill), so no two threads write the same memory and the result does not
 // depend on scheduling.
 #include "backends/cuda/grid_types.cuh"
+#include "broadphase/grid_rules.hpp"
 #include "broadphase/row_sort.hpp"
 
 #include <cstdint>
@@ -62,26 +63,19 @@ __global__ void grow_boxes_kernel(ParticleArrays<Real> p, const std::uint8_t* is
   }
 }
 
-/// The grid over the corners, by the CPU's rule: cells of the given size, grown while the
-/// grid would have more than `max_cells` cells (a particle thrown far away must not make
-/// it huge). Resets the bounds for the next build.
+/// The grid over the corners, by the CPU's rule (fit_grid). Resets the bounds for the next
+/// build.
 template <class Real>
 __global__ void grid_kernel(CornerBounds<Real>* b, Real base_cell, long long max_cells,
                             GridParams<Real>* grid) {
   using B = OrderedBits<Real>;
   const Real min_x = B::decode(b->min_x), min_y = B::decode(b->min_y);
   const Real max_x = B::decode(b->max_x), max_y = B::decode(b->max_y);
-  double cell = static_cast<double>(base_cell);
-  const double wx = static_cast<double>(max_x) - static_cast<double>(min_x);
-  const double wy = static_cast<double>(max_y) - static_cast<double>(min_y);
-  long long nx, ny;
-  for (;;) {
-    nx = static_cast<long long>(wx / cell) + 1;
-    ny = static_cast<long long>(wy / cell) + 1;
-    if (static_cast<double>(nx) * static_cast<double>(ny) <= static_cast<double>(max_cells)) break;
-    cell *= 1.5;
-  }
-  *grid = {min_x, min_y, static_cast<Real>(cell), static_cast<int>(nx), static_cast<int>(ny)};
+  const GridFit fit = fit_grid(static_cast<double>(max_x) - static_cast<double>(min_x),
+                               static_cast<double>(max_y) - static_cast<double>(min_y),
+                               static_cast<double>(base_cell), static_cast<double>(max_cells));
+  *grid = {min_x, min_y, static_cast<Real>(fit.cell), static_cast<int>(fit.nx),
+           static_cast<int>(fit.ny)};
   b->min_x = b->min_y = ~typename B::Bits(0);
   b->max_x = b->max_y = 0;
 }
@@ -98,11 +92,8 @@ __global__ void cell_key_kernel(CandidateSearch<Real> c, unsigned int beyond,
     return;
   }
   const GridParams<Real> g = *c.grid;
-  long long cx = static_cast<long long>((c.lo_x[i] - g.origin_x) / g.cell);
-  long long cy = static_cast<long long>((c.lo_y[i] - g.origin_y) / g.cell);
-  cx = cx < 0 ? 0 : (cx > g.nx - 1 ? g.nx - 1 : cx);
-  cy = cy < 0 ? 0 : (cy > g.ny - 1 ? g.ny - 1 : cy);
-  key[i] = static_cast<unsigned int>(cx + cy * g.nx);
+  key[i] = static_cast<unsigned int>(cell_coordinate(c.lo_x[i], g.origin_x, g.cell, std::int64_t{g.nx}) +
+                                     cell_coordinate(c.lo_y[i], g.origin_y, g.cell, std::int64_t{g.ny}) * g.nx);
 }
 
 /// First and one-past-last sorted position of every occupied cell (others stay empty).

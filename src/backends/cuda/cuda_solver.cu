@@ -3,6 +3,7 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/step_kernels.cuh"
 #include "broadphase/candidate_pairs.hpp"
+#include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 #include "tridem/error.hpp"
 
@@ -76,7 +77,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
       classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, reserve, stream_);
   status_.allocate(1);
   host_status_.allocate(1);
-  staging_.allocate(9 * n_);
+  staging_.allocate(kStateArrays * n_);
   update_geometry();
 }
 
@@ -234,9 +235,9 @@ template <class Real>
 void CudaSolver<Real>::report_runaway(int i) const {
   // The state on the GPU is still the last good one; redo the failed step of particle i on
   // the host, with the same physics, to say how fast it would have gone.
-  Real v[9];
-  const DeviceBuffer<Real>* arrays[9] = {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
-  for (int k = 0; k < 9; ++k)
+  Real v[kStateArrays];
+  const auto arrays = state_buffers();
+  for (int k = 0; k < kStateArrays; ++k)
     TRIDEM_CUDA_CHECK(cudaMemcpy(&v[k], arrays[k]->data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
   Real inv_mass, inv_inertia;
   TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_mass, inv_mass_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
@@ -244,16 +245,9 @@ void CudaSolver<Real>::report_runaway(int i) const {
   physics::Pose<Real> pose{{v[0], v[1]}, v[2], {v[3], v[4]}, v[5]};
   physics::advance_body(pose, true, Vec2<Real>{v[6], v[7]}, v[8], inv_mass, inv_inertia,
                         params_.gravity, params_.local_damping, params_.dt);
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "blow-up at step %lld: particle %d (at x=%g, y=%g) would reach speed %g m/s and "
-                "move more than half its size, or get a non-finite state, in one step; the time "
-                "step %g s is too large for the contacts it meets (reduce dt or the penalty, or "
-                "check for initially overlapping particles)",
-                static_cast<long long>(step_ + 1), i, static_cast<double>(v[0]),
-                static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
-                static_cast<double>(params_.dt));
-  throw RunError(text);
+  throw RunError(runaway_message(step_ + 1, i, static_cast<double>(v[0]),
+                                 static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
+                                 static_cast<double>(params_.dt)));
 }
 
 template <class Real>
@@ -265,17 +259,17 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
                                                            status_.data(), true);
     TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
   }
-  const DeviceBuffer<Real>* arrays[9] = {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
-  for (int k = 0; k < 9; ++k)
+  const auto arrays = state_buffers();
+  for (int k = 0; k < kStateArrays; ++k)
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(staging_.data() + k * n, arrays[k]->data(), n * sizeof(Real),
                                       cudaMemcpyDeviceToHost, stream_));
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   out.step = step_;
   out.time = time_;
   out.resize(n);
-  std::vector<double>* fields[9] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy,
+  std::vector<double>* fields[kStateArrays] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy,
                                     &out.omega, &out.fx, &out.fy, &out.torque};
-  for (int k = 0; k < 9; ++k) {
+  for (int k = 0; k < kStateArrays; ++k) {
     const Real* from = staging_.data() + k * n;
     std::vector<double>& to = *fields[k];
     for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<double>(from[i]);
@@ -294,7 +288,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   if (!with_contacts || step_ == 0) return;
   std::vector<int> offset, partner;
   std::vector<physics::PairForce<Real>> result;
-  pairs_->download(offset, partner, nullptr, &result);
+  pairs_->download(offset, partner, result);
   append_contacts(out, n, offset.data(), partner.data(), result.data());
 }
 

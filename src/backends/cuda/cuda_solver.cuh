@@ -12,6 +12,7 @@
 #include "core/time_step.hpp"
 #include "tridem/solver.hpp"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,6 +40,11 @@ class CudaSolver final : public Solver {
   ParticleArrays<Real> arrays() const;
   void update_geometry();
   [[noreturn]] void report_runaway(int particle) const;
+  /// What a snapshot copies back, in Snapshot's order: position, angle, velocities, forces.
+  static constexpr int kStateArrays = 9;
+  std::array<const DeviceBuffer<Real>*, kStateArrays> state_buffers() const {
+    return {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
+  }
 
   std::size_t n_;
   Method method_;
@@ -68,7 +74,7 @@ class CudaSolver final : public Solver {
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
-  mutable PinnedBuffer<Real> staging_;  ///< 9 arrays of n: the state a snapshot copies
+  mutable PinnedBuffer<Real> staging_;  ///< the state_buffers() a snapshot copies
 };
 
 }  // namespace tridem::cuda

@@ -4,6 +4,7 @@
 // thread per particle, in the CPU's fixed order, so that results do not depend on
 // scheduling), and the integration fused with the geometry of the new state.
 #include "backends/cuda/device_views.cuh"
+#include "broadphase/pair_sums.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 
@@ -49,24 +50,6 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   q.slip[s] = slip;
 }
 
-/// The total contact force and torque on particle i: its own pairs, then the pairs where
-/// it is the partner, each in ascending slot order (the CPU solver's order).
-template <class Real>
-__device__ inline void sum_pair_forces(const PairArrays<Real>& q, int i, Vec2<Real>& f,
-                                       Real& t) {
-  f = Vec2<Real>{};
-  t = Real(0);
-  for (int s = q.offset[i]; s < q.offset[i + 1]; ++s) {
-    f += q.result[s].force_a;
-    t += q.result[s].torque_a;
-  }
-  for (int r = q.reverse_offset[i]; r < q.reverse_offset[i + 1]; ++r) {
-    const physics::PairForce<Real>& res = q.result[q.reverse_slot[r]];
-    f -= res.force_a;
-    t += res.torque_b;
-  }
-}
-
 template <class Real>
 __device__ inline physics::Pose<Real> advanced_pose(const ParticleArrays<Real>& p,
                                                     const StepParams<Real>& sp, int i) {
@@ -86,7 +69,7 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
   if (i >= p.n || (p.free[i] != 0) == prescribed) return;
   Vec2<Real> f;
   Real t;
-  sum_pair_forces(q, i, f, t);
+  sum_pair_forces(i, q.offset, q.reverse_offset, q.reverse_slot, q.result, f, t);
   p.fx[i] = f.x;
   p.fy[i] = f.y;
   p.torque[i] = t;
