@@ -5,6 +5,7 @@
 #include "tridem/render.hpp"
 #include "tridem/run.hpp"
 #include "tridem/scene_io.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -56,6 +57,10 @@ int run(const RunArgs& args) {
   options.out_dir = args.out;
   if (args.backend) options.backend = parse_backend(*args.backend);
   options.steps = args.steps;
+  // main.cpp checked the spellings against the same tables.
+  if (args.method) options.method = value_in(kMethodNames, *args.method);
+  if (args.contact_test) options.contact_test = value_in(kContactTestNames, *args.contact_test);
+  if (args.no_bbox_prefilter) options.bbox_prefilter = false;
   options.force = args.force;
   options.threads = args.threads;
   options.progress = !args.quiet;
@@ -87,6 +92,12 @@ int info(const std::string& path) {
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
              backend_name(resolve_backend(sim.backend)),
              sim.precision == Precision::Float ? "float" : "double");
+  const bool paper = sim.method == Method::SingleDomain || sim.method == Method::Decomposition;
+  fmt::print("method       {}{}\n", method_name(sim.method),
+             paper ? fmt::format(" (contact test {}, bbox pre-filter {})",
+                                 contact_test_name(sim.contact_test),
+                                 sim.bbox_prefilter ? "on" : "off")
+                   : "");
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
   if (info.gpu_memory_bytes > 0)

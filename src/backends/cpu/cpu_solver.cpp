@@ -6,6 +6,7 @@
 
 #include "physics/integrate.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -92,7 +93,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
 template <class Real>
 std::string CpuSolver<Real>::description() const {
   const char* real = sizeof(Real) == 8 ? "double" : "float";
-  const char* method = method_ == Method::Grid ? "grid" : "all-pairs";
+  const std::string_view method = method_name(method_);
   if (parallel_)
     return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
   return fmt::format("cpu (serial), {}, {}", real, method);

@@ -6,6 +6,7 @@
 #include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <climits>
 #include <cstdio>
@@ -297,7 +298,7 @@ std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
-         (method_ == Method::Grid ? "grid" : "all-pairs") + skin;
+         std::string(method_name(method_)) + skin;
 }
 
 template <class Real>
