@@ -190,6 +190,16 @@ void Decomposition<Real>::assign(const DomainInput<Real>& in) {
 }
 
 template <class Real>
+std::string Decomposition<Real>::summary() const {
+  const DecompositionStats& s = stats_;
+  return fmt::format(
+      "decomposition: {} sub-domains in {} row{}, at most {} of {} particles staged in one; "
+      "{} migrations, {} overflows, {} border moves, {} rows re-cut in {} updates",
+      count(), rows(), rows() == 1 ? "" : "s", s.max_members, settings_.capacity, s.migrations,
+      s.overflows, s.border_moves, s.repartitions, s.updates);
+}
+
+template <class Real>
 int Decomposition<Real>::first_overflowing() const {
   for (int k = 0; k < count(); ++k)
     if (staged(k) > settings_.capacity) return k;

@@ -20,10 +20,11 @@
 // it; when neither can, the row's borders are computed anew. A column that alone exceeds
 // the capacity is an error that says what to change.
 #include "decomposition/domain_map.hpp"
-#include "decomposition/settings.hpp"
+#include "tridem/scene.hpp"
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace tridem {
@@ -74,6 +75,8 @@ class Decomposition {
   const std::vector<std::int32_t>& large() const { return large_; }
   int capacity() const { return settings_.capacity; }
   const DecompositionStats& stats() const { return stats_; }
+  /// One line for the run's summary: sub-domains, staging, migrations, border moves.
+  std::string summary() const;
 
  private:
   void compute_cells(const DomainInput<Real>& in);

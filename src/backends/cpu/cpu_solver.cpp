@@ -37,6 +37,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       n_materials_(static_cast<int>(scene.materials.size())),
       finder_(model.longest_edge, model.motion) {
   if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
+  if (method_ == Method::Decomposition)
+    decomposed_.emplace(scene.simulation, model.longest_edge, model.motion);
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].resize(n_);
     offset_y_[k].resize(n_);
@@ -100,6 +102,11 @@ std::string CpuSolver<Real>::description() const {
 }
 
 template <class Real>
+std::string CpuSolver<Real>::statistics() const {
+  return decomposed_ ? decomposed_->decomposition().summary() : std::string();
+}
+
+template <class Real>
 void CpuSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     update_geometry();
@@ -141,8 +148,15 @@ void CpuSolver<Real>::update_geometry() {
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
-  finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
-               pairs_);
+  if (decomposed_)
+    decomposed_->find({x_.data(), y_.data(), lo_x_.data(), lo_y_.data(), hi_x_.data(),
+                       hi_y_.data()},
+                      {{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
+                       {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()}},
+                      parallel_, pairs_);
+  else
+    finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
+                 pairs_);
   grow_to(slip_, pairs_.count());
   grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);

@@ -5,11 +5,13 @@
 // solver reproduces the serial one bit for bit; that is what the parity tests check.
 #include "broadphase/candidate_pairs.hpp"
 #include "core/particle_model.hpp"
+#include "decomposition/decomposed_pairs.hpp"
 #include "core/time_step.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "tridem/solver.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace tridem {
@@ -27,6 +29,7 @@ class CpuSolver final : public Solver {
   double dt() const override { return static_cast<double>(dt_); }
   std::size_t size() const override { return n_; }
   std::string description() const override;
+  std::string statistics() const override;
 
  private:
   void update_geometry();
@@ -62,6 +65,7 @@ class CpuSolver final : public Solver {
   std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   // Pairs of this step and the last, with their contact history.
   CandidatePairs<Real> finder_;
+  std::optional<DecomposedPairs<Real>> decomposed_;  ///< method = decomposition
   PairList pairs_, old_pairs_;
   std::vector<physics::PairSlip<Real>> slip_, old_slip_;
   std::vector<physics::PairForce<Real>> result_;

@@ -37,6 +37,9 @@ template <class Real>
 CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
                              const SolverConfig& config)
     : n_(model.size()), method_(config.method) {
+  if (method_ == Method::Decomposition)
+    throw RunError("method \"decomposition\" is not implemented on the cuda backend yet; use "
+                   "backend = \"cpu\" or \"openmp\"");
   std::string reason;
   if (!cuda_available(&reason))
     throw RunError("backend 'cuda' is not available: " + reason +
