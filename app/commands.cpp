@@ -92,12 +92,8 @@ int info(const std::string& path) {
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
              backend_name(resolve_backend(sim.backend)),
              sim.precision == Precision::Float ? "float" : "double");
-  const bool paper = sim.method == Method::SingleDomain || sim.method == Method::Decomposition;
-  fmt::print("method       {}{}\n", method_name(sim.method),
-             paper ? fmt::format(" (contact test {}, bbox pre-filter {})",
-                                 contact_test_name(sim.contact_test),
-                                 sim.bbox_prefilter ? "on" : "off")
-                   : "");
+  fmt::print("method       {}\n",
+             method_description(sim.method, sim.contact_test, sim.bbox_prefilter));
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
   if (info.gpu_memory_bytes > 0)

@@ -54,6 +54,16 @@ std::string spellings_of(const Table& table) {
 inline std::string_view method_name(Method m) { return name_in(kMethodNames, m); }
 inline std::string_view contact_test_name(ContactTest t) { return name_in(kContactTestNames, t); }
 
+/// The method with the settings that matter to it, for descriptions: "grid", or
+/// "single-domain (contact test exact, bbox pre-filter on)".
+inline std::string method_description(Method method, ContactTest test, bool bbox_prefilter) {
+  std::string out(method_name(method));
+  if (method == Method::SingleDomain || method == Method::Decomposition)
+    out += " (contact test " + std::string(contact_test_name(test)) + ", bbox pre-filter " +
+           (bbox_prefilter ? "on" : "off") + ")";
+  return out;
+}
+
 /// Why the contact test and pre-filter settings cannot go with `method`, or nothing when
 /// they can. They belong to the paper's methods; the others list every box-overlapping
 /// pair, and silently ignoring a direct-area test there would give other physics than

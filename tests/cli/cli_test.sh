@@ -61,6 +61,10 @@ grep -q "cpu (serial)" out.txt || fail "--backend cpu not used"
 # --method overrides the scene's; a method's settings are checked against the one run.
 expect_ok "$tridem" run pile.toml --quiet --out all_pairs --steps 5 --method all-pairs
 grep -q "all-pairs" out.txt || fail "--method all-pairs not used"
+expect_ok "$tridem" run pile.toml --quiet --out single --steps 5 --backend cpu --method single-domain \
+  --contact-test direct-area --no-bbox-prefilter
+grep -q "single-domain (contact test direct-area, bbox pre-filter off)" out.txt ||
+  fail "--method single-domain --contact-test direct-area --no-bbox-prefilter not used"
 expect_ok "$tridem" run pile.toml --quiet --out decomposition --steps 5 --method decomposition --backend cpu
 grep -q "decomposition: .* sub-domains" out.txt || fail "--method decomposition: no sub-domains in the summary"
 expect_error "contact_test" "$tridem" run pile.toml --quiet --steps 5 --contact-test direct-area

@@ -35,10 +35,13 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                static_cast<Real>(scene.simulation.gravity.y)},
       local_damping_(static_cast<Real>(scene.simulation.local_damping)),
       n_materials_(static_cast<int>(scene.materials.size())),
-      finder_(model.longest_edge, model.motion) {
+      finder_(model.longest_edge, model.motion),
+      filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
+      single_domain_(model.longest_edge, model.motion, filter_) {
   if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
   if (method_ == Method::Decomposition)
-    decomposed_.emplace(scene.simulation, model.longest_edge, model.motion);
+    decomposed_.emplace(scene.simulation.decomposition, model.longest_edge, model.motion,
+                        filter_);
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].resize(n_);
     offset_y_[k].resize(n_);
@@ -95,7 +98,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
 template <class Real>
 std::string CpuSolver<Real>::description() const {
   const char* real = sizeof(Real) == 8 ? "double" : "float";
-  const std::string_view method = method_name(method_);
+  const std::string method = method_description(method_, filter_.test, filter_.bbox_prefilter);
   if (parallel_)
     return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
   return fmt::format("cpu (serial), {}, {}", real, method);
@@ -148,15 +151,16 @@ void CpuSolver<Real>::update_geometry() {
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
-  if (decomposed_)
-    decomposed_->find({x_.data(), y_.data(), lo_x_.data(), lo_y_.data(), hi_x_.data(),
-                       hi_y_.data()},
-                      {{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
-                       {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()}},
-                      parallel_, pairs_);
+  const BoxArrays<Real> boxes{lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()};
+  const TriangleArrays<Real> geometry{{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
+                                      {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
+                                      boxes};
+  if (method_ == Method::SingleDomain)
+    single_domain_.find(geometry, parallel_, pairs_);
+  else if (decomposed_)
+    decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
   else
-    finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
-                 pairs_);
+    finder_.find(boxes, method_, parallel_, pairs_);
   grow_to(slip_, pairs_.count());
   grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);

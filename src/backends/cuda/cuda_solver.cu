@@ -47,6 +47,9 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   if (n_ > static_cast<std::size_t>(INT_MAX / 8))
     throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
                    " particles on one GPU");
+  if (method_ == Method::SingleDomain)
+    throw SceneError("method \"single-domain\" is not implemented on the cuda backend yet; "
+                     "use backend = \"cpu\" or \"openmp\"");
   cudaDeviceProp prop{};
   TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
   device_name_ = prop.name;

@@ -1,0 +1,73 @@
+#pragma once
+// The paper's single-domain contact detection (its single-core baseline, §4): every pair
+// is tested, with the bounding-box pre-filter if asked, then the contact test; only the
+// pairs that pass go into the pair list, in rows by emitter (contact_filter.hpp's rule,
+// the grid's), partners ascending. O(n²) work per step, by design: it is the reference the
+// paper's GPU kernel and sub-domains are measured against.
+#include "broadphase/candidate_pairs.hpp"
+#include "broadphase/contact_filter.hpp"
+#include "broadphase/pair_list.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tridem {
+
+/// The geometry a contact test reads: vertices (counter-clockwise) and bounding boxes.
+template <class Real>
+struct TriangleArrays {
+  const Real* x[3];
+  const Real* y[3];
+  BoxArrays<Real> box;
+
+  physics::Triangle<Real> triangle(std::int32_t i) const {
+    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
+  }
+  physics::Aabb<Real> aabb(std::int32_t i) const {
+    return {{box.lo_x[i], box.lo_y[i]}, {box.hi_x[i], box.hi_y[i]}};
+  }
+};
+
+/// Whether emitter i lists the pair {i, j}: the emitter rule, then the contact test. One
+/// per emitter, built once with i's triangle and box (single-domain and decomposition).
+template <class Real>
+class EmitterTest {
+ public:
+  EmitterTest(const TriangleArrays<Real>& g, std::int32_t i, const std::uint8_t* small,
+              const std::uint8_t* free, ContactFilter filter)
+      : g_(g), i_(i), a_(g.triangle(i)), box_a_(g.aabb(i)), small_(small), free_(free),
+        filter_(filter) {}
+
+  bool operator()(std::int32_t j) const {
+    return emits_pair(i_, j, small_[i_] != 0, small_[j] != 0, free_[i_] != 0, free_[j] != 0) &&
+           passes_contact_test(a_, box_a_, g_.triangle(j), g_.aabb(j), filter_);
+  }
+
+ private:
+  const TriangleArrays<Real>& g_;
+  std::int32_t i_;
+  physics::Triangle<Real> a_;
+  physics::Aabb<Real> box_a_;
+  const std::uint8_t* small_;
+  const std::uint8_t* free_;
+  ContactFilter filter_;
+};
+
+template <class Real>
+class SingleDomainPairs {
+ public:
+  /// `longest_edge` and `motion` are per particle; they fix which particles emit.
+  SingleDomainPairs(const std::vector<double>& longest_edge, const std::vector<Motion>& motion,
+                    ContactFilter filter);
+
+  /// Fills `pairs` with the pairs that pass the test. `parallel` runs it with OpenMP.
+  void find(const TriangleArrays<Real>& geometry, bool parallel, PairList& pairs);
+
+ private:
+  std::vector<std::uint8_t> small_, free_;
+  std::vector<std::int32_t> large_;  ///< ascending
+  ContactFilter filter_;
+  std::vector<std::int64_t> row_count_;
+};
+
+}  // namespace tridem
