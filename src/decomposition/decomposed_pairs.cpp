@@ -21,7 +21,7 @@ DecomposedPairs<Real>::DecomposedPairs(const DecompositionSettings& settings,
 
 template <class Real>
 template <class Emit>
-void DecomposedPairs<Real>::visit_pairs(std::int32_t i, std::span<const std::int32_t> staged,
+void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
                                         const TriangleArrays<Real>& g, Emit&& emit) const {
   const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_);
   auto consider = [&](std::int32_t j) {

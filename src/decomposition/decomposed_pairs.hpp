@@ -30,7 +30,7 @@ class DecomposedPairs {
 
  private:
   template <class Emit>
-  void visit_pairs(std::int32_t i, std::span<const std::int32_t> staged,
+  void visit_pairs(std::int32_t i, ParticleRange staged,
                    const TriangleArrays<Real>& g, Emit&& emit) const;
 
   ContactFilter filter_;

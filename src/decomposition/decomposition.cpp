@@ -69,12 +69,12 @@ DomainMap Decomposition<Real>::map() const {
 }
 
 template <class Real>
-std::span<const std::int32_t> Decomposition<Real>::owned(int k) const {
+ParticleRange Decomposition<Real>::owned(int k) const {
   return {owned_.data() + owned_offset_[k], owned_.data() + owned_offset_[k + 1]};
 }
 
 template <class Real>
-std::span<const std::int32_t> Decomposition<Real>::members(int k) const {
+ParticleRange Decomposition<Real>::members(int k) const {
   return {members_.data() + member_offset_[k], members_.data() + member_offset_[k + 1]};
 }
 

@@ -23,7 +23,6 @@
 #include "tridem/scene.hpp"
 
 #include <cstdint>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -34,6 +33,16 @@ template <class Real>
 struct DomainInput {
   const Real *x, *y;
   const Real *lo_x, *lo_y, *hi_x, *hi_y;
+};
+
+/// The particles of one sub-domain, ascending (a span; this header is also compiled as
+/// C++17 by nvcc).
+struct ParticleRange {
+  const std::int32_t* first;
+  const std::int32_t* last;
+  const std::int32_t* begin() const { return first; }
+  const std::int32_t* end() const { return last; }
+  std::size_t size() const { return static_cast<std::size_t>(last - first); }
 };
 
 /// What the decomposition did so far, for the solver's statistics.
@@ -66,11 +75,13 @@ class Decomposition {
   /// Sub-domain owning particle p, or -1 for particles larger than L.
   int owner(std::size_t p) const { return owner_[p]; }
   /// Particles owned by / staged by sub-domain k, ascending.
-  std::span<const std::int32_t> owned(int k) const;
-  std::span<const std::int32_t> members(int k) const;
+  ParticleRange owned(int k) const;
+  ParticleRange members(int k) const;
   /// The same for every sub-domain at once, in compressed rows (count() + 1 offsets).
   const std::vector<std::int32_t>& member_offset() const { return member_offset_; }
   const std::vector<std::int32_t>& member_list() const { return members_; }
+  const std::vector<std::int32_t>& owned_offset() const { return owned_offset_; }
+  const std::vector<std::int32_t>& owned_list() const { return owned_; }
   const std::vector<std::int32_t>& owners() const { return owner_; }
   const std::vector<std::int32_t>& large() const { return large_; }
   int capacity() const { return settings_.capacity; }

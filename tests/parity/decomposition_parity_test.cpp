@@ -14,12 +14,6 @@
 namespace tridem {
 namespace {
 
-Scene with_decomposition(Scene s, DecompositionLayout layout, int capacity, int rows = 0,
-                         int columns = 0) {
-  s.simulation.decomposition = {layout, rows, columns, capacity};
-  return s;
-}
-
 struct RunResult {
   Snapshot snap;
   std::string statistics;
@@ -49,17 +43,17 @@ void expect_same_as_grid(const Scene& s, std::int64_t steps, const char* what) {
 }
 
 TEST(DecompositionParity, StripsReproduceGridBitForBit) {
-  expect_same_as_grid(with_decomposition(test::jostling_pile(40, 4), DecompositionLayout::Strips, 24),
+  expect_same_as_grid(test::with_decomposition(test::jostling_pile(40, 4), DecompositionLayout::Strips, 24),
                       300, "1d, capacity 24");
-  expect_same_as_grid(with_decomposition(test::jostling_pile(30, 5, 9), DecompositionLayout::Strips, 32),
+  expect_same_as_grid(test::with_decomposition(test::jostling_pile(30, 5, 9), DecompositionLayout::Strips, 32),
                       300, "1d, capacity 32");
 }
 
 TEST(DecompositionParity, RowsAndColumnsReproduceGridBitForBit) {
-  expect_same_as_grid(with_decomposition(test::jostling_pile(20, 12), DecompositionLayout::Grid, 24),
+  expect_same_as_grid(test::with_decomposition(test::jostling_pile(20, 12), DecompositionLayout::Grid, 24),
                       300, "2d automatic, capacity 24");
   expect_same_as_grid(
-      with_decomposition(test::jostling_pile(20, 12, 6), DecompositionLayout::Grid, 32, 3, 4),
+      test::with_decomposition(test::jostling_pile(20, 12, 6), DecompositionLayout::Grid, 32, 3, 4),
       300, "2d 3 x 4, capacity 32");
 }
 
@@ -69,12 +63,12 @@ TEST(DecompositionParity, ExampleScenesReproduceGridBitForBit) {
     Scene s = read_scene(std::string(TRIDEM_SOURCE_DIR) + "/examples/" + name + ".toml");
     for (TriangleSpec& t : s.triangles)
       if (t.motion == Motion::Free) t.velocity.y -= 3;
-    expect_same_as_grid(with_decomposition(s, DecompositionLayout::Grid, 48), 4000, name);
+    expect_same_as_grid(test::with_decomposition(s, DecompositionLayout::Grid, 48), 4000, name);
   }
 }
 
 TEST(DecompositionParity, FloatReproducesFloatGridBitForBit) {
-  const Scene s = with_decomposition(test::jostling_pile(20, 6), DecompositionLayout::Grid, 24);
+  const Scene s = test::with_decomposition(test::jostling_pile(20, 6), DecompositionLayout::Grid, 24);
   test::expect_identical(run(s, Backend::Cpu, Method::Grid, 200, Precision::Float).snap,
                          run(s, Backend::Cpu, Method::Decomposition, 200, Precision::Float).snap);
 }
@@ -82,7 +76,7 @@ TEST(DecompositionParity, FloatReproducesFloatGridBitForBit) {
 TEST(DecompositionParity, OpenMPReproducesSerialBitForBit) {
   const int saved = omp_get_max_threads();
   for (const auto layout : {DecompositionLayout::Strips, DecompositionLayout::Grid}) {
-    const Scene s = with_decomposition(test::jostling_pile(40, 5), layout, 32);
+    const Scene s = test::with_decomposition(test::jostling_pile(40, 5), layout, 32);
     const RunResult serial = run(s, Backend::Cpu, Method::Decomposition, 300);
     for (int threads : {2, 3, 4}) {
       omp_set_num_threads(threads);
@@ -95,7 +89,7 @@ TEST(DecompositionParity, OpenMPReproducesSerialBitForBit) {
 }
 
 TEST(DecompositionParity, WithoutPrefilterTheSamePairsAreFound) {
-  Scene s = with_decomposition(test::jostling_pile(20, 6), DecompositionLayout::Strips, 48);
+  Scene s = test::with_decomposition(test::jostling_pile(20, 6), DecompositionLayout::Strips, 48);
   const RunResult with = run(s, Backend::Cpu, Method::Decomposition, 200);
   s.simulation.bbox_prefilter = false;
   test::expect_identical(with.snap, run(s, Backend::Cpu, Method::Decomposition, 200).snap);

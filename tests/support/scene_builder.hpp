@@ -73,6 +73,13 @@ inline Scene jostling_pile(int columns, int rows, unsigned seed = 5) {
   return s;
 }
 
+/// The scene with [simulation.decomposition] set (used when the method is decomposition).
+inline Scene with_decomposition(Scene s, DecompositionLayout layout, int capacity, int rows = 0,
+                                int columns = 0) {
+  s.simulation.decomposition = {layout, rows, columns, capacity};
+  return s;
+}
+
 /// A solver for the scene, advanced `steps` steps.
 inline std::unique_ptr<Solver> advanced_solver(const Scene& scene, Backend backend,
                                                std::int64_t steps,

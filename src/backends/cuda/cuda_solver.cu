@@ -37,9 +37,6 @@ template <class Real>
 CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
                              const SolverConfig& config)
     : n_(model.size()), method_(config.method) {
-  if (method_ == Method::Decomposition)
-    throw RunError("method \"decomposition\" is not implemented on the cuda backend yet; use "
-                   "backend = \"cpu\" or \"openmp\"");
   std::string reason;
   if (!cuda_available(&reason))
     throw RunError("backend 'cuda' is not available: " + reason +
@@ -82,6 +79,8 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
   pairs_ = std::make_unique<PairListBuilder<Real>>(
       classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, reserve, stream_);
+  if (method_ == Method::Decomposition)
+    decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(1);
   host_status_.allocate(1);
   staging_.allocate(kStateArrays * n_);
@@ -212,7 +211,9 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
   StepStatus* status = status_.data();
   StepStatus* host = host_status_.data();
   for (std::int64_t s = 0; s < steps; ++s) {
-    if (rebuild_) {
+    if (decomposed_) {
+      decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
+    } else if (rebuild_) {
       pairs_->rebuild(p, margin_);
       rebuild_ = false;
     }
@@ -313,6 +314,7 @@ std::string CudaSolver<Real>::statistics() const {
   std::snprintf(text, sizeof text, "pair list built %lld times in %lld steps; %d pairs (room for %zu)",
                 static_cast<long long>(pairs_->builds()), static_cast<long long>(step_),
                 pairs_->count(), pairs_->capacity());
+  if (decomposed_) return std::string(text) + "; " + decomposed_->decomposition().summary();
   return text;
 }
 

@@ -145,6 +145,14 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) 
   }
   count_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, row_count_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("count_rows_kernel");
+  place_rows();
+  fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, targets());
+  TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
+  index_rows();
+}
+
+template <class Real>
+void PairListBuilder<Real>::place_rows() {
   offset_.swap(old_offset_);
   partner_.swap(old_partner_);
   slip_.swap(old_slip_);
@@ -160,11 +168,17 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) 
   if (static_cast<std::size_t>(count_) > partner_.size() ||
       static_cast<std::size_t>(count_) > slip_.size())
     reserve_pairs(static_cast<std::size_t>(count_) + static_cast<std::size_t>(count_) / 5 + 1024);
-  fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
-      c, offset_.data(), partner_.data(), emitter_.data(), slot_id_.data(), slip_.data(),
-      old_offset_.data(), old_partner_.data(), old_slip_.data());
-  TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
-  bytes = temp_.size();
+}
+
+template <class Real>
+RowTargets<Real> PairListBuilder<Real>::targets() const {
+  return {offset_.data(),     partner_.data(),     emitter_.data(), slot_id_.data(),
+          slip_.data(),       old_offset_.data(),  old_partner_.data(), old_slip_.data()};
+}
+
+template <class Real>
+void PairListBuilder<Real>::index_rows() {
+  std::size_t bytes = temp_.size();
   TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
       temp_.data(), bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
       reverse_slot_.data(), count_, 0, particle_bits_, stream_));

@@ -6,6 +6,7 @@
 // overlap.
 #include "backends/cuda/grid_types.cuh"
 #include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/row_fill.cuh"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -23,6 +24,15 @@ class PairListBuilder {
   /// A new list for the current boxes, grown by `margin`; carries the contact history
   /// of the old list over. Synchronises once, to learn the number of pairs.
   void rebuild(const ParticleArrays<Real>& p, Real margin);
+
+  /// The steps of a build, for a method with kernels of its own (the decomposition):
+  /// write every particle's row length into row_count() (n entries, zero for particles
+  /// that emit nothing), call place_rows() (offsets; synchronises once, to learn the
+  /// number of pairs), fill the rows through targets() (finish_row), then index_rows().
+  int* row_count() const { return row_count_.data(); }
+  void place_rows();
+  RowTargets<Real> targets() const;
+  void index_rows();
 
   PairArrays<Real> arrays() const;
   int count() const { return count_; }
