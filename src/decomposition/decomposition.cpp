@@ -19,14 +19,6 @@ Hull<Real> empty_hull() {
           std::numeric_limits<Real>::lowest(), std::numeric_limits<Real>::lowest()};
 }
 
-template <class Real>
-void extend(Hull<Real>& h, const DomainInput<Real>& in, std::size_t p) {
-  h.lo_x = std::min(h.lo_x, in.lo_x[p]);
-  h.lo_y = std::min(h.lo_y, in.lo_y[p]);
-  h.hi_x = std::max(h.hi_x, in.hi_x[p]);
-  h.hi_y = std::max(h.hi_y, in.hi_y[p]);
-}
-
 /// Rows of a 2D layout when the scene leaves them to us: the sub-domains as square as the
 /// extent allows, about twice as many as the particles need at full capacity (the bands
 /// take room too). The paper sets its DLy by hand.
@@ -79,7 +71,8 @@ ParticleRange Decomposition<Real>::members(int k) const {
 }
 
 template <class Real>
-void Decomposition<Real>::update(const DomainInput<Real>& in) {
+void Decomposition<Real>::update(const DomainInput<Real>& in, bool parallel) {
+  parallel_ = parallel;
   if (started_) compute_cells(in);
   else initial_partition(in);
   assign(in);
@@ -98,6 +91,7 @@ void Decomposition<Real>::update(const DomainInput<Real>& in) {
     if (move_border(k, in)) {
       ++stats_.border_moves;
     } else {
+      index_rows();
       partition_row(row_of_domain(k), in);
       ++stats_.repartitions;
     }
@@ -110,7 +104,9 @@ void Decomposition<Real>::update(const DomainInput<Real>& in) {
 
 template <class Real>
 void Decomposition<Real>::compute_cells(const DomainInput<Real>& in) {
-  for (std::size_t p = 0; p < n_; ++p) {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t p = 0; p < n; ++p) {
     if (!small_[p]) continue;
     cell_col_[p] = decomposition_cell(static_cast<double>(in.x[p]), origin_x_, cell_);
     cell_row_[p] = decomposition_cell(static_cast<double>(in.y[p]), origin_y_, cell_);
@@ -149,44 +145,103 @@ void Decomposition<Real>::initial_partition(const DomainInput<Real>& in) {
   row_first_.resize(static_cast<std::size_t>(rows) + 1);
   std::iota(row_first_.begin(), row_first_.end(), 0);
   col_begin_.assign(static_cast<std::size_t>(rows), kOpenBorder);
+  index_rows();
   for (int r = 0; r < rows; ++r) partition_row(r, in);
 }
 
 template <class Real>
 void Decomposition<Real>::assign(const DomainInput<Real>& in) {
   const DomainMap m = map();
-  const auto k_count = static_cast<std::size_t>(count());
-  owned_offset_.assign(k_count + 1, 0);
-  member_offset_.assign(k_count + 1, 0);
-  hull_.assign(k_count, empty_hull<Real>());
-  for (std::size_t p = 0; p < n_; ++p) {
-    if (!small_[p]) continue;
-    const int k = m.owner(cell_row_[p], cell_col_[p]);
-    owner_[p] = k;
-    ++owned_offset_[k + 1];
-    extend(hull_[k], in, p);
-  }
+  const int domains = count();
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t p = 0; p < n; ++p)
+    if (small_[p]) owner_[p] = m.owner(cell_row_[p], cell_col_[p]);
+  // Owned lists: a counting sort by owner, ascending particles within each.
+  owned_offset_.assign(static_cast<std::size_t>(domains) + 1, 0);
+  for (std::int64_t p = 0; p < n; ++p)
+    if (small_[p]) ++owned_offset_[owner_[p] + 1];
   std::partial_sum(owned_offset_.begin(), owned_offset_.end(), owned_offset_.begin());
   owned_.resize(static_cast<std::size_t>(owned_offset_.back()));
-  std::vector<std::int32_t>& cursor = cursor_;
-  cursor.assign(owned_offset_.begin(), owned_offset_.end() - 1);
-  for (std::size_t p = 0; p < n_; ++p)
-    if (small_[p]) owned_[cursor[owner_[p]]++] = static_cast<std::int32_t>(p);
-  // Overlap bands: every small particle whose box reaches a hull, counted then listed, in
-  // ascending particle order within each sub-domain.
-  auto visit_reached = [&](std::size_t p, auto&& reached) {
-    m.visit_near(cell_row_[p], cell_col_[p], [&](int k) {
-      if (box_reaches(in.lo_x[p], in.lo_y[p], in.hi_x[p], in.hi_y[p], hull_[k])) reached(k);
+  cursor_.assign(owned_offset_.begin(), owned_offset_.end() - 1);
+  for (std::int64_t p = 0; p < n; ++p)
+    if (small_[p]) owned_[cursor_[owner_[p]]++] = static_cast<std::int32_t>(p);
+  // The boxes in owned order: the scans below then read memory in sequence.
+  const auto owned_count = static_cast<std::int64_t>(owned_.size());
+  owned_box_.resize(owned_.size());
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t o = 0; o < owned_count; ++o) {
+    const std::int32_t p = owned_[o];
+    owned_box_[o] = {in.lo_x[p], in.lo_y[p], in.hi_x[p], in.hi_y[p]};
+  }
+  hull_.resize(static_cast<std::size_t>(domains));
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (int k = 0; k < domains; ++k) {
+    Hull<Real> h = empty_hull<Real>();
+    for (auto o = owned_offset_[k]; o < owned_offset_[k + 1]; ++o) {
+      const Hull<Real>& b = owned_box_[o];
+      h = {std::min(h.lo_x, b.lo_x), std::min(h.lo_y, b.lo_y), std::max(h.hi_x, b.hi_x),
+           std::max(h.hi_y, b.hi_y)};
+    }
+    hull_[k] = h;
+  }
+  // Overlap bands: the particles whose boxes reach the hull, looked for among those owned
+  // by the sub-domains near this one (kReachCells), each sub-domain on its own.
+  if (staged_.size() < static_cast<std::size_t>(domains))
+    staged_.resize(static_cast<std::size_t>(domains));
+#pragma omp parallel for schedule(dynamic, 8) if (parallel_)
+  for (int k = 0; k < domains; ++k) {
+    std::vector<std::int32_t>& staged = staged_[k];
+    staged.clear();
+    if (owned_offset_[k] == owned_offset_[k + 1]) continue;  // empty hull: stages nothing
+    const Hull<Real>& h = hull_[k];
+    visit_neighbours(k, [&](int q) {
+      for (auto o = owned_offset_[q]; o < owned_offset_[q + 1]; ++o) {
+        const Hull<Real>& b = owned_box_[o];
+        if (box_reaches(b.lo_x, b.lo_y, b.hi_x, b.hi_y, h)) staged.push_back(owned_[o]);
+      }
     });
-  };
-  for (std::size_t p = 0; p < n_; ++p)
-    if (small_[p]) visit_reached(p, [&](int k) { ++member_offset_[k + 1]; });
-  std::partial_sum(member_offset_.begin(), member_offset_.end(), member_offset_.begin());
+    std::sort(staged.begin(), staged.end());
+  }
+  member_offset_.resize(static_cast<std::size_t>(domains) + 1);
+  member_offset_[0] = 0;
+  for (int k = 0; k < domains; ++k)
+    member_offset_[k + 1] = member_offset_[k] + static_cast<std::int32_t>(staged_[k].size());
   members_.resize(static_cast<std::size_t>(member_offset_.back()));
-  cursor.assign(member_offset_.begin(), member_offset_.end() - 1);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (int k = 0; k < domains; ++k)
+    std::copy(staged_[k].begin(), staged_[k].end(), members_.begin() + member_offset_[k]);
+}
+
+template <class Real>
+template <class Visit>
+void Decomposition<Real>::visit_neighbours(int k, Visit&& visit) const {
+  // Cells of sub-domain k, widened by kReachCells; the open ends stay open.
+  auto below = [](std::int64_t c) { return c == kOpenBorder ? c : c - kReachCells; };
+  auto above = [](std::int64_t c) { return c == kOpenEnd ? c : c + kReachCells; };
+  const DomainMap m = map();
+  const int r = row_of_domain(k);
+  const std::int64_t row_hi = r + 1 < rows() ? row_begin_[r + 1] - 1 : kOpenEnd;
+  const std::int64_t col_hi = k + 1 < row_first_[r + 1] ? col_begin_[k + 1] - 1 : kOpenEnd;
+  const int r_end = m.row_of(above(row_hi));
+  for (int rr = m.row_of(below(row_begin_[r])); rr <= r_end; ++rr) {
+    const int q_end = m.in_row(rr, above(col_hi));
+    for (int q = m.in_row(rr, below(col_begin_[k])); q <= q_end; ++q) visit(q);
+  }
+}
+
+template <class Real>
+void Decomposition<Real>::index_rows() {
+  const DomainMap m = map();
+  const int row_count = rows();
+  by_row_offset_.assign(static_cast<std::size_t>(row_count) + 1, 0);
   for (std::size_t p = 0; p < n_; ++p)
-    if (small_[p])
-      visit_reached(p, [&](int k) { members_[cursor[k]++] = static_cast<std::int32_t>(p); });
+    if (small_[p]) ++by_row_offset_[m.row_of(cell_row_[p]) + 1];
+  std::partial_sum(by_row_offset_.begin(), by_row_offset_.end(), by_row_offset_.begin());
+  by_row_.resize(static_cast<std::size_t>(by_row_offset_.back()));
+  cursor_.assign(by_row_offset_.begin(), by_row_offset_.end() - 1);
+  for (std::size_t p = 0; p < n_; ++p)
+    if (small_[p]) by_row_[cursor_[m.row_of(cell_row_[p])]++] = static_cast<std::int32_t>(p);
 }
 
 template <class Real>
@@ -248,13 +303,10 @@ bool Decomposition<Real>::move_border(int k, const DomainInput<Real>& in) {
 
 template <class Real>
 void Decomposition<Real>::partition_row(int r, const DomainInput<Real>& in) {
-  const DomainMap m = map();
   std::vector<std::int32_t>& ps = row_particles_;
-  ps.clear();
+  ps.assign(by_row_.begin() + by_row_offset_[r], by_row_.begin() + by_row_offset_[r + 1]);
   Real y_lo = std::numeric_limits<Real>::max(), y_hi = std::numeric_limits<Real>::lowest();
-  for (std::size_t p = 0; p < n_; ++p) {
-    if (!small_[p] || m.row_of(cell_row_[p]) != r) continue;
-    ps.push_back(static_cast<std::int32_t>(p));
+  for (const std::int32_t p : ps) {
     y_lo = std::min(y_lo, in.lo_y[p]);
     y_hi = std::max(y_hi, in.hi_y[p]);
   }
@@ -274,13 +326,21 @@ void Decomposition<Real>::partition_row(int r, const DomainInput<Real>& in) {
       columns.lo_x.back() = std::min(columns.lo_x.back(), in.lo_x[p]);
       columns.hi_x.back() = std::max(columns.hi_x.back(), in.hi_x[p]);
     }
-    // Every box that reaches the row's y-extent may join a band of the row.
+    // Every box that reaches the row's y-extent may join a band of the row; such a box
+    // has its centroid within kReachCells of the row's cells.
     BandCounter<Real> band;
-    for (std::size_t p = 0; p < n_; ++p) {
-      if (!small_[p] || in.lo_y[p] > y_hi || in.hi_y[p] < y_lo) continue;
-      band.lo.push_back(in.lo_x[p]);
-      band.hi.push_back(in.hi_x[p]);
-    }
+    const DomainMap m = map();
+    const std::int64_t lo_row = row_begin_[r] == kOpenBorder ? kOpenBorder
+                                                              : row_begin_[r] - kReachCells;
+    const std::int64_t hi_row =
+        r + 1 < rows() ? row_begin_[r + 1] - 1 + kReachCells : kOpenEnd;
+    for (int rr = m.row_of(lo_row); rr <= m.row_of(hi_row); ++rr)
+      for (auto at = by_row_offset_[rr]; at < by_row_offset_[rr + 1]; ++at) {
+        const std::int32_t p = by_row_[at];
+        if (in.lo_y[p] > y_hi || in.hi_y[p] < y_lo) continue;
+        band.lo.push_back(in.lo_x[p]);
+        band.hi.push_back(in.hi_x[p]);
+      }
     std::sort(band.lo.begin(), band.lo.end());
     std::sort(band.hi.begin(), band.hi.end());
     cut = cut_row(columns, band, settings_.columns, settings_.capacity);

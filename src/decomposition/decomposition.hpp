@@ -66,7 +66,8 @@ class Decomposition {
   /// Assigns owners and overlap bands for the current step; the first call computes the
   /// borders, later ones move them when a sub-domain overflows. Throws RunError when some
   /// cell column cannot fit in one sub-domain.
-  void update(const DomainInput<Real>& in);
+  /// `parallel` runs it with OpenMP; the result is the same.
+  void update(const DomainInput<Real>& in, bool parallel = false);
 
   int count() const { return static_cast<int>(col_begin_.size()); }
   int rows() const { return static_cast<int>(row_begin_.size()); }
@@ -96,6 +97,11 @@ class Decomposition {
   int first_overflowing() const;
   bool move_border(int k, const DomainInput<Real>& in);
   void partition_row(int row, const DomainInput<Real>& in);
+  void index_rows();
+  /// Calls visit(q) for every sub-domain owning a cell within kReachCells of k's cells:
+  /// the only ones whose particles can reach k's hull.
+  template <class Visit>
+  void visit_neighbours(int k, Visit&& visit) const;
   int row_of_domain(int k) const;
   int staged(int k) const { return member_offset_[k + 1] - member_offset_[k]; }
 
@@ -105,6 +111,7 @@ class Decomposition {
   std::vector<std::uint8_t> small_;
   std::vector<std::int32_t> large_;
   bool started_ = false;
+  bool parallel_ = false;
   double origin_x_ = 0, origin_y_ = 0;
 
   // Borders (see DomainMap).
@@ -117,8 +124,11 @@ class Decomposition {
   // Per sub-domain, this step.
   std::vector<std::int32_t> owned_offset_, owned_, member_offset_, members_;
   std::vector<Hull<Real>> hull_;
+  std::vector<Hull<Real>> owned_box_;  ///< box of each owned_ entry, in that order
   // Scratch, kept to its high-water mark.
   std::vector<std::int32_t> cursor_, row_particles_;
+  std::vector<std::vector<std::int32_t>> staged_;       ///< members, per sub-domain
+  std::vector<std::int32_t> by_row_, by_row_offset_;    ///< particles by row (cutting)
 
   DecompositionStats stats_;
 };

@@ -16,6 +16,8 @@ namespace tridem {
 
 /// Start of the first row / sub-domain of a row: below every cell.
 constexpr std::int64_t kOpenBorder = INT64_MIN;
+/// End of the last row / sub-domain of a row: above every cell.
+constexpr std::int64_t kOpenEnd = INT64_MAX;
 
 /// Cell index of coordinate v: floor((v - origin) / cell), computed in double so that
 /// every backend and precision finds the same cell. Clamped well inside int64 (a NaN gives

@@ -106,7 +106,10 @@ TEST_P(DecompositionBookkeeping, MigrationKeepsEveryPairAndMovesBorders) {
   const LayoutCase lc = GetParam();
   TriangleCloud c = test::random_cloud(500, 3.0, 1.0, 0.05, 7);
   Decomposition<double> d = make(c, lc.layout, lc.capacity, lc.rows, lc.columns);
+  // The same with OpenMP: every list and count must be the serial one.
+  Decomposition<double> threaded = make(c, lc.layout, lc.capacity, lc.rows, lc.columns);
   d.update(c.input());
+  threaded.update(c.input(), true);
   const GridClasses classes = classify_for_grid(c.longest_edge, c.motion);
   // Particles drift and gather towards x = 1.5: sub-domains there fill up.
   for (int step = 0; step < 40; ++step) {
@@ -114,7 +117,11 @@ TEST_P(DecompositionBookkeeping, MigrationKeepsEveryPairAndMovesBorders) {
       if (classes.small[p] && c.motion[p] == Motion::Free)
         c.shift(p, {0.005 * (1.5 - c.x[p]), 0.003 * std::sin(3.0 * c.x[p] + step)});
     d.update(c.input());
+    threaded.update(c.input(), true);
     expect_consistent(d, c);
+    EXPECT_EQ(d.member_offset(), threaded.member_offset());
+    EXPECT_EQ(d.member_list(), threaded.member_list());
+    EXPECT_EQ(d.summary(), threaded.summary());
     if (testing::Test::HasFailure()) return;
   }
   const DecompositionStats& s = d.stats();
