@@ -24,10 +24,10 @@ void SingleDomainPairs<Real>::find(const TriangleArrays<Real>& g, bool parallel,
   fill_rows(free_.size(), parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
     if (!small_[i]) return;  // large particles are reached from the small ones
     const physics::Triangle<Real> a = g.triangle(i);
-    const physics::Aabb<Real> box_a = g.aabb(i);
+    const physics::Aabb<Real> box_a = g.box(i);
     auto consider = [&](std::int32_t j) {
       if (emits_pair(i, j, true, small_[j] != 0, free_[i] != 0, free_[j] != 0) &&
-          passes_contact_test(a, box_a, g.triangle(j), g.aabb(j), filter_))
+          passes_contact_test(a, box_a, g.triangle(j), g.box(j), filter_))
         emit(j);
     };
     // Partners ascending: the walls below i, then every particle above it.

@@ -13,21 +13,6 @@
 
 namespace tridem {
 
-/// The geometry a contact test reads: vertices (counter-clockwise) and bounding boxes.
-template <class Real>
-struct TriangleArrays {
-  const Real* x[3];
-  const Real* y[3];
-  BoxArrays<Real> box;
-
-  physics::Triangle<Real> triangle(std::int32_t i) const {
-    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
-  }
-  physics::Aabb<Real> aabb(std::int32_t i) const {
-    return {{box.lo_x[i], box.lo_y[i]}, {box.hi_x[i], box.hi_y[i]}};
-  }
-};
-
 template <class Real>
 class SingleDomainPairs {
  public:
