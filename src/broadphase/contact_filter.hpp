@@ -15,6 +15,22 @@ struct ContactFilter {
   bool bbox_prefilter = true;
 };
 
+/// The geometry a contact test reads, structure of arrays: vertices (counter-clockwise)
+/// and bounding boxes of the current step.
+template <class Real>
+struct TriangleArrays {
+  const Real* x[3];
+  const Real* y[3];
+  const Real *lo_x, *lo_y, *hi_x, *hi_y;
+
+  TRIDEM_HD physics::Triangle<Real> triangle(int i) const {
+    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
+  }
+  TRIDEM_HD physics::Aabb<Real> box(int i) const {
+    return {{lo_x[i], lo_y[i]}, {hi_x[i], hi_y[i]}};
+  }
+};
+
 /// The house's emitter rule, the one the cell grid follows (candidate_pairs.hpp): a pair
 /// needs one free particle; two small particles are emitted by the lower index, a small
 /// and a large one (a wall) by the small one. Following it, the paper's methods build

@@ -13,21 +13,6 @@
 
 namespace tridem {
 
-/// The geometry a contact test reads: vertices (counter-clockwise) and bounding boxes.
-template <class Real>
-struct TriangleArrays {
-  const Real* x[3];
-  const Real* y[3];
-  BoxArrays<Real> box;
-
-  physics::Triangle<Real> triangle(std::int32_t i) const {
-    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
-  }
-  physics::Aabb<Real> aabb(std::int32_t i) const {
-    return {{box.lo_x[i], box.lo_y[i]}, {box.hi_x[i], box.hi_y[i]}};
-  }
-};
-
 /// Whether emitter i lists the pair {i, j}: the emitter rule, then the contact test. One
 /// per emitter, built once with i's triangle and box (single-domain and decomposition).
 template <class Real>
@@ -35,12 +20,12 @@ class EmitterTest {
  public:
   EmitterTest(const TriangleArrays<Real>& g, std::int32_t i, const std::uint8_t* small,
               const std::uint8_t* free, ContactFilter filter)
-      : g_(g), i_(i), a_(g.triangle(i)), box_a_(g.aabb(i)), small_(small), free_(free),
+      : g_(g), i_(i), a_(g.triangle(i)), box_a_(g.box(i)), small_(small), free_(free),
         filter_(filter) {}
 
   bool operator()(std::int32_t j) const {
     return emits_pair(i_, j, small_[i_] != 0, small_[j] != 0, free_[i_] != 0, free_[j] != 0) &&
-           passes_contact_test(a_, box_a_, g_.triangle(j), g_.aabb(j), filter_);
+           passes_contact_test(a_, box_a_, g_.triangle(j), g_.box(j), filter_);
   }
 
  private:

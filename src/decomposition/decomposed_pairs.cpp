@@ -36,7 +36,7 @@ void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
 template <class Real>
 void DecomposedPairs<Real>::find(const Real* x, const Real* y, const TriangleArrays<Real>& g,
                                  bool parallel, PairList& pairs) {
-  decomposition_.update({x, y, g.box.lo_x, g.box.lo_y, g.box.hi_x, g.box.hi_y}, parallel);
+  decomposition_.update({x, y, g.lo_x, g.lo_y, g.hi_x, g.hi_y}, parallel);
   const Decomposition<Real>& d = decomposition_;
   const int domains = d.count();
   if (found_.size() < static_cast<std::size_t>(domains))

@@ -55,7 +55,9 @@ Snapshot single_domain(Scene s, Backend backend, std::int64_t steps, ContactTest
 // With the exact test, single-domain drops only pairs whose force pair_force would find
 // zero by the same separating-axis arithmetic (and whose slip it would reset, as a pair
 // absent from the list gets), in rows the grid's emitter rule orders the same way: the
-// same sums in the same order, so the grid's results bit for bit.
+// same sums in the same order, so the grid's results bit for bit. (The two tests are one
+// expression, cross(d, q - p); a compiler that contracted it to a fused multiply-add in
+// one place and not the other could flip a pair that touches to within rounding.)
 TEST(CpuParity, SingleDomainExactReproducesGridBitForBit) {
   const Scene s = test::jostling_pile(12, 8);
   const Snapshot grid = test::run_to(s, Backend::Cpu, 300);

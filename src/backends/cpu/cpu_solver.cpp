@@ -151,16 +151,16 @@ void CpuSolver<Real>::update_geometry() {
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
-  const BoxArrays<Real> boxes{lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()};
   const TriangleArrays<Real> geometry{{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
                                       {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
-                                      boxes};
+                                      lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()};
   if (method_ == Method::SingleDomain)
     single_domain_.find(geometry, parallel_, pairs_);
   else if (decomposed_)
     decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
   else
-    finder_.find(boxes, method_, parallel_, pairs_);
+    finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
+                 pairs_);
   grow_to(slip_, pairs_.count());
   grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);

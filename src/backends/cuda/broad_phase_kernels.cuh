@@ -7,8 +7,9 @@
 // twice (count, fill), so no two threads write the same memory and the result does not
 // depend on scheduling.
 #include "backends/cuda/grid_types.cuh"
-#include "backends/cuda/row_fill.cuh"
+#include "backends/cuda/row_history.cuh"
 #include "broadphase/grid_rules.hpp"
+#include "broadphase/row_sort.hpp"
 
 #include <cstdint>
 
@@ -149,12 +150,14 @@ __global__ void count_rows_kernel(CandidateSearch<Real> c, int* count) {
 
 /// The rows of the new list, partners ascending, each pair with its contact history.
 template <class Real>
-__global__ void fill_rows_kernel(CandidateSearch<Real> c, RowTargets<Real> t) {
+__global__ void fill_rows_kernel(CandidateSearch<Real> c, RowHistory<Real> h) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= c.n) return;
-  int at = t.offset[i];
-  visit_candidates(c, i, [&](int j) { t.partner[at++] = j; });
-  finish_row(t, i);
+  const int begin = h.offset[i], end = h.offset[i + 1];
+  int at = begin;
+  visit_candidates(c, i, [&](int j) { h.partner[at++] = j; });
+  insertion_sort(h.partner, begin, end);
+  carry_history(i, h);
 }
 
 /// reverse_offset[p] = first position of partner p in the partner-sorted slots.

@@ -10,6 +10,7 @@
 
 #include <climits>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 namespace tridem::cuda {
@@ -44,9 +45,6 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   if (n_ > static_cast<std::size_t>(INT_MAX / 8))
     throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
                    " particles on one GPU");
-  if (method_ == Method::SingleDomain)
-    throw SceneError("method \"single-domain\" is not implemented on the cuda backend yet; "
-                     "use backend = \"cpu\" or \"openmp\"");
   cudaDeviceProp prop{};
   TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
   device_name_ = prop.name;
@@ -77,8 +75,10 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
 
   const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
+  filter_ = {scene.simulation.contact_test, scene.simulation.bbox_prefilter};
   pairs_ = std::make_unique<PairListBuilder<Real>>(
-      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, reserve, stream_);
+      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, reserve,
+      stream_);
   if (method_ == Method::Decomposition)
     decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(1);
@@ -151,9 +151,15 @@ void CudaSolver<Real>::upload_model(const ParticleModel& model) {
     vert_x_[k].allocate(n_);
     vert_y_[k].allocate(n_);
   }
-  for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_, &build_lo_x_, &build_lo_y_, &build_hi_x_,
-                  &build_hi_y_})
-    b->allocate(n_);
+  for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_}) b->allocate(n_);
+  // Until a grid build sets them, the build boxes are the whole plane. A single-domain
+  // solver never sets them (it rebuilds every step), so the geometry kernel, which
+  // compares every box with its build box, then never raises the rebuild flag: no atomic
+  // per particle and step on one word.
+  const std::vector<Real> lowest(n_, std::numeric_limits<Real>::lowest());
+  const std::vector<Real> highest(n_, std::numeric_limits<Real>::max());
+  for (auto* b : {&build_lo_x_, &build_lo_y_}) b->upload(lowest);
+  for (auto* b : {&build_hi_x_, &build_hi_y_}) b->upload(highest);
 }
 
 template <class Real>
@@ -213,7 +219,9 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     if (decomposed_) {
       decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
-    } else if (rebuild_) {
+    } else if (rebuild_ || pairs_->single_step()) {
+      // A single-domain list holds the pairs that pass the contact test at this step's
+      // positions only: no skin can keep it valid, so it is rebuilt every step.
       pairs_->rebuild(p, margin_);
       rebuild_ = false;
     }
@@ -305,7 +313,9 @@ std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
-         std::string(method_name(method_)) + skin;
+         method_description(method_, filter_.test, filter_.bbox_prefilter) +
+         (pairs_->single_step() || decomposed_ ? std::string(", list rebuilt every step")
+                                               : std::string(skin));
 }
 
 template <class Real>

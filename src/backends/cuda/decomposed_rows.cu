@@ -79,16 +79,19 @@ void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<
                           owned_offset_.data(),      owned_.data(),         large_.data(),
                           static_cast<int>(decomposition_.large().size()), filter_};
   const int blocks = decomposition_.count();
-  // Particles that no sub-domain owns (walls) emit nothing: their rows stay empty.
-  TRIDEM_CUDA_CHECK(cudaMemsetAsync(list.row_count(), 0, n_ * sizeof(int), stream_));
-  domain_rows_kernel<Real, false><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
-      p, lists, list.row_count(), list.targets());
-  TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (count)");
-  list.place_rows();
-  domain_rows_kernel<Real, true><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
-      p, lists, list.row_count(), list.targets());
-  TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (fill)");
-  list.index_rows();
+  list.rebuild_with(
+      [&](int* row_count) {
+        // Particles that no sub-domain owns (walls) emit nothing: their rows stay empty.
+        TRIDEM_CUDA_CHECK(cudaMemsetAsync(row_count, 0, n_ * sizeof(int), stream_));
+        domain_rows_kernel<Real, false><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
+            p, lists, row_count, RowHistory<Real>{});
+        TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (count)");
+      },
+      [&](const RowHistory<Real>& history) {
+        domain_rows_kernel<Real, true><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
+            p, lists, nullptr, history);
+        TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (fill)");
+      });
 }
 
 template class DecomposedRows<float>;

@@ -6,8 +6,9 @@
 // paper's methods (contact_filter.hpp). A block writes only the rows of the emitters its
 // sub-domain owns, so no two blocks write the same memory. Run twice: count, then fill.
 #include "backends/cuda/device_views.cuh"
-#include "backends/cuda/row_fill.cuh"
+#include "backends/cuda/row_history.cuh"
 #include "broadphase/contact_filter.hpp"
+#include "broadphase/row_sort.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -76,12 +77,12 @@ __device__ inline physics::Aabb<Real> global_box(const ParticleArrays<Real>& p, 
   return {{p.lo_x[i], p.lo_y[i]}, {p.hi_x[i], p.hi_y[i]}};
 }
 
-/// kFill = false: row_count[i] for every owned emitter i; true: its row, completed with
-/// its contact history (finish_row).
+/// kFill = false: row_count[i] for every owned emitter i; true: its row, sorted, with its
+/// contact history (carry_history).
 template <class Real, bool kFill>
 __global__ void __launch_bounds__(kDomainThreads)
     domain_rows_kernel(ParticleArrays<Real> p, DomainLists d, int* row_count,
-                       RowTargets<Real> t) {
+                       RowHistory<Real> t) {
   extern __shared__ __align__(16) unsigned char staged_raw[];
   const StagedParticles<Real> s = StagedParticles<Real>::carve(staged_raw, d.capacity);
   const int k = blockIdx.x;
@@ -130,7 +131,10 @@ __global__ void __launch_bounds__(kDomainThreads)
       const int j = d.large[w];
       consider(j, global_triangle(p, j), global_box(p, j), false, p.free[j] != 0);
     }
-    if constexpr (kFill) finish_row(t, i);
+    if constexpr (kFill) {
+      insertion_sort(t.partner, t.offset[i], at);  // the walls come after the staged
+      carry_history(i, t);
+    }
     else row_count[i] = at;
   }
 }
