@@ -244,14 +244,18 @@ void Decomposition<Real>::index_rows() {
     if (small_[p]) by_row_[cursor_[m.row_of(cell_row_[p])]++] = static_cast<std::int32_t>(p);
 }
 
-template <class Real>
-std::string Decomposition<Real>::summary() const {
-  const DecompositionStats& s = stats_;
+std::string decomposition_summary(const DecompositionStats& s, int sub_domains, int rows,
+                                  int capacity) {
   return fmt::format(
       "decomposition: {} sub-domains in {} row{}, at most {} of {} particles staged in one; "
       "{} migrations, {} overflows, {} border moves, {} rows re-cut in {} updates",
-      count(), rows(), rows() == 1 ? "" : "s", s.max_members, settings_.capacity, s.migrations,
+      sub_domains, rows, rows == 1 ? "" : "s", s.max_members, capacity, s.migrations,
       s.overflows, s.border_moves, s.repartitions, s.updates);
+}
+
+template <class Real>
+std::string Decomposition<Real>::summary() const {
+  return decomposition_summary(stats_, count(), rows(), settings_.capacity);
 }
 
 template <class Real>

@@ -55,6 +55,10 @@ struct DecompositionStats {
   int max_members = 0;            ///< most particles staged by one sub-domain so far
 };
 
+/// One line for the run's summary: sub-domains, staging, migrations, border moves.
+std::string decomposition_summary(const DecompositionStats& s, int sub_domains, int rows,
+                                  int capacity);
+
 template <class Real>
 class Decomposition {
  public:

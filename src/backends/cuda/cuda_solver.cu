@@ -324,7 +324,7 @@ std::string CudaSolver<Real>::statistics() const {
   std::snprintf(text, sizeof text, "pair list built %lld times in %lld steps; %d pairs (room for %zu)",
                 static_cast<long long>(pairs_->builds()), static_cast<long long>(step_),
                 pairs_->count(), pairs_->capacity());
-  if (decomposed_) return std::string(text) + "; " + decomposed_->decomposition().summary();
+  if (decomposed_) return std::string(text) + "; " + decomposed_->summary();
   return text;
 }
 

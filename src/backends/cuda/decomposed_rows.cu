@@ -11,21 +11,13 @@ namespace {
 
 static_assert(std::is_same_v<std::int32_t, int>, "particle indices are uploaded as int");
 
-/// Copies a host list into a device buffer grown to its high-water mark (with headroom).
-void upload(DeviceBuffer<int>& buffer, const std::vector<std::int32_t>& host,
-            cudaStream_t stream) {
-  if (buffer.size() < host.size()) buffer.allocate(host.size() + host.size() / 5 + 16);
-  if (!host.empty())
-    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(buffer.data(), host.data(), host.size() * sizeof(int),
-                                      cudaMemcpyHostToDevice, stream));
-}
-
 }  // namespace
 
 template <class Real>
 DecomposedRows<Real>::DecomposedRows(const SimulationSettings& settings,
                                      const GridClasses& classes, cudaStream_t stream)
     : decomposition_(settings.decomposition, classes.cell, classes.small),
+      assignment_(classes.small, stream),
       filter_{settings.contact_test, settings.bbox_prefilter},
       stream_(stream),
       n_(classes.small.size()),
@@ -46,21 +38,11 @@ DecomposedRows<Real>::DecomposedRows(const SimulationSettings& settings,
     TRIDEM_CUDA_CHECK(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                            static_cast<int>(shared_bytes_)));
   state_.allocate(6 * n_);
-  upload(large_, decomposition_.large(), stream_);
+  large_.upload(decomposition_.large());
 }
 
 template <class Real>
-void DecomposedRows<Real>::upload_lists() {
-  const Decomposition<Real>& d = decomposition_;
-  upload(member_offset_, d.member_offset(), stream_);
-  upload(members_, d.member_list(), stream_);
-  upload(owned_offset_, d.owned_offset(), stream_);
-  upload(owned_, d.owned_list(), stream_);
-}
-
-template <class Real>
-void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list) {
-  // Centroids and boxes of this step to the host, then the bookkeeping there.
+void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p) {
   const Real* from[6] = {p.x, p.y, p.lo_x, p.lo_y, p.hi_x, p.hi_y};
   Real* host[6];
   for (int a = 0; a < 6; ++a) {
@@ -70,13 +52,24 @@ void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<
                                         cudaMemcpyDeviceToHost, stream_));
   }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-  decomposition_.update({host[0], host[1], host[2], host[3], host[4], host[5]});
-  if (decomposition_.stats().max_members > decomposition_.capacity())
-    throw RunError("internal error: a sub-domain stages more particles than its capacity");
-  upload_lists();
+  // OpenMP on the host; the result does not depend on it.
+  decomposition_.update({host[0], host[1], host[2], host[3], host[4], host[5]}, true);
+  assignment_.take_from_host(decomposition_);
+}
 
-  const DomainLists lists{decomposition_.capacity(), member_offset_.data(), members_.data(),
-                          owned_offset_.data(),      owned_.data(),         large_.data(),
+template <class Real>
+void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list) {
+  // The first grouping on the host; afterwards the GPU, with the host's borders, unless a
+  // sub-domain overflows them.
+  if (builds_ == 0 || !assignment_.assign(p, decomposition_.capacity())) update_on_host(p);
+  if (assignment_.largest_staged() > decomposition_.capacity())
+    throw RunError("internal error: a sub-domain stages more particles than its capacity");
+  assignment_.count_migrations();
+  ++builds_;
+
+  const DomainLists lists{decomposition_.capacity(), assignment_.member_offset(),
+                          assignment_.members(),     assignment_.owned_offset(),
+                          assignment_.owned(),       large_.data(),
                           static_cast<int>(decomposition_.large().size()), filter_};
   const int blocks = decomposition_.count();
   list.rebuild_with(
@@ -92,6 +85,18 @@ void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<
             p, lists, nullptr, history);
         TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (fill)");
       });
+}
+
+template <class Real>
+std::string DecomposedRows<Real>::summary() const {
+  // Border moves and re-cut rows happen on the host; migrations and the staging of every
+  // step are counted on the GPU.
+  DecompositionStats s = decomposition_.stats();
+  s.migrations = assignment_.migrations();
+  s.max_members = assignment_.largest_staged();
+  s.updates = builds_;
+  return decomposition_summary(s, decomposition_.count(), decomposition_.rows(),
+                               decomposition_.capacity());
 }
 
 template class DecomposedRows<float>;

@@ -1,20 +1,20 @@
 #pragma once
-// The decomposition method of the CUDA solver. The bookkeeping runs on the host, between
-// steps, with the same Decomposition class as the CPU method: the paper also groups the
-// particles and moves the borders on the CPU ("the control unit ... invoked between each
-// time step"), and one implementation of it, tested against the cell grid, serves both
-// backends. Each step the centroids and boxes come to the host (6 arrays), the owned and
-// staged lists go back, and the GPU finds the pairs with one block per sub-domain
-// (domain_kernels.cuh) into the PairListBuilder's rows; the other stages of the step are
-// the grid's.
+// The decomposition method of the CUDA solver, as the paper splits it between CPU and GPU:
+// the first grouping of the particles and every border move run on the host (the same
+// Decomposition as the CPU method, tested against the cell grid), which hands the borders
+// to the GPU; every step the GPU then finds owners and overlap bands itself
+// (DomainAssignment) and the pairs with one block per sub-domain (domain_kernels.cuh), into
+// the PairListBuilder's rows. Only when a sub-domain overflows does the state go to the
+// host, whose update moves the borders and hands back borders and lists.
 #include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/domain_assignment.cuh"
 #include "backends/cuda/domain_kernels.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
 #include "broadphase/candidate_pairs.hpp"
 #include "decomposition/decomposition.hpp"
 
 #include <cstdint>
-#include <vector>
+#include <string>
 
 namespace tridem::cuda {
 
@@ -25,21 +25,25 @@ class DecomposedRows {
   DecomposedRows(const SimulationSettings& settings, const GridClasses& classes,
                  cudaStream_t stream);
 
-  /// Brings the decomposition up to date from the GPU's state and builds the pair list.
+  /// Brings owners, bands and (on the host, when needed) borders up to date for the
+  /// current state, and builds the pair list.
   void build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list);
 
-  const Decomposition<Real>& decomposition() const { return decomposition_; }
+  /// The decomposition's line of the run summary.
+  std::string summary() const;
 
  private:
-  void upload_lists();
+  void update_on_host(const ParticleArrays<Real>& p);
 
   Decomposition<Real> decomposition_;
+  DomainAssignment<Real> assignment_;
   ContactFilter filter_;
   cudaStream_t stream_;
   std::size_t n_;
   std::size_t shared_bytes_;
-  PinnedBuffer<Real> state_;  ///< centroids and boxes, 6 arrays of n
-  DeviceBuffer<int> member_offset_, members_, owned_offset_, owned_, large_;
+  std::int64_t builds_ = 0;
+  PinnedBuffer<Real> state_;  ///< centroids and boxes for the host, 6 arrays of n
+  DeviceBuffer<int> large_;
 };
 
 }  // namespace tridem::cuda

@@ -57,24 +57,18 @@ struct StagedParticles {
     s.free = reinterpret_cast<std::uint8_t*>(s.index + capacity);
     return s;
   }
-  __device__ physics::Triangle<Real> triangle(int m) const {
-    return {{{x[0][m], y[0][m]}, {x[1][m], y[1][m]}, {x[2][m], y[2][m]}}};
-  }
-  __device__ physics::Aabb<Real> box(int m) const {
-    return {{lo_x[m], lo_y[m]}, {hi_x[m], hi_y[m]}};
+  /// The staged particles read as the global arrays are, slot for particle index.
+  __device__ TriangleArrays<Real> view() const {
+    return {{x[0], x[1], x[2]}, {y[0], y[1], y[2]}, lo_x, lo_y, hi_x, hi_y};
   }
 };
 
+/// The current geometry of every particle.
 template <class Real>
-__device__ inline physics::Triangle<Real> global_triangle(const ParticleArrays<Real>& p, int i) {
-  return {{{p.vert_x[0][i], p.vert_y[0][i]},
-           {p.vert_x[1][i], p.vert_y[1][i]},
-           {p.vert_x[2][i], p.vert_y[2][i]}}};
-}
-
-template <class Real>
-__device__ inline physics::Aabb<Real> global_box(const ParticleArrays<Real>& p, int i) {
-  return {{p.lo_x[i], p.lo_y[i]}, {p.hi_x[i], p.hi_y[i]}};
+__device__ inline TriangleArrays<Real> geometry_of(const ParticleArrays<Real>& p) {
+  return {{p.vert_x[0], p.vert_x[1], p.vert_x[2]},
+          {p.vert_y[0], p.vert_y[1], p.vert_y[2]},
+          p.lo_x, p.lo_y, p.hi_x, p.hi_y};
 }
 
 /// kFill = false: row_count[i] for every owned emitter i; true: its row, sorted, with its
@@ -85,6 +79,7 @@ __global__ void __launch_bounds__(kDomainThreads)
                        RowHistory<Real> t) {
   extern __shared__ __align__(16) unsigned char staged_raw[];
   const StagedParticles<Real> s = StagedParticles<Real>::carve(staged_raw, d.capacity);
+  const TriangleArrays<Real> g = geometry_of(p), staged_g = s.view();
   const int k = blockIdx.x;
   const int first = d.member_offset[k];
   const int staged = d.member_offset[k + 1] - first;
@@ -104,8 +99,8 @@ __global__ void __launch_bounds__(kDomainThreads)
   __syncthreads();
   for (int o = d.owned_offset[k] + threadIdx.x; o < d.owned_offset[k + 1]; o += blockDim.x) {
     const int i = d.owned[o];
-    const physics::Triangle<Real> a = global_triangle(p, i);
-    const physics::Aabb<Real> box_a = global_box(p, i);
+    const physics::Triangle<Real> a = g.triangle(i);
+    const physics::Aabb<Real> box_a = g.box(i);
     const bool free_i = p.free[i] != 0;
     // Fill: the next free slot of i's row; count: how many partners so far.
     int at = 0;
@@ -126,10 +121,10 @@ __global__ void __launch_bounds__(kDomainThreads)
       else hi = mid;
     }
     for (int m = lo; m < staged; ++m)
-      consider(s.index[m], s.triangle(m), s.box(m), true, s.free[m] != 0);
+      consider(s.index[m], staged_g.triangle(m), staged_g.box(m), true, s.free[m] != 0);
     for (int w = 0; w < d.n_large; ++w) {
       const int j = d.large[w];
-      consider(j, global_triangle(p, j), global_box(p, j), false, p.free[j] != 0);
+      consider(j, g.triangle(j), g.box(j), false, p.free[j] != 0);
     }
     if constexpr (kFill) {
       insertion_sort(t.partner, t.offset[i], at);  // the walls come after the staged

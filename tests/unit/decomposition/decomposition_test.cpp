@@ -77,6 +77,27 @@ void expect_consistent(const Decomposition<double>& d, const TriangleCloud& c) {
     EXPECT_EQ(d.owner(p), m.owner(decomposition_cell(c.y[p], m.origin_y, m.cell),
                                   decomposition_cell(c.x[p], m.origin_x, m.cell)));
   }
+  // The bands found from the particles' side, as the GPU finds them (DomainMap::visit_near
+  // over the hulls of the owned boxes), are the lists.
+  std::vector<Hull<double>> hull(static_cast<std::size_t>(d.count()));
+  for (int k = 0; k < d.count(); ++k) {
+    hull[k] = {1e300, 1e300, -1e300, -1e300};
+    for (const std::int32_t p : d.owned(k))
+      hull[k] = {std::min(hull[k].lo_x, c.lo_x[p]), std::min(hull[k].lo_y, c.lo_y[p]),
+                 std::max(hull[k].hi_x, c.hi_x[p]), std::max(hull[k].hi_y, c.hi_y[p])};
+  }
+  std::vector<std::vector<std::int32_t>> bands(static_cast<std::size_t>(d.count()));
+  for (std::size_t p = 0; p < c.size(); ++p) {
+    if (!classes.small[p]) continue;
+    m.visit_near(decomposition_cell(c.y[p], m.origin_y, m.cell),
+                 decomposition_cell(c.x[p], m.origin_x, m.cell), [&](int k) {
+                   if (box_reaches(c.lo_x[p], c.lo_y[p], c.hi_x[p], c.hi_y[p], hull[k]))
+                     bands[k].push_back(static_cast<std::int32_t>(p));
+                 });
+  }
+  for (int k = 0; k < d.count(); ++k)
+    EXPECT_EQ(bands[k], std::vector<std::int32_t>(d.members(k).begin(), d.members(k).end()))
+        << "sub-domain " << k;
   const PairSet grid = test::grid_pairs(c);
   PairSet sorted_grid = grid;
   std::sort(sorted_grid.begin(), sorted_grid.end());
