@@ -28,6 +28,9 @@
 //                     are found (single-domain is O(n²) per step: keep --max_n small)
 //   --contact_test=T  exact (default) or direct-area, for single-domain and decomposition
 //   --bbox_prefilter=0  the paper's pre-filter off (single-domain and decomposition)
+//   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
+//                     [simulation.decomposition] for --method=decomposition (default 1d,
+//                     capacity 256; rows and columns 2d only, chosen when not given)
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
@@ -46,6 +49,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -110,6 +114,7 @@ const tridem::Scene& pile(std::size_t n) {
     scene.simulation.method = g_method.method;
     scene.simulation.contact_test = g_method.contact_test;
     scene.simulation.bbox_prefilter = g_method.bbox_prefilter;
+    scene.simulation.decomposition = g_method.decomposition;
     cached_n = n;
   }
   return scene;
@@ -280,8 +285,25 @@ int main(int argc, char** argv) {
     g_method.contact_test = *t;
   }
   g_method.bbox_prefilter = prefilter_flag != "0";
-  const std::string method_tag =
+  tridem::DecompositionSettings& d = g_method.decomposition;
+  if (const std::string layout = take_flag(argc, argv, "layout"); !layout.empty()) {
+    const auto l = tridem::value_in(tridem::kLayoutNames, layout);
+    if (!l) {
+      std::cerr << "tridem_bench: --layout wants one of "
+                << tridem::spellings_of(tridem::kLayoutNames) << "; got '" << layout << "'\n";
+      return 2;
+    }
+    d.layout = *l;
+  }
+  for (auto [flag, value] : {std::pair{"rows", &d.rows}, std::pair{"columns", &d.columns},
+                             std::pair{"capacity", &d.capacity}})
+    if (const std::string text = take_flag(argc, argv, flag); !text.empty())
+      *value = static_cast<int>(parse_number(flag, text));
+  std::string method_tag =
       g_method.method == tridem::Method::Grid ? "" : "/" + std::string(tridem::method_name(g_method.method));
+  if (g_method.method == tridem::Method::Decomposition)
+    method_tag += "-" + std::string(tridem::name_in(tridem::kLayoutNames, d.layout)) + "-" +
+                  std::to_string(d.capacity);
 
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
