@@ -231,6 +231,22 @@ double parse_number(const std::string& flag, const std::string& text) {
   std::exit(2);
 }
 
+/// Takes "--name=spelling" out of argv into `value`, for a setting spelt in `table`;
+/// false, after saying so, for a spelling it does not know.
+template <class Table, class E>
+bool take_choice(int& argc, char** argv, const std::string& name, const Table& table, E& value) {
+  const std::string text = take_flag(argc, argv, name);
+  if (text.empty()) return true;
+  const auto v = tridem::value_in(table, text);
+  if (!v) {
+    std::cerr << "tridem_bench: --" << name << " wants one of " << tridem::spellings_of(table)
+              << "; got '" << text << "'\n";
+    return false;
+  }
+  value = *v;
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -262,39 +278,13 @@ int main(int argc, char** argv) {
     start = comma + 1;
   }
   const bool frames = !take_flag(argc, argv, "frames").empty();
-  const std::string method_flag = take_flag(argc, argv, "method");
-  const std::string test_flag = take_flag(argc, argv, "contact_test");
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
-  if (!method_flag.empty()) {
-    const auto m = tridem::value_in(tridem::kMethodNames, method_flag);
-    if (!m) {
-      std::cerr << "tridem_bench: --method wants one of "
-                << tridem::spellings_of(tridem::kMethodNames) << "; got '" << method_flag << "'\n";
-      return 2;
-    }
-    g_method.method = *m;
-  }
-  if (!test_flag.empty()) {
-    const auto t = tridem::value_in(tridem::kContactTestNames, test_flag);
-    if (!t) {
-      std::cerr << "tridem_bench: --contact_test wants one of "
-                << tridem::spellings_of(tridem::kContactTestNames) << "; got '" << test_flag
-                << "'\n";
-      return 2;
-    }
-    g_method.contact_test = *t;
-  }
-  g_method.bbox_prefilter = prefilter_flag != "0";
   tridem::DecompositionSettings& d = g_method.decomposition;
-  if (const std::string layout = take_flag(argc, argv, "layout"); !layout.empty()) {
-    const auto l = tridem::value_in(tridem::kLayoutNames, layout);
-    if (!l) {
-      std::cerr << "tridem_bench: --layout wants one of "
-                << tridem::spellings_of(tridem::kLayoutNames) << "; got '" << layout << "'\n";
-      return 2;
-    }
-    d.layout = *l;
-  }
+  if (!take_choice(argc, argv, "method", tridem::kMethodNames, g_method.method) ||
+      !take_choice(argc, argv, "contact_test", tridem::kContactTestNames, g_method.contact_test) ||
+      !take_choice(argc, argv, "layout", tridem::kLayoutNames, d.layout))
+    return 2;
+  g_method.bbox_prefilter = prefilter_flag != "0";
   for (auto [flag, value] : {std::pair{"rows", &d.rows}, std::pair{"columns", &d.columns},
                              std::pair{"capacity", &d.capacity}})
     if (const std::string text = take_flag(argc, argv, flag); !text.empty())
