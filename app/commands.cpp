@@ -1,5 +1,6 @@
 #include "commands.hpp"
 
+#include "interrupt.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/render.hpp"
@@ -59,8 +60,16 @@ int run(const RunArgs& args) {
   options.force = args.force;
   options.threads = args.threads;
   options.progress = !args.quiet;
-  run_scene(scene, options);
-  return 0;
+  options.restart = args.restart;
+  options.interrupt = &install_interrupt_handlers();
+  const RunSummary summary = run_scene(scene, options);
+  if (!summary.interrupted_by) return 0;
+  fmt::print(stderr,
+             "interrupted by signal {} at step {}: checkpoint written to {}\n"
+             "continue with: tridem run {} --restart {}{}\n",
+             summary.interrupted_by, summary.last_step, summary.checkpoint, args.scene,
+             summary.checkpoint, args.out ? " --out " + *args.out : std::string());
+  return exit_code_for_signal(summary.interrupted_by);
 }
 
 int info(const std::string& path) {

@@ -2,43 +2,15 @@
 // bit for bit (same sums in the same order), all-pairs must find the same contacts as the
 // cell grid (rounding apart: its pairs are summed in another order), and float must stay
 // close over a short run.
+#include "support/jostling_pile.hpp"
 #include "support/scene_builder.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <random>
 
 namespace tridem {
 namespace {
-
-/// A dense, jostling pile in a box: walls, gravity, friction, damping, random shapes.
-Scene jostling_pile(int columns, int rows) {
-  Scene s = test::empty_scene(1e7, 2000, 0.4, 0.2);
-  s.simulation.gravity = {0, -9.81};
-  const double pitch = 0.1, r = 0.055;
-  const double width = columns * pitch;
-  s.triangles.push_back(test::floor_triangle(-1, width + 1, -0.06));
-  s.triangles.push_back(test::triangle({-0.06, -0.1}, {-0.06, rows * pitch}, {-1, 0},
-                                       {}, Motion::Fixed));
-  s.triangles.push_back(test::triangle({width, rows * pitch}, {width, -0.1}, {width + 1, 0},
-                                       {}, Motion::Fixed));
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const Vec2d c{i * pitch + 0.5 * pitch * (j % 2), j * pitch};
-      const double a0 = 3.14159 * u(rng);
-      TriangleSpec t;
-      for (int k = 0; k < 3; ++k) {
-        const double a = a0 + k * 2.0943951023931953 + 0.25 * u(rng);
-        t.vertices[k] = {c.x + r * std::cos(a), c.y + r * std::sin(a)};
-      }
-      t.velocity = {2.0 * u(rng), 2.0 * u(rng)};
-      s.triangles.push_back(t);
-    }
-  return s;
-}
 
 void expect_identical(const Snapshot& a, const Snapshot& b) {
   ASSERT_EQ(a.size(), b.size());
@@ -54,7 +26,7 @@ void expect_identical(const Snapshot& a, const Snapshot& b) {
 }
 
 TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
-  const Scene s = jostling_pile(20, 12);
+  const Scene s = test::jostling_pile(20, 12);
   const int saved = omp_get_max_threads();
   const Snapshot serial = test::run_to(s, Backend::Cpu, 400);
   for (int threads : {2, 3, 4}) {
@@ -67,12 +39,12 @@ TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
 }
 
 TEST(CpuParity, SerialRunIsDeterministic) {
-  const Scene s = jostling_pile(10, 6);
+  const Scene s = test::jostling_pile(10, 6);
   expect_identical(test::run_to(s, Backend::Cpu, 300), test::run_to(s, Backend::Cpu, 300));
 }
 
 TEST(CpuParity, AllPairsAgreesWithCellGrid) {
-  const Scene s = jostling_pile(12, 8);
+  const Scene s = test::jostling_pile(12, 8);
   const std::int64_t steps = 200;
   const Snapshot grid = test::run_to(s, Backend::Cpu, steps);
   const Snapshot all = test::run_to(s, Backend::Cpu, steps, Precision::Double, Method::AllPairs);
@@ -86,7 +58,7 @@ TEST(CpuParity, AllPairsAgreesWithCellGrid) {
 }
 
 TEST(CpuParity, FloatStaysCloseToDoubleOverShortRun) {
-  const Scene s = jostling_pile(8, 5);
+  const Scene s = test::jostling_pile(8, 5);
   const Snapshot d = test::run_to(s, Backend::Cpu, 50);
   const Snapshot f = test::run_to(s, Backend::Cpu, 50, Precision::Float);
   for (std::size_t i = 0; i < d.size(); ++i) {
