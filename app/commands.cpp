@@ -65,9 +65,9 @@ int run(const RunArgs& args) {
   const RunSummary summary = run_scene(scene, options);
   if (!summary.interrupted_by) return 0;
   fmt::print(stderr,
-             "interrupted by signal {} at step {}: checkpoint written to {}\n"
+             "interrupted by {} at step {}: checkpoint written to {}\n"
              "continue with: tridem run {} --restart {}{}\n",
-             summary.interrupted_by, summary.last_step, summary.checkpoint, args.scene,
+             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, args.scene,
              summary.checkpoint, args.out ? " --out " + *args.out : std::string());
   return exit_code_for_signal(summary.interrupted_by);
 }

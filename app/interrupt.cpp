@@ -30,4 +30,10 @@ const std::atomic<int>& install_interrupt_handlers() {
 
 int exit_code_for_signal(int signal) { return 128 + signal; }
 
+std::string signal_name(int signal) {
+  if (signal == SIGINT) return "SIGINT";
+  if (signal == SIGTERM) return "SIGTERM";
+  return "signal " + std::to_string(signal);
+}
+
 }  // namespace tridem::app
