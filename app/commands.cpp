@@ -64,11 +64,14 @@ int run(const RunArgs& args) {
   options.interrupt = &install_interrupt_handlers();
   const RunSummary summary = run_scene(scene, options);
   if (!summary.interrupted_by) return 0;
-  fmt::print(stderr,
-             "interrupted by {} at step {}: checkpoint written to {}\n"
-             "continue with: tridem run {} --restart {}{}\n",
-             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, args.scene,
-             summary.checkpoint, args.out ? " --out " + *args.out : std::string());
+  // The same command line, so that the restarted run has the same steps, backend, folder.
+  std::string same_run = fmt::format("tridem run {} --restart {}", args.scene, summary.checkpoint);
+  if (args.out) same_run += " --out " + *args.out;
+  if (args.steps) same_run += fmt::format(" --steps {}", *args.steps);
+  if (args.backend) same_run += " --backend " + *args.backend;
+  fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
+             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
+             same_run);
   return exit_code_for_signal(summary.interrupted_by);
 }
 
