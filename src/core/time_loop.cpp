@@ -1,5 +1,6 @@
 #include "core/time_loop.hpp"
 
+#include "core/chunk_size.hpp"
 #include "tridem/error.hpp"
 
 #include <algorithm>
@@ -64,12 +65,13 @@ int TimeLoop::advance_to(std::int64_t target) {
   return 0;
 }
 
-// Chunks of 0.05 to 0.2 s: the progress bar moves without a clock read in every step, and
-// an interruption is seen within a fraction of a second.
+// Chunks of 0.05 to 0.2 s (chunk_size.hpp): the progress bar moves without a clock read
+// in every step, and an interruption is seen within a fraction of a second.
 void TimeLoop::advance_chunk(std::int64_t target) {
   const auto t0 = std::chrono::steady_clock::now();
+  const std::int64_t steps = std::min(chunk_, target - solver_.step());
   try {
-    solver_.advance(std::min(chunk_, target - solver_.step()));
+    solver_.advance(steps);
   } catch (const RunError& e) {
     // A blow-up: the solver holds the last good state; keep it for diagnosis or a restart.
     bar_.finish();
@@ -79,10 +81,8 @@ void TimeLoop::advance_chunk(std::int64_t target) {
                                e.what(), solver_.step(), files_.last_good.string(),
                                (out_.dir() / "final.csv").string()));
   }
-  const double took =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (took < 0.05) chunk_ *= 2;
-  else if (took > 0.2 && chunk_ > 1) chunk_ /= 2;
+  chunk_ = next_chunk(chunk_, steps,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 void TimeLoop::write_due(std::int64_t step) {

@@ -65,6 +65,12 @@ grep -q 'format="ascii"' ascii_out/frames/frame_000000100.vtu || fail "vtk_encod
 grep -q 'format="binary"' pile_out/frames/frame_000000100.vtu || fail "frames are not binary by default"
 expect_ok "$tridem" render ascii_out/frames/frame_000000100.vtu -o ascii.png
 
+# Output events every step: the run must reach its end (it stalled at step 63, when the
+# chunk length, doubled at every event, overflowed).
+sed 's/every = 100/every = 1\ncontacts = false/' pile.toml >every1.toml
+expect_ok timeout 60 "$tridem" run every1.toml --quiet --out every1_out
+[ "$(cut -d, -f1 every1_out/energy.csv | tail -1)" = "200" ] || fail "run with every = 1 stalled"
+
 # info describes the scene.
 expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"
