@@ -11,10 +11,13 @@ struct RunArgs {
   std::optional<std::string> out;
   std::optional<std::string> backend;
   std::optional<std::int64_t> steps;
+  std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
   bool force = false;
   bool quiet = false;
 };
+/// 0 when the run finished; 128 + the signal's number when SIGINT or SIGTERM stopped it
+/// (after it wrote its checkpoint).
 int run(const RunArgs&);
 
 int info(const std::string& scene);
