@@ -6,6 +6,7 @@
 #include "tridem/render.hpp"
 #include "tridem/run.hpp"
 #include "tridem/scene_io.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -57,6 +58,10 @@ int run(const RunArgs& args) {
   options.out_dir = args.out;
   if (args.backend) options.backend = parse_backend(*args.backend);
   options.steps = args.steps;
+  // main.cpp checked the spellings against the same tables.
+  if (args.method) options.method = value_in(kMethodNames, *args.method);
+  if (args.contact_test) options.contact_test = value_in(kContactTestNames, *args.contact_test);
+  if (args.no_bbox_prefilter) options.bbox_prefilter = false;
   options.force = args.force;
   options.threads = args.threads;
   options.progress = !args.quiet;
@@ -99,6 +104,8 @@ int info(const std::string& path) {
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
              backend_name(resolve_backend(sim.backend)),
              sim.precision == Precision::Float ? "float" : "double");
+  fmt::print("method       {}\n",
+             method_description(sim.method, sim.contact_test, sim.bbox_prefilter));
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
   if (info.gpu_memory_bytes > 0)

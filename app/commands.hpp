@@ -10,6 +10,9 @@ struct RunArgs {
   std::string scene;
   std::optional<std::string> out;
   std::optional<std::string> backend;
+  std::optional<std::string> method;        ///< a spelling of kMethodNames
+  std::optional<std::string> contact_test;  ///< a spelling of kContactTestNames
+  bool no_bbox_prefilter = false;
   std::optional<std::int64_t> steps;
   std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;

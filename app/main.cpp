@@ -2,9 +2,24 @@
 // usage errors are CLI11's, with exit code 2 or above.
 #include "commands.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// The spellings of a setting_names.hpp table, for CLI11's IsMember.
+template <class Table>
+std::vector<std::string> spelling_list(const Table& table) {
+  std::vector<std::string> out;
+  for (const auto& entry : table) out.emplace_back(entry.first);
+  return out;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace tridem::app;
@@ -19,6 +34,15 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");
   run_cmd->add_option("--backend", run_args.backend, "auto, cpu (serial reference), openmp or cuda")
       ->check(CLI::IsMember({"auto", "cpu", "openmp", "cuda"}));
+  run_cmd->add_option("--method", run_args.method,
+                      "Overrides [simulation] method: " + tridem::spellings_of(tridem::kMethodNames))
+      ->check(CLI::IsMember(spelling_list(tridem::kMethodNames)));
+  run_cmd->add_option("--contact-test", run_args.contact_test,
+                      "Overrides [simulation] contact_test (single-domain, decomposition): " +
+                          tridem::spellings_of(tridem::kContactTestNames))
+      ->check(CLI::IsMember(spelling_list(tridem::kContactTestNames)));
+  run_cmd->add_flag("--no-bbox-prefilter", run_args.no_bbox_prefilter,
+                    "Sets [simulation] bbox_prefilter = false (single-domain, decomposition)");
   run_cmd->add_option("--steps", run_args.steps, "Number of steps (overrides [simulation] steps)")
       ->check(CLI::PositiveNumber);
   run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")

@@ -24,7 +24,12 @@
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
 //   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
 //                     more iterations also move the window later into the decompression
+//   --method=NAME     grid (default), all-pairs, single-domain, decomposition: how pairs
+//                     are found (single-domain is O(n²) per step: keep --max_n small)
+//   --contact_test=T  exact (default) or direct-area, for single-domain and decomposition
+//   --bbox_prefilter=0  the paper's pre-filter off (single-domain and decomposition)
 #include "backends/cuda/cuda_backend.hpp"
+#include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 #include "tridem/standard_scenes.hpp"
 
@@ -93,12 +98,18 @@ const Variant kVariants[] = {
     {Backend::Cuda, tridem::Precision::Float, "cuda-float"},
 };
 
+/// How pairs are found in every case (--method, --contact_test, --bbox_prefilter).
+tridem::SimulationSettings g_method;
+
 /// The scene of the last size asked for: built once per size, not once per repetition.
 const tridem::Scene& pile(std::size_t n) {
   static std::size_t cached_n = 0;
   static tridem::Scene scene;
   if (cached_n != n) {
     scene = tridem::dense_pile(n);
+    scene.simulation.method = g_method.method;
+    scene.simulation.contact_test = g_method.contact_test;
+    scene.simulation.bbox_prefilter = g_method.bbox_prefilter;
     cached_n = n;
   }
   return scene;
@@ -108,6 +119,7 @@ std::unique_ptr<tridem::Solver> make(const Variant& v, std::size_t n) {
   tridem::SolverConfig config;
   config.backend = v.backend;
   config.precision = v.precision;
+  config.method = g_method.method;
   return tridem::make_solver(pile(n), config);
 }
 
@@ -245,6 +257,31 @@ int main(int argc, char** argv) {
     start = comma + 1;
   }
   const bool frames = !take_flag(argc, argv, "frames").empty();
+  const std::string method_flag = take_flag(argc, argv, "method");
+  const std::string test_flag = take_flag(argc, argv, "contact_test");
+  const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
+  if (!method_flag.empty()) {
+    const auto m = tridem::value_in(tridem::kMethodNames, method_flag);
+    if (!m) {
+      std::cerr << "tridem_bench: --method wants one of "
+                << tridem::spellings_of(tridem::kMethodNames) << "; got '" << method_flag << "'\n";
+      return 2;
+    }
+    g_method.method = *m;
+  }
+  if (!test_flag.empty()) {
+    const auto t = tridem::value_in(tridem::kContactTestNames, test_flag);
+    if (!t) {
+      std::cerr << "tridem_bench: --contact_test wants one of "
+                << tridem::spellings_of(tridem::kContactTestNames) << "; got '" << test_flag
+                << "'\n";
+      return 2;
+    }
+    g_method.contact_test = *t;
+  }
+  g_method.bbox_prefilter = prefilter_flag != "0";
+  const std::string method_tag =
+      g_method.method == tridem::Method::Grid ? "" : "/" + std::string(tridem::method_name(g_method.method));
 
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
@@ -257,7 +294,10 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("tridem_build_type", TRIDEM_BENCH_BUILD_TYPE);
   benchmark::AddCustomContext("tridem_version", TRIDEM_VERSION);
   benchmark::AddCustomContext("gpu", tridem::cuda_device_description());
-  benchmark::AddCustomContext("scene", "dense_pile(n), grid broad phase");
+  benchmark::AddCustomContext("scene", "dense_pile(n), method " +
+                                           tridem::method_description(g_method.method,
+                                                                      g_method.contact_test,
+                                                                      g_method.bbox_prefilter));
 
   for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000},
                               std::size_t{1000000}, std::size_t{10000000}}) {
@@ -266,7 +306,7 @@ int main(int argc, char** argv) {
       const std::string size = "/n:" + std::to_string(n);
       const Work w = v.backend == Backend::Cuda ? gpu_work(n) : work(n);
       auto* bm = benchmark::RegisterBenchmark(
-          (std::string("dense_pile/") + v.name + size).c_str(), dense_pile_case, v, n,
+          (std::string("dense_pile/") + v.name + method_tag + size).c_str(), dense_pile_case, v, n,
           w.steps_per_iteration);
       const auto iters = std::max<std::int64_t>(
           1, std::llround(static_cast<double>(w.iterations) * iter_scale));

@@ -16,6 +16,9 @@ struct RunOptions {
   std::optional<std::string> out_dir;     ///< overrides [output] dir
   std::optional<Backend> backend;         ///< overrides [simulation] backend
   std::optional<std::int64_t> steps;      ///< overrides [simulation] steps
+  std::optional<Method> method;           ///< overrides [simulation] method
+  std::optional<ContactTest> contact_test; ///< overrides [simulation] contact_test
+  std::optional<bool> bbox_prefilter;     ///< overrides [simulation] bbox_prefilter
   bool force = false;                     ///< accept dt above dt_crit
   int threads = 0;                        ///< OpenMP threads, 0 = default
   bool progress = true;                   ///< bar on stderr when it is a terminal

@@ -14,8 +14,26 @@ namespace tridem {
 
 enum class Backend { Auto, Cpu, OpenMP, Cuda };
 enum class Precision { Double, Float };
-/// How candidate pairs are found. All give the same physics.
-enum class Method { Grid, AllPairs };
+/// How the pairs that get a force are found. grid and all-pairs list every pair whose
+/// boxes overlap and give the same physics; single-domain (the paper's single-core
+/// baseline: every pair tested) and decomposition (the paper's sub-domains) list only the
+/// pairs that pass the contact test (ContactTest).
+enum class Method { Grid, AllPairs, SingleDomain, Decomposition };
+/// The test the paper's methods use to decide which pairs get a force: the exact overlap
+/// (separating axes; then they agree with grid) or the paper's direct area method (a
+/// vertex of one triangle inside the other), which misses edge-crossing overlaps.
+enum class ContactTest { Exact, DirectArea };
+/// How the decomposition method cuts the domain: strips along x (the paper's 1D) or a
+/// grid of rows × columns (2D).
+enum class DecompositionLayout { Strips, Grid };
+
+/// [simulation.decomposition]: read here, used only by method = decomposition.
+struct DecompositionSettings {
+  DecompositionLayout layout = DecompositionLayout::Strips;
+  int rows = 0;        ///< 2D: initial sub-domain rows; 0 = chosen from the particle counts
+  int columns = 0;     ///< 2D: initial sub-domain columns; 0 = chosen likewise
+  int capacity = 256;  ///< most particles in a sub-domain, its overlap band included; >= 2
+};
 
 struct Material {
   std::string name;
@@ -45,6 +63,12 @@ struct SimulationSettings {
   Backend backend = Backend::Auto;
   Precision precision = Precision::Double;
   Method method = Method::Grid;
+  /// single-domain and decomposition only (other methods refuse a non-default value).
+  ContactTest contact_test = ContactTest::Exact;
+  /// single-domain and decomposition only: the paper's bounding-box test before the
+  /// contact test. It changes no result, only the time spent.
+  bool bbox_prefilter = true;
+  DecompositionSettings decomposition;
   double local_damping = 0;            ///< Cundall's α in [0, 1); 0 = off
   /// Verlet skin of the CUDA pair list, per side of a bounding box, as a fraction of the
   /// grid cell L: the list is rebuilt only when a box leaves its grown copy.

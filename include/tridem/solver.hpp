@@ -14,7 +14,8 @@ namespace tridem {
 /// The stages of one step, in the order they run.
 enum class Stage {
   Geometry,    ///< vertices and bounding boxes from the poses
-  BroadPhase,  ///< candidate pairs (cell grid or all pairs), contact history carried over
+  BroadPhase,  ///< pairs (cell grid or all pairs: boxes overlap; single-domain: every pair
+               ///< through the contact test), contact history carried over
   PairForces,  ///< exact overlap test and potential contact force of each candidate pair
   Accumulate,  ///< sum of the pair forces on each particle
   Integrate,   ///< symplectic Euler, prescribed motions, blow-up check

@@ -115,23 +115,10 @@ void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real
 template <class Real>
 void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool parallel,
                                 PairList& pairs) {
-  const auto n = static_cast<std::int64_t>(n_);
   if (method == Method::Grid) bin(b, parallel);
-#pragma omp parallel for schedule(dynamic, 256) if (parallel)
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::int64_t count = 0;
-    visit_candidates(static_cast<std::int32_t>(i), b, method, [&count](std::int32_t) { ++count; });
-    row_count_[i] = count;
-  }
-  exclusive_scan(row_count_, n_, pairs.offset);
-  grow_to(pairs.partner, pairs.count());
-#pragma omp parallel for schedule(dynamic, 256) if (parallel)
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::int64_t at = pairs.offset[i];
-    visit_candidates(static_cast<std::int32_t>(i), b, method,
-                     [&](std::int32_t j) { pairs.partner[at++] = j; });
-    sort_row(pairs.partner.data(), pairs.offset[i], pairs.offset[i + 1]);
-  }
+  fill_rows(n_, parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
+    visit_candidates(i, b, method, emit);
+  });
 }
 
 template class CandidatePairs<float>;

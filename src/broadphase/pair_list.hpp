@@ -53,4 +53,28 @@ inline void grow_to(Vec& v, std::int64_t needed) {
 void exclusive_scan(const std::vector<std::int64_t>& counts, std::size_t n,
                     std::vector<std::int64_t>& offset);
 
+/// Fills `pairs` with the rows of n emitters: visit_row(i, emit) calls emit(j) for every
+/// partner j of emitter i, the same ones each time. It runs twice, to count each row
+/// (into `row_count`, n entries) and then to fill it, so that every row has its own place
+/// whatever the thread that computes it; rows are then sorted by partner.
+template <class VisitRow>
+void fill_rows(std::size_t n, bool parallel, std::vector<std::int64_t>& row_count,
+               PairList& pairs, VisitRow&& visit_row) {
+  const auto rows = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(dynamic, 256) if (parallel)
+  for (std::int64_t i = 0; i < rows; ++i) {
+    std::int64_t count = 0;
+    visit_row(static_cast<std::int32_t>(i), [&count](std::int32_t) { ++count; });
+    row_count[i] = count;
+  }
+  exclusive_scan(row_count, n, pairs.offset);
+  grow_to(pairs.partner, pairs.count());
+#pragma omp parallel for schedule(dynamic, 256) if (parallel)
+  for (std::int64_t i = 0; i < rows; ++i) {
+    std::int64_t at = pairs.offset[i];
+    visit_row(static_cast<std::int32_t>(i), [&](std::int32_t j) { pairs.partner[at++] = j; });
+    sort_row(pairs.partner.data(), pairs.offset[i], pairs.offset[i + 1]);
+  }
+}
+
 }  // namespace tridem

@@ -48,6 +48,9 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   if (options.out_dir) scene.output.dir = *options.out_dir;
   if (options.backend) scene.simulation.backend = *options.backend;
   if (options.steps) scene.simulation.steps = *options.steps;
+  if (options.method) scene.simulation.method = *options.method;
+  if (options.contact_test) scene.simulation.contact_test = *options.contact_test;
+  if (options.bbox_prefilter) scene.simulation.bbox_prefilter = *options.bbox_prefilter;
 
   SolverConfig config;
   config.backend = scene.simulation.backend;

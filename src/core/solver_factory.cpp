@@ -3,6 +3,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 
 #include <omp.h>
@@ -34,6 +35,18 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
   throw RunError("internal error: unresolved backend");
 }
 
+/// The method settings again, with the config's method (a command line may have replaced
+/// the scene's): a scene built in code has not been through the reader.
+void check_method(const Scene& scene, Method method) {
+  const std::string source = scene.source.empty() ? "scene built in code" : scene.source;
+  const SimulationSettings& s = scene.simulation;
+  if (auto why = method_settings_conflict(method, s.contact_test, s.bbox_prefilter))
+    throw SceneError(source + ": [simulation] " + *why);
+  if (method == Method::Decomposition)
+    throw SceneError(source + ": method \"decomposition\" is not implemented yet; use "
+                              "\"single-domain\" (the paper's baseline) or \"grid\"");
+}
+
 }  // namespace
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config) {
@@ -43,6 +56,7 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& conf
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& model,
                                     const TimeStep& ts, const SolverConfig& config) {
+  check_method(scene, config.method);
   check_time_step(scene, ts, config.force);
   const Backend backend = resolve_backend(config.backend);
   if (config.precision == Precision::Float)

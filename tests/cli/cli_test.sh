@@ -58,6 +58,17 @@ expect_ok "$tridem" run pile.toml --quiet --out other --steps 10 --backend cpu
 grep -q "cpu (serial)" out.txt || fail "--backend cpu not used"
 [ "$(cut -d, -f1 other/energy.csv | tail -1)" = "10" ] || fail "--steps not used"
 
+# --method overrides the scene's; a method's settings are checked against the one run.
+expect_ok "$tridem" run pile.toml --quiet --out all_pairs --steps 5 --method all-pairs
+grep -q "all-pairs" out.txt || fail "--method all-pairs not used"
+expect_ok "$tridem" run pile.toml --quiet --out single --steps 5 --backend cpu --method single-domain \
+  --contact-test direct-area --no-bbox-prefilter
+grep -q "single-domain (contact test direct-area, bbox pre-filter off)" out.txt ||
+  fail "--method single-domain --contact-test direct-area --no-bbox-prefilter not used"
+expect_error "not implemented yet" "$tridem" run pile.toml --quiet --steps 5 --method decomposition
+expect_error "contact_test" "$tridem" run pile.toml --quiet --steps 5 --contact-test direct-area
+expect_error "bbox_prefilter" "$tridem" run pile.toml --quiet --steps 5 --no-bbox-prefilter
+
 # [output] vtk_encoding = "ascii" writes text frames, which render reads too.
 sed 's/every = 100/every = 100\nvtk_encoding = "ascii"/' pile.toml >ascii.toml
 expect_ok "$tridem" run ascii.toml --quiet --out ascii_out --steps 100

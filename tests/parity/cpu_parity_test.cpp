@@ -1,7 +1,8 @@
 // Every CPU way of computing a step against the serial reference: OpenMP must reproduce it
 // bit for bit (same sums in the same order), all-pairs must find the same contacts as the
-// cell grid (rounding apart: its pairs are summed in another order), and float must stay
-// close over a short run.
+// cell grid (rounding apart: its pairs are summed in another order), single-domain with
+// the exact test must reproduce the grid bit for bit, and float must stay close over a
+// short run.
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 
@@ -41,6 +42,47 @@ TEST(CpuParity, AllPairsAgreesWithCellGrid) {
     EXPECT_NEAR(grid.y[i], all.y[i], 1e-9) << "particle " << i;
     EXPECT_NEAR(grid.theta[i], all.theta[i], 1e-7) << "particle " << i;
   }
+}
+
+/// The pile run to `steps` with the single-domain method and the given settings.
+Snapshot single_domain(Scene s, Backend backend, std::int64_t steps, ContactTest test,
+                       bool prefilter) {
+  s.simulation.contact_test = test;
+  s.simulation.bbox_prefilter = prefilter;
+  return test::run_to(s, backend, steps, Precision::Double, Method::SingleDomain);
+}
+
+// With the exact test, single-domain drops only pairs whose force pair_force would find
+// zero by the same separating-axis arithmetic (and whose slip it would reset, as a pair
+// absent from the list gets), in rows the grid's emitter rule orders the same way: the
+// same sums in the same order, so the grid's results bit for bit. (The two tests are one
+// expression, cross(d, q - p); a compiler that contracted it to a fused multiply-add in
+// one place and not the other could flip a pair that touches to within rounding.)
+TEST(CpuParity, SingleDomainExactReproducesGridBitForBit) {
+  const Scene s = test::jostling_pile(12, 8);
+  const Snapshot grid = test::run_to(s, Backend::Cpu, 300);
+  for (bool prefilter : {true, false}) {
+    SCOPED_TRACE(prefilter ? "bbox pre-filter on" : "bbox pre-filter off");
+    test::expect_identical(grid, single_domain(s, Backend::Cpu, 300, ContactTest::Exact, prefilter));
+  }
+  EXPECT_GT(grid.contacts.size(), 20u) << "the pile must be in contact at the last step";
+}
+
+TEST(CpuParity, SingleDomainOpenMPReproducesSerialBitForBit) {
+  const Scene s = test::jostling_pile(10, 6);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(3);
+  for (ContactTest t : {ContactTest::Exact, ContactTest::DirectArea})
+    test::expect_identical(single_domain(s, Backend::Cpu, 200, t, true),
+                           single_domain(s, Backend::OpenMP, 200, t, true));
+  omp_set_num_threads(saved);
+}
+
+// The pre-filter only skips pairs whose boxes are apart, which neither test passes.
+TEST(CpuParity, BboxPrefilterChangesNoResult) {
+  const Scene s = test::jostling_pile(10, 6);
+  test::expect_identical(single_domain(s, Backend::Cpu, 200, ContactTest::DirectArea, true),
+                         single_domain(s, Backend::Cpu, 200, ContactTest::DirectArea, false));
 }
 
 TEST(CpuParity, FloatStaysCloseToDoubleOverShortRun) {

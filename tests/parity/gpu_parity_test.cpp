@@ -76,6 +76,41 @@ TEST(GpuParity, AllPairsAgreesWithSerial) {
                    "all-pairs");
 }
 
+/// The pile run with the single-domain method and the given contact test and pre-filter.
+Snapshot single_domain(Scene s, Backend backend, std::int64_t steps, ContactTest test,
+                       bool prefilter = true) {
+  s.simulation.contact_test = test;
+  s.simulation.bbox_prefilter = prefilter;
+  return test::run_to(s, backend, steps, Precision::Double, Method::SingleDomain);
+}
+
+// The paper's kernel (blocks of 64, tiles in shared memory) against the CPU's
+// single-domain detection: the same rows, so the same agreement as the grid's.
+TEST(GpuParity, SingleDomainAgreesWithSerial) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = test::jostling_pile(20, 12);  // 243 particles: the last tile is partial
+  for (ContactTest t : {ContactTest::Exact, ContactTest::DirectArea}) {
+    const std::string what = std::string("single-domain, ") + (t == ContactTest::Exact ? "exact" : "direct-area");
+    expect_agreement(single_domain(s, Backend::Cpu, 200, t), single_domain(s, Backend::Cuda, 200, t),
+                     what.c_str());
+  }
+}
+
+// As on the CPU: with the exact test the list lacks only pairs that add exact zeros, so
+// the GPU's grid (with its skin) and single-domain agree bit for bit; the pre-filter
+// changes nothing either.
+TEST(GpuParity, SingleDomainExactReproducesCudaGridBitForBit) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = test::jostling_pile(20, 12);
+  const Snapshot grid = test::run_to(s, Backend::Cuda, 300);
+  for (bool prefilter : {true, false}) {
+    SCOPED_TRACE(prefilter ? "bbox pre-filter on" : "bbox pre-filter off");
+    test::expect_identical(grid, single_domain(s, Backend::Cuda, 300, ContactTest::Exact, prefilter));
+  }
+  test::expect_identical(single_domain(s, Backend::Cuda, 300, ContactTest::DirectArea, true),
+                         single_domain(s, Backend::Cuda, 300, ContactTest::DirectArea, false));
+}
+
 TEST(GpuParity, TwoRunsAreBitIdentical) {
   TRIDEM_SKIP_WITHOUT_GPU();
   const Scene s = test::jostling_pile(20, 12);

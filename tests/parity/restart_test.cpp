@@ -15,16 +15,19 @@ namespace {
 
 constexpr std::int64_t kSteps = 400;
 
-std::unique_ptr<Solver> solver_for(const Scene& s, Backend backend, Precision precision) {
+std::unique_ptr<Solver> solver_for(const Scene& s, Backend backend, Precision precision,
+                                   Method method = Method::Grid) {
   SolverConfig config;
   config.backend = backend;
   config.precision = precision;
+  config.method = method;
   return make_solver(s, config);
 }
 
 /// The state after kSteps/2, through the checkpoint encoding and back.
-SolverState halfway_state(const Scene& s, Backend backend, Precision precision) {
-  auto first = solver_for(s, backend, precision);
+SolverState halfway_state(const Scene& s, Backend backend, Precision precision,
+                          Method method = Method::Grid) {
+  auto first = solver_for(s, backend, precision, method);
   first->advance(kSteps / 2);
   Checkpoint c;
   first->save_state(c.state);
@@ -54,20 +57,24 @@ void expect_bit_identical(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.pair_slip, b.pair_slip);
 }
 
-void expect_restart_exact(Backend backend, Precision precision) {
+void expect_restart_exact(Backend backend, Precision precision, Method method = Method::Grid) {
   const Scene s = test::jostling_pile(12, 8);
-  auto straight = solver_for(s, backend, precision);
+  auto straight = solver_for(s, backend, precision, method);
   const SolverState expected = final_state(*straight);
 
-  const SolverState half = halfway_state(s, backend, precision);
+  const SolverState half = halfway_state(s, backend, precision, method);
   ASSERT_GT(half.pairs(), 10u) << "the pile must carry contact history at the restart";
-  auto restarted = solver_for(s, backend, precision);
+  auto restarted = solver_for(s, backend, precision, method);
   restarted->load_state(half);
   expect_bit_identical(final_state(*restarted), expected);
 }
 
 TEST(Restart, SerialDoubleIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Double); }
 TEST(Restart, SerialFloatIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Float); }
+
+TEST(Restart, SingleDomainIsBitIdentical) {
+  expect_restart_exact(Backend::Cpu, Precision::Double, Method::SingleDomain);
+}
 
 TEST(Restart, OpenMPIsBitIdentical) {
   const int saved = omp_get_max_threads();
@@ -99,6 +106,11 @@ TEST(GpuRestart, DoubleIsBitIdentical) {
 TEST(GpuRestart, FloatIsBitIdentical) {
   TRIDEM_SKIP_WITHOUT_GPU();
   expect_restart_exact(Backend::Cuda, Precision::Float);
+}
+
+TEST(GpuRestart, SingleDomainIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Double, Method::SingleDomain);
 }
 
 // The GPU's list also holds pairs within its skin that do not touch; its saved history

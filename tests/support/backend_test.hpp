@@ -1,9 +1,13 @@
 #pragma once
-// Tests that run on every backend: a TEST_P over tridem::Backend, instantiated once per
-// backend. Instantiate the CUDA one with the prefix Gpu, so that CTest labels it `gpu`:
+// Tests that run on every backend: a TEST_P over test::SolverChoice (a backend and a
+// method), instantiated once per choice. Instantiate the CUDA ones with the prefix Gpu, so
+// that CTest labels them `gpu`:
 //
 //   INSTANTIATE_TEST_SUITE_P(Cpu, Suite, ::testing::Values(Backend::Cpu));
 //   INSTANTIATE_TEST_SUITE_P(Gpu, Suite, ::testing::Values(Backend::Cuda));
+//
+// or TRIDEM_INSTANTIATE_SOLVERS(Suite) for both backends with the cell grid and with the
+// paper's single-domain method.
 //
 // Where no GPU is usable, the CUDA instances skip themselves in SetUp, with the reason;
 // GoogleTest then does not run the test body. No name generator on purpose: GoogleTest
@@ -12,6 +16,8 @@
 // the CTest name would keep a "# GetParam() = ..." tail).
 #include "support/gpu.hpp"
 #include "tridem/scene.hpp"
+#include "tridem/setting_names.hpp"
+#include "tridem/solver.hpp"
 
 #include <gtest/gtest.h>
 #include <ostream>
@@ -33,11 +39,46 @@ inline void PrintTo(Backend backend, std::ostream* os) {
 
 namespace tridem::test {
 
-class BackendTest : public ::testing::TestWithParam<Backend> {
+/// What a test runs on. Made from a Backend alone, it takes the cell grid.
+struct SolverChoice {
+  Backend backend = Backend::Cpu;
+  Method method = Method::Grid;
+
+  SolverChoice(Backend b, Method m = Method::Grid) : backend(b), method(m) {}  // NOLINT
+
+  SolverConfig config() const {
+    SolverConfig c;
+    c.backend = backend;
+    c.method = method;
+    return c;
+  }
+};
+
+/// "cuda", or "cpu-single-domain" for another method than the grid (the CTest name's tail).
+inline void PrintTo(const SolverChoice& c, std::ostream* os) {
+  PrintTo(c.backend, os);
+  if (c.method != Method::Grid) *os << "-" << method_name(c.method);
+}
+
+class BackendTest : public ::testing::TestWithParam<SolverChoice> {
  protected:
   void SetUp() override {
-    if (GetParam() == Backend::Cuda) TRIDEM_SKIP_WITHOUT_GPU();
+    if (GetParam().backend == Backend::Cuda) TRIDEM_SKIP_WITHOUT_GPU();
   }
 };
 
 }  // namespace tridem::test
+
+#define TRIDEM_INSTANTIATE_SOLVERS(Suite)                                                   \
+  INSTANTIATE_TEST_SUITE_P(Cpu, Suite,                                                      \
+                           ::testing::Values(::tridem::test::SolverChoice(                  \
+                                                 ::tridem::Backend::Cpu),                   \
+                                             ::tridem::test::SolverChoice(                  \
+                                                 ::tridem::Backend::Cpu,                    \
+                                                 ::tridem::Method::SingleDomain)));         \
+  INSTANTIATE_TEST_SUITE_P(Gpu, Suite,                                                      \
+                           ::testing::Values(::tridem::test::SolverChoice(                  \
+                                                 ::tridem::Backend::Cuda),                  \
+                                             ::tridem::test::SolverChoice(                  \
+                                                 ::tridem::Backend::Cuda,                   \
+                                                 ::tridem::Method::SingleDomain)))

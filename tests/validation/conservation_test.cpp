@@ -40,8 +40,7 @@ Scene colliding_cloud(int side) {
 
 TEST_P(Conservation, CollidingCloudConservesMomentum) {
   const Scene s = colliding_cloud(12);
-  SolverConfig config;
-  config.backend = GetParam();
+  SolverConfig config = GetParam().config();
   auto solver = make_solver(s, config);
   Snapshot snap;
   solver->snapshot(snap, false);
@@ -69,8 +68,7 @@ TEST_P(Conservation, CollidingCloudConservesMomentum) {
   EXPECT_LT(kinetic, 0.9 * before.kinetic) << "friction and damping must dissipate";
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, Conservation, ::testing::Values(Backend::Cpu));
-INSTANTIATE_TEST_SUITE_P(Gpu, Conservation, ::testing::Values(Backend::Cuda));
+TRIDEM_INSTANTIATE_SOLVERS(Conservation);
 
 }  // namespace
 }  // namespace tridem

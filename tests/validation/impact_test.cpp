@@ -14,14 +14,13 @@ using Impact = test::BackendTest;
 
 /// Relative speed after over before for two equal right triangles whose vertical faces
 /// meet, approaching at 2 m/s.
-double restitution(double damping, double dt, Backend backend) {
+double restitution(double damping, double dt, const test::SolverChoice& choice) {
   Scene s = test::empty_scene(1e8, 1000, 0.0, damping);
   if (dt > 0) s.simulation.dt = dt;
   const double gap = 0.005;
   s.triangles.push_back(test::triangle({-gap, -0.5}, {-gap, 0.5}, {-1 - gap, 0}, {1, 0}));
   s.triangles.push_back(test::triangle({gap, 0.5}, {gap, -0.5}, {1 + gap, 0}, {-1, 0}));
-  SolverConfig config;
-  config.backend = backend;
+  SolverConfig config = choice.config();
   auto solver = make_solver(s, config);
   Snapshot snap;
   // Contact lasts about π/ω with ω = √(6p/m_eff) ≈ 1.5e3 /s: 2 ms; run well past it.
@@ -49,8 +48,7 @@ TEST_P(Impact, DampingGivesPredictedRestitution) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, Impact, ::testing::Values(Backend::Cpu));
-INSTANTIATE_TEST_SUITE_P(Gpu, Impact, ::testing::Values(Backend::Cuda));
+TRIDEM_INSTANTIATE_SOLVERS(Impact);
 
 }  // namespace
 }  // namespace tridem

@@ -18,14 +18,13 @@ struct Slide {
   double displacement;  ///< over the measuring window
 };
 
-Slide slide(double mu, Backend backend) {
+Slide slide(double mu, const test::SolverChoice& choice) {
   Scene s = test::empty_scene(1e8, 2000, mu, 0.3);
   s.simulation.gravity = {kG * std::sin(kAngle), -kG * std::cos(kAngle)};
   s.triangles.push_back(test::floor_triangle(-5, 5));
   // A flat block lying on its long edge, just touching the floor.
   s.triangles.push_back(test::triangle({-0.1, 0}, {0.1, 0}, {0, 0.05}));
-  SolverConfig config;
-  config.backend = backend;
+  SolverConfig config = choice.config();
   auto solver = make_solver(s, config);
   Snapshot snap;
   // Let the normal contact settle, then measure v over a fixed window.
@@ -57,8 +56,7 @@ TEST_P(Incline, BlockHoldsWhenFrictionExceedsSlope) {
   EXPECT_LT(std::abs(r.acceleration), 1e-3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, Incline, ::testing::Values(Backend::Cpu));
-INSTANTIATE_TEST_SUITE_P(Gpu, Incline, ::testing::Values(Backend::Cuda));
+TRIDEM_INSTANTIATE_SOLVERS(Incline);
 
 }  // namespace
 }  // namespace tridem

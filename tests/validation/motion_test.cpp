@@ -17,8 +17,7 @@ TEST_P(MotionTest, FreeFallAndSpinFollowTheAnalyticSolution) {
   s.simulation.gravity = {0.5, -9.81};
   s.simulation.dt = 1e-5;
   s.triangles.push_back(test::triangle({0, 0}, {0.1, 0}, {0, 0.1}, {1.0, 2.0}, Motion::Free, 3.0));
-  SolverConfig config;
-  config.backend = GetParam();
+  SolverConfig config = GetParam().config();
   auto solver = make_solver(s, config);
   Snapshot start, end;
   solver->snapshot(start, false);
@@ -43,8 +42,7 @@ TEST_P(MotionTest, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
   s.triangles.push_back(test::triangle({0.05, -0.05}, {0.15, 0.0}, {0.05, 0.05}));
   s.triangles.push_back(test::triangle({5, 5}, {5.1, 5}, {5, 5.1}, {0, 0}, Motion::Prescribed,
                                        2.0));
-  SolverConfig config;
-  config.backend = GetParam();
+  SolverConfig config = GetParam().config();
   auto solver = make_solver(s, config);
   Snapshot start, end;
   solver->snapshot(start, false);
@@ -66,13 +64,13 @@ TEST(Motion, LocalDampingOpposesVelocityByAFractionOfTheForce) {
 }
 
 TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {
-  auto kinetic_after = [backend = GetParam()](double alpha) {
+  auto kinetic_after = [choice = GetParam()](double alpha) {
     Scene s = test::empty_scene(1e6, 1000);
     s.simulation.gravity = {0, -9.81};
     s.simulation.local_damping = alpha;
     s.triangles.push_back(test::floor_triangle(-1, 1));
     s.triangles.push_back(test::triangle({-0.05, 0.05}, {0.05, 0.05}, {0, 0.12}));
-    const Snapshot snap = test::run_to(s, backend, 20000);
+    const Snapshot snap = test::run_to(s, choice.backend, 20000, Precision::Double, choice.method);
     return 0.5 * snap.mass[1] * (snap.vx[1] * snap.vx[1] + snap.vy[1] * snap.vy[1]);
   };
   const double undamped = kinetic_after(0.0), damped = kinetic_after(0.7);
@@ -80,8 +78,7 @@ TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {
   EXPECT_LT(damped, 1e-3 * undamped);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, MotionTest, ::testing::Values(Backend::Cpu));
-INSTANTIATE_TEST_SUITE_P(Gpu, MotionTest, ::testing::Values(Backend::Cuda));
+TRIDEM_INSTANTIATE_SOLVERS(MotionTest);
 
 }  // namespace
 }  // namespace tridem

@@ -19,8 +19,7 @@ TEST_P(Resting, TriangleComesToRestOnFixedFloor) {
   // Base 0.2 on the floor side, height 0.1, dropped from 5 cm with a small spin.
   s.triangles.push_back(test::triangle({-0.1, 0.05}, {0.1, 0.05}, {0, 0.15}, {0, 0},
                                        Motion::Free, 0.5));
-  SolverConfig config;
-  config.backend = GetParam();
+  SolverConfig config = GetParam().config();
   auto solver = make_solver(s, config);
   solver->advance(static_cast<std::int64_t>(1.0 / solver->dt()));
   Snapshot snap;
@@ -38,8 +37,7 @@ TEST_P(Resting, TriangleComesToRestOnFixedFloor) {
   EXPECT_EQ(snap.x[0], 0.0);  // fixed means fixed
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, Resting, ::testing::Values(Backend::Cpu));
-INSTANTIATE_TEST_SUITE_P(Gpu, Resting, ::testing::Values(Backend::Cuda));
+TRIDEM_INSTANTIATE_SOLVERS(Resting);
 
 }  // namespace
 }  // namespace tridem

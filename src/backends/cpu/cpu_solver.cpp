@@ -6,6 +6,7 @@
 
 #include "physics/integrate.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -35,7 +36,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       local_damping_(static_cast<Real>(scene.simulation.local_damping)),
       penetration_limit_(static_cast<Real>(scene.simulation.max_penetration)),
       n_materials_(static_cast<int>(scene.materials.size())),
-      finder_(model.longest_edge, model.motion) {
+      finder_(model.longest_edge, model.motion),
+      filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
+      single_domain_(model.longest_edge, model.motion, filter_) {
   if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].resize(n_);
@@ -93,7 +96,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
 template <class Real>
 std::string CpuSolver<Real>::description() const {
   const char* real = sizeof(Real) == 8 ? "double" : "float";
-  const char* method = method_ == Method::Grid ? "grid" : "all-pairs";
+  const std::string method = method_description(method_, filter_.test, filter_.bbox_prefilter);
   if (parallel_)
     return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
   return fmt::format("cpu (serial), {}, {}", real, method);
@@ -141,8 +144,14 @@ void CpuSolver<Real>::update_geometry() {
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
-  finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
-               pairs_);
+  if (method_ == Method::SingleDomain)
+    single_domain_.find({{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
+                         {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
+                         lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()},
+                        parallel_, pairs_);
+  else
+    finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
+                 pairs_);
   grow_to(slip_, pairs_.count());
   grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);

@@ -4,6 +4,7 @@
 // particle's row), and every sum runs in a fixed order (pairs ascending), so the OpenMP
 // solver reproduces the serial one bit for bit; that is what the parity tests check.
 #include "broadphase/candidate_pairs.hpp"
+#include "broadphase/single_domain.hpp"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
 #include "physics/contact_force.hpp"
@@ -64,8 +65,12 @@ class CpuSolver final : public Solver {
   // Geometry of the current step.
   std::vector<Real> vert_x_[3], vert_y_[3];
   std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;
-  // Pairs of this step and the last, with their contact history.
+  // Pairs of this step and the last, with their contact history. The method picks the
+  // finder: the cell grid and all-pairs list box-overlapping pairs, single-domain only
+  // those that pass its contact test.
   CandidatePairs<Real> finder_;
+  ContactFilter filter_;
+  SingleDomainPairs<Real> single_domain_;
   PairList pairs_, old_pairs_;
   std::vector<physics::PairSlip<Real>> slip_, old_slip_;
   std::vector<physics::PairForce<Real>> result_;

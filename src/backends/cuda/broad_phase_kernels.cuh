@@ -7,6 +7,7 @@
 // twice (count, fill), so no two threads write the same memory and the result does not
 // depend on scheduling.
 #include "backends/cuda/grid_types.cuh"
+#include "backends/cuda/row_history.cuh"
 #include "broadphase/grid_rules.hpp"
 #include "broadphase/row_sort.hpp"
 
@@ -147,31 +148,16 @@ __global__ void count_rows_kernel(CandidateSearch<Real> c, int* count) {
   count[i] = k;
 }
 
-/// The rows of the new list, partners ascending, each pair with its contact history: the
-/// slip stored for the same pair in the emitter's old row (both sorted by partner), or
-/// zero for a new pair.
+/// The rows of the new list, partners ascending, each pair with its contact history.
 template <class Real>
-__global__ void fill_rows_kernel(CandidateSearch<Real> c, const int* offset, int* partner,
-                                 int* emitter, int* slot_id, physics::PairSlip<Real>* slip,
-                                 const int* old_offset, const int* old_partner,
-                                 const physics::PairSlip<Real>* old_slip) {
+__global__ void fill_rows_kernel(CandidateSearch<Real> c, RowHistory<Real> h) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= c.n) return;
-  const int begin = offset[i], end = offset[i + 1];
+  const int begin = h.offset[i], end = h.offset[i + 1];
   int at = begin;
-  visit_candidates(c, i, [&](int j) { partner[at++] = j; });
-  insertion_sort(partner, begin, end);
-  int old = old_offset[i];
-  const int old_end = old_offset[i + 1];
-  for (int s = begin; s < end; ++s) {
-    const int j = partner[s];
-    while (old < old_end && old_partner[old] < j) ++old;
-    physics::PairSlip<Real> h{};
-    if (old < old_end && old_partner[old] == j) h = old_slip[old];
-    slip[s] = h;
-    emitter[s] = i;
-    slot_id[s] = s;
-  }
+  visit_candidates(c, i, [&](int j) { h.partner[at++] = j; });
+  insertion_sort(h.partner, begin, end);
+  carry_history(i, h);
 }
 
 /// reverse_offset[p] = first position of partner p in the partner-sorted slots.

@@ -6,9 +6,11 @@
 #include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <climits>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 namespace tridem::cuda {
@@ -74,8 +76,10 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
 
   const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
+  filter_ = {scene.simulation.contact_test, scene.simulation.bbox_prefilter};
   pairs_ = std::make_unique<PairListBuilder<Real>>(
-      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, reserve, stream_);
+      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, reserve,
+      stream_);
   status_.allocate(1);
   host_status_.allocate(1);
   staging_.allocate(kStateArrays * n_);
@@ -146,9 +150,15 @@ void CudaSolver<Real>::upload_model(const ParticleModel& model) {
     vert_x_[k].allocate(n_);
     vert_y_[k].allocate(n_);
   }
-  for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_, &build_lo_x_, &build_lo_y_, &build_hi_x_,
-                  &build_hi_y_})
-    b->allocate(n_);
+  for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_}) b->allocate(n_);
+  // Until a grid build sets them, the build boxes are the whole plane. A single-domain
+  // solver never sets them (it rebuilds every step), so the geometry kernel, which
+  // compares every box with its build box, then never raises the rebuild flag: no atomic
+  // per particle and step on one word.
+  const std::vector<Real> lowest(n_, std::numeric_limits<Real>::lowest());
+  const std::vector<Real> highest(n_, std::numeric_limits<Real>::max());
+  for (auto* b : {&build_lo_x_, &build_lo_y_}) b->upload(lowest);
+  for (auto* b : {&build_hi_x_, &build_hi_y_}) b->upload(highest);
 }
 
 template <class Real>
@@ -206,7 +216,9 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
   StepStatus* status = status_.data();
   StepStatus* host = host_status_.data();
   for (std::int64_t s = 0; s < steps; ++s) {
-    if (rebuild_) {
+    // A single-domain list holds the pairs that pass the contact test at this step's
+    // positions only: no skin can keep it valid, so it is rebuilt every step.
+    if (rebuild_ || pairs_->single_step()) {
       pairs_->rebuild(p, margin_);
       rebuild_ = false;
     }
@@ -320,7 +332,8 @@ std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
-         (method_ == Method::Grid ? "grid" : "all-pairs") + skin;
+         method_description(method_, filter_.test, filter_.bbox_prefilter) +
+         (pairs_->single_step() ? std::string(", list rebuilt every step") : std::string(skin));
 }
 
 template <class Real>

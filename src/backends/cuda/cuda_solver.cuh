@@ -1,7 +1,8 @@
 #pragma once
 // The CUDA solver: the whole time loop on one GPU with the single-source physics. The
 // state stays on the GPU; only snapshots (output steps) copy it back. One step is
-//   [pair-list build, when some particle has left its build box]
+//   [pair-list build, when some particle has left its build box; every step for the
+//    single-domain method]
 //   pair forces (thread per pair) → gather + runaway check (thread per particle)
 //   → integrate + geometry of the new state (thread per particle) → status to the host,
 // the CPU solver's stages with the same sums in the same order, so that both agree to
@@ -51,6 +52,7 @@ class CudaSolver final : public Solver {
 
   std::size_t n_;
   Method method_;
+  ContactFilter filter_;  ///< single-domain's contact test
   Real margin_;  ///< skin on each side of a build box
   StepParams<Real> params_{};
   std::int64_t step_ = 0;

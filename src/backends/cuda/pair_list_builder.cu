@@ -31,9 +31,13 @@ long long max_cells(int n) { return 4ll * n + 16; }
 
 template <class Real>
 PairListBuilder<Real>::PairListBuilder(const std::vector<std::uint8_t>& small, Method method,
-                                       Real cell, std::size_t pair_capacity,
-                                       cudaStream_t stream)
-    : n_(static_cast<int>(small.size())), method_(method), cell_(cell), stream_(stream) {
+                                       Real cell, ContactFilter filter,
+                                       std::size_t pair_capacity, cudaStream_t stream)
+    : n_(static_cast<int>(small.size())),
+      method_(method),
+      cell_(cell),
+      filter_(filter),
+      stream_(stream) {
   beyond_ = static_cast<unsigned int>(max_cells(n_));
   cell_bits_ = bits_for(beyond_);
   particle_bits_ = bits_for(static_cast<unsigned long long>(n_));
@@ -122,8 +126,48 @@ CandidateSearch<Real> PairListBuilder<Real>::search(const ParticleArrays<Real>& 
 }
 
 template <class Real>
+SingleDomainSearch<Real> PairListBuilder<Real>::single_domain_search(
+    const ParticleArrays<Real>& p) const {
+  return {n_,
+          p.free,
+          small_.data(),
+          {{p.vert_x[0], p.vert_x[1], p.vert_x[2]},
+           {p.vert_y[0], p.vert_y[1], p.vert_y[2]},
+           p.lo_x,
+           p.lo_y,
+           p.hi_x,
+           p.hi_y},
+          large_.data(),
+          n_large_,
+          filter_};
+}
+
+template <class Real>
 void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) {
-  const CandidateSearch<Real> c = search(p);
+  if (method_ == Method::SingleDomain) {
+    // The paper's kernel: blocks of 64 threads, one per particle.
+    const SingleDomainSearch<Real> c = single_domain_search(p);
+    const int tiles = (n_ + kSingleDomainBlock - 1) / kSingleDomainBlock;
+    single_domain_count_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(
+        c, row_count_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_count_kernel");
+    size_rows();
+    single_domain_fill_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(c, history());
+    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_fill_kernel");
+  } else {
+    const CandidateSearch<Real> c = search(p);
+    count_candidates(c, margin, p);
+    size_rows();
+    fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, history());
+    TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
+  }
+  index_rows();
+  ++builds_;
+}
+
+template <class Real>
+void PairListBuilder<Real>::count_candidates(const CandidateSearch<Real>& c, Real margin,
+                                             const ParticleArrays<Real>& p) {
   grow_boxes_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, small_.data(), margin,
                                                                 bounds_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("grow_boxes_kernel");
@@ -145,6 +189,10 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) 
   }
   count_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, row_count_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("count_rows_kernel");
+}
+
+template <class Real>
+void PairListBuilder<Real>::size_rows() {
   offset_.swap(old_offset_);
   partner_.swap(old_partner_);
   slip_.swap(old_slip_);
@@ -160,18 +208,23 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) 
   if (static_cast<std::size_t>(count_) > partner_.size() ||
       static_cast<std::size_t>(count_) > slip_.size())
     reserve_pairs(static_cast<std::size_t>(count_) + static_cast<std::size_t>(count_) / 5 + 1024);
-  fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
-      c, offset_.data(), partner_.data(), emitter_.data(), slot_id_.data(), slip_.data(),
-      old_offset_.data(), old_partner_.data(), old_slip_.data());
-  TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
-  bytes = temp_.size();
+}
+
+template <class Real>
+RowHistory<Real> PairListBuilder<Real>::history() const {
+  return {offset_.data(),     partner_.data(),     emitter_.data(),    slot_id_.data(),
+          slip_.data(),       old_offset_.data(),  old_partner_.data(), old_slip_.data()};
+}
+
+template <class Real>
+void PairListBuilder<Real>::index_rows() {
+  std::size_t bytes = temp_.size();
   TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
       temp_.data(), bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
       reverse_slot_.data(), count_, 0, particle_bits_, stream_));
   reverse_offset_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(sorted_partner_.data(), count_,
                                                                 n_, reverse_offset_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("reverse_offset_kernel");
-  ++builds_;
 }
 
 template <class Real>

@@ -1,11 +1,16 @@
 #pragma once
-// The candidate-pair list of the CUDA solver and how it is rebuilt: sizes fixed at start
-// (grown only if a run packs denser than reserved), the build itself in
-// broad_phase_kernels.cuh. Between builds the list stays, and with it every pair's slot
-// and contact history: a pair is in the list as long as the boxes grown by the skin
-// overlap.
-#include "backends/cuda/grid_types.cuh"
+// The pair list of the CUDA solver and how it is rebuilt: sizes fixed at start (grown only
+// if a run packs denser than reserved). The pairs are found by the cell grid or all-pairs
+// (broad_phase_kernels.cuh) or by the paper's single-domain kernel
+// (single_domain_kernels.cuh); the rows, contact history and reverse index that follow are
+// one code for all. Between grid builds the list stays, and with it every pair's slot and
+// contact history: a pair is in the list as long as the boxes grown by the skin overlap.
+// A single-domain list holds only the pairs that passed the contact test at the positions
+// of its build, so it serves one step.
 #include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/grid_types.cuh"
+#include "backends/cuda/row_history.cuh"
+#include "backends/cuda/single_domain_kernels.cuh"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -16,13 +21,17 @@ namespace tridem::cuda {
 template <class Real>
 class PairListBuilder {
  public:
-  /// `small`, `free` per particle; `cell` the width of the widest build box.
+  /// `small` per particle; `cell` the width of the widest build box; `filter` the
+  /// contact test of method single-domain.
   PairListBuilder(const std::vector<std::uint8_t>& small, Method method, Real cell,
-                  std::size_t pair_capacity, cudaStream_t stream);
+                  ContactFilter filter, std::size_t pair_capacity, cudaStream_t stream);
 
-  /// A new list for the current boxes, grown by `margin`; carries the contact history
-  /// of the old list over. Synchronises once, to learn the number of pairs.
+  /// A new list for the current boxes, grown by `margin` (grid and all-pairs), or of the
+  /// pairs passing the contact test now (single-domain); carries the contact history of
+  /// the old list over. Synchronises once, to learn the number of pairs.
   void rebuild(const ParticleArrays<Real>& p, Real margin);
+  /// Whether a list serves only the step it was built for.
+  bool single_step() const { return method_ == Method::SingleDomain; }
 
   /// Replaces the list (and its history) by one given on the host: rows by emitter,
   /// partners ascending. The next rebuild carries its slips over.
@@ -43,10 +52,20 @@ class PairListBuilder {
   void reserve_pairs(std::size_t pairs);
   void size_temp_storage();
   CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
+  SingleDomainSearch<Real> single_domain_search(const ParticleArrays<Real>& p) const;
+  /// Grid or all-pairs: the counts of each row into row_count_.
+  void count_candidates(const CandidateSearch<Real>& c, Real margin, const ParticleArrays<Real>& p);
+  /// From row_count_: the offsets of the new rows (the old ones kept for the history), the
+  /// number of pairs (one synchronisation) and room for them.
+  void size_rows();
+  RowHistory<Real> history() const;
+  /// The reverse index of the new rows.
+  void index_rows();
 
   int n_;
   Method method_;
   Real cell_;
+  ContactFilter filter_;
   cudaStream_t stream_;
   unsigned int beyond_;  ///< key of particles outside the grid; > every cell index
   int cell_bits_, particle_bits_;

@@ -1,10 +1,51 @@
 // [simulation] and [output]. Defaults come from the structs in scene.hpp so that a scene
 // built in code and one read from a file agree on them.
 #include "io/scene/scene_sections.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
 
+#include <climits>
+
 namespace tridem::scene_detail {
+
+namespace {
+
+/// An integer key of [simulation.decomposition] in [lo, INT_MAX], or `fallback`.
+int bounded_int(TableReader& r, std::string_view key, int lo, int fallback,
+                std::string_view meaning) {
+  const auto v = r.integer(key);
+  if (!v) return fallback;
+  if (*v < lo || *v > INT_MAX)
+    r.fail(key, fmt::format("must be an integer in [{}, {}] ({}), got {}", lo, INT_MAX, meaning,
+                            *v));
+  return static_cast<int>(*v);
+}
+
+/// [simulation.decomposition]: how method = "decomposition" cuts the domain.
+DecompositionSettings parse_decomposition(const toml::node& node, TableReader& parent,
+                                          const std::string& source) {
+  const toml::table* table = node.as_table();
+  if (!table)
+    parent.fail("decomposition", fmt::format("must be a table, written [simulation.decomposition], "
+                                             "got {}",
+                                             describe_type(node.type())));
+  TableReader r(*table, source, "[simulation.decomposition]");
+  DecompositionSettings d;
+  d.layout = r.choice_in<DecompositionLayout>("layout", kLayoutNames).value_or(d.layout);
+  d.rows = bounded_int(r, "rows", 0, d.rows, "0 = chosen from the particle counts");
+  d.columns = bounded_int(r, "columns", 0, d.columns, "0 = chosen from the particle counts");
+  if (d.layout == DecompositionLayout::Strips && (d.rows != 0 || d.columns != 0))
+    r.fail(d.rows != 0 ? "rows" : "columns",
+           "sets the 2d layout; layout = \"1d\" chooses its strips from the particle counts "
+           "(set layout = \"2d\" or remove the key)");
+  d.capacity = bounded_int(r, "capacity", 2, d.capacity,
+                           "most particles in a sub-domain, its overlap band included");
+  r.reject_unknown_keys();
+  return d;
+}
+
+}  // namespace
 
 SimulationSettings parse_simulation(const toml::table& table, const std::string& source) {
   TableReader r(table, source, "[simulation]");
@@ -27,8 +68,14 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
   s.precision =
       r.choice<Precision>("precision", {{"double", Precision::Double}, {"float", Precision::Float}})
           .value_or(s.precision);
-  s.method = r.choice<Method>("method", {{"grid", Method::Grid}, {"all-pairs", Method::AllPairs}})
-                 .value_or(s.method);
+  s.method = r.choice_in<Method>("method", kMethodNames).value_or(s.method);
+  s.contact_test =
+      r.choice_in<ContactTest>("contact_test", kContactTestNames).value_or(s.contact_test);
+  s.bbox_prefilter = r.boolean("bbox_prefilter").value_or(s.bbox_prefilter);
+  if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
+    r.fail(s.contact_test != ContactTest::Exact ? "contact_test" : "bbox_prefilter", *why);
+  if (const toml::node* d = r.node("decomposition"))
+    s.decomposition = parse_decomposition(*d, r, source);
   s.local_damping = r.real("local_damping").value_or(s.local_damping);
   if (!(s.local_damping >= 0 && s.local_damping < 1))
     r.fail("local_damping", fmt::format("must be in [0, 1), got {}", s.local_damping));

@@ -49,7 +49,12 @@ class TableReader {
   /// The enumerator whose spelling equals the string under `key`.
   template <class E>
   std::optional<E> choice(std::string_view key,
-                          std::initializer_list<std::pair<std::string_view, E>> options);
+                          std::initializer_list<std::pair<std::string_view, E>> options) {
+    return choice_in<E>(key, options);
+  }
+  /// The same with the spellings of setting_names.hpp (any range of {spelling, value}).
+  template <class E, class Options>
+  std::optional<E> choice_in(std::string_view key, const Options& options);
 
   /// For a getter's result on a required key: the value, or a "missing required key" error.
   template <class T>
@@ -100,9 +105,8 @@ std::optional<std::array<Vec2d, N>> TableReader::points(std::string_view key) {
   return out;
 }
 
-template <class E>
-std::optional<E> TableReader::choice(
-    std::string_view key, std::initializer_list<std::pair<std::string_view, E>> options) {
+template <class E, class Options>
+std::optional<E> TableReader::choice_in(std::string_view key, const Options& options) {
   const std::optional<std::string> text = string(key);
   if (!text) return std::nullopt;
   std::string allowed;

@@ -3,6 +3,7 @@
 #include "io/scene/triangle_shape.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -41,6 +42,16 @@ void check_settings(const Scene& scene, const Refuser& refuse) {
   if (scene.output.checkpoint_every < 0)
     refuse(fmt::format("[output] checkpoint_every must be >= 0, got {}",
                        scene.output.checkpoint_every));
+  if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
+    refuse("[simulation] " + *why);
+  const DecompositionSettings& d = s.decomposition;
+  if (d.rows < 0 || d.columns < 0)
+    refuse(fmt::format("[simulation.decomposition] rows and columns must be >= 0, got {} x {}",
+                       d.rows, d.columns));
+  if (d.layout == DecompositionLayout::Strips && (d.rows != 0 || d.columns != 0))
+    refuse("[simulation.decomposition] rows and columns set the 2d layout, not layout = \"1d\"");
+  if (d.capacity < 2)
+    refuse(fmt::format("[simulation.decomposition] capacity must be >= 2, got {}", d.capacity));
   if (scene.output.every < 0)
     refuse(fmt::format("[output] every must be >= 0, got {}", scene.output.every));
   if (scene.output.dir.empty()) refuse("[output] dir must not be empty");

@@ -13,19 +13,17 @@
 namespace tridem {
 namespace {
 
-std::unique_ptr<Solver> three_particle_solver(Backend backend) {
+std::unique_ptr<Solver> three_particle_solver(const test::SolverChoice& choice) {
   Scene s = test::empty_scene();
   s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
   s.triangles.push_back(test::triangle({2, 0}, {3, 0}, {2, 1}));
   s.triangles.push_back(test::triangle({4, 0}, {5, 0}, {4, 1}));
-  SolverConfig config;
-  config.backend = backend;
-  return make_solver(s, config);
+  return make_solver(s, choice.config());
 }
 
-void expect_refused(Backend backend, const std::function<void(SolverState&)>& spoil,
-                    const std::string& fragment) {
-  auto solver = three_particle_solver(backend);
+void expect_refused(const test::SolverChoice& choice,
+                    const std::function<void(SolverState&)>& spoil, const std::string& fragment) {
+  auto solver = three_particle_solver(choice);
   SolverState s;
   solver->save_state(s);
   s.pair_emitter = {0, 1};
@@ -44,7 +42,7 @@ void expect_refused(Backend backend, const std::function<void(SolverState&)>& sp
 using SolverStateLoad = test::BackendTest;
 
 TEST_P(SolverStateLoad, RefusesStatesThatDoNotFit) {
-  const Backend b = GetParam();
+  const test::SolverChoice b = GetParam();
   expect_refused(b, [](SolverState& s) { s.x.pop_back(); }, "2 values of x for 3 particles");
   expect_refused(b, [](SolverState& s) { s.omega.push_back(0); }, "omega");
   expect_refused(b, [](SolverState& s) { s.vy[1] = std::nan(""); }, "vy of particle 1");
@@ -87,8 +85,13 @@ TEST_P(SolverStateLoad, SaveGivesBackTheLoadedState) {
   EXPECT_EQ(out.pair_slip, in.pair_slip);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cpu, SolverStateLoad, ::testing::Values(Backend::Cpu, Backend::OpenMP));
-INSTANTIATE_TEST_SUITE_P(Gpu, SolverStateLoad, ::testing::Values(Backend::Cuda));
+INSTANTIATE_TEST_SUITE_P(Cpu, SolverStateLoad,
+                         ::testing::Values(test::SolverChoice(Backend::Cpu),
+                                           test::SolverChoice(Backend::OpenMP),
+                                           test::SolverChoice(Backend::Cpu, Method::SingleDomain)));
+INSTANTIATE_TEST_SUITE_P(Gpu, SolverStateLoad,
+                         ::testing::Values(test::SolverChoice(Backend::Cuda),
+                                           test::SolverChoice(Backend::Cuda, Method::SingleDomain)));
 
 }  // namespace
 }  // namespace tridem

@@ -31,7 +31,13 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
   EXPECT_DOUBLE_EQ(s.simulation.gravity.y, -9.81);
   EXPECT_EQ(s.simulation.backend, Backend::OpenMP);
   EXPECT_EQ(s.simulation.precision, Precision::Float);
-  EXPECT_EQ(s.simulation.method, Method::AllPairs);
+  EXPECT_EQ(s.simulation.method, Method::SingleDomain);
+  EXPECT_EQ(s.simulation.contact_test, ContactTest::DirectArea);
+  EXPECT_FALSE(s.simulation.bbox_prefilter);
+  EXPECT_EQ(s.simulation.decomposition.layout, DecompositionLayout::Grid);
+  EXPECT_EQ(s.simulation.decomposition.rows, 3);
+  EXPECT_EQ(s.simulation.decomposition.columns, 4);
+  EXPECT_EQ(s.simulation.decomposition.capacity, 128);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0.2);
   EXPECT_DOUBLE_EQ(s.simulation.max_penetration, 0.6);
 
@@ -107,6 +113,12 @@ TEST(SceneParse, OmittedKeysTakeDefaults) {
   EXPECT_EQ(s.simulation.backend, Backend::Auto);
   EXPECT_EQ(s.simulation.precision, Precision::Double);
   EXPECT_EQ(s.simulation.method, Method::Grid);
+  EXPECT_EQ(s.simulation.contact_test, ContactTest::Exact);
+  EXPECT_TRUE(s.simulation.bbox_prefilter);
+  EXPECT_EQ(s.simulation.decomposition.layout, DecompositionLayout::Strips);
+  EXPECT_EQ(s.simulation.decomposition.rows, 0);
+  EXPECT_EQ(s.simulation.decomposition.columns, 0);
+  EXPECT_EQ(s.simulation.decomposition.capacity, 256);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0);
   EXPECT_DOUBLE_EQ(s.simulation.skin, 0.05);
   EXPECT_DOUBLE_EQ(s.simulation.max_penetration, 0.8);

@@ -1,0 +1,59 @@
+#pragma once
+// The per-pair decision of the paper's methods (single-domain, decomposition), on the host
+// and the device alike: whether particle i emits the pair {i, j}, and whether the pair
+// passes the contact test, with or without the bounding-box pre-filter before it. Only the
+// pairs that pass get a force computed.
+#include "physics/geometry.hpp"
+#include "tridem/hd.hpp"
+#include "tridem/scene.hpp"
+
+namespace tridem {
+
+/// [simulation] contact_test and bbox_prefilter, as the detection stage reads them.
+struct ContactFilter {
+  ContactTest test = ContactTest::Exact;
+  bool bbox_prefilter = true;
+};
+
+/// The geometry a contact test reads, structure of arrays: vertices (counter-clockwise)
+/// and bounding boxes of the current step.
+template <class Real>
+struct TriangleArrays {
+  const Real* x[3];
+  const Real* y[3];
+  const Real *lo_x, *lo_y, *hi_x, *hi_y;
+
+  TRIDEM_HD physics::Triangle<Real> triangle(int i) const {
+    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
+  }
+  TRIDEM_HD physics::Aabb<Real> box(int i) const {
+    return {{lo_x[i], lo_y[i]}, {hi_x[i], hi_y[i]}};
+  }
+};
+
+/// The house's emitter rule, the one the cell grid follows (candidate_pairs.hpp): a pair
+/// needs one free particle; two small particles are emitted by the lower index, a small
+/// and a large one (a wall) by the small one. Following it, the paper's methods build
+/// exactly the grid's rows (minus the pairs that fail the test), so that with the exact
+/// test they reproduce the grid bit for bit.
+TRIDEM_HD inline bool emits_pair(int i, int j, bool small_i, bool small_j, bool free_i,
+                                 bool free_j) {
+  if (!small_i || !(free_i || free_j)) return false;
+  return !small_j || j > i;
+}
+
+/// Whether a pair gets a force. The exact test is what pair_force itself checks first
+/// (the same separating-axis arithmetic), so the pairs it drops would have given exact
+/// zeros; the direct area test also drops overlaps with no vertex inside the other
+/// triangle. The pre-filter drops only pairs whose boxes are apart, which no test passes.
+template <class Real>
+TRIDEM_HD inline bool passes_contact_test(const physics::Triangle<Real>& a,
+                                          const physics::Aabb<Real>& box_a,
+                                          const physics::Triangle<Real>& b,
+                                          const physics::Aabb<Real>& box_b, ContactFilter f) {
+  if (f.bbox_prefilter && !physics::boxes_overlap(box_a, box_b)) return false;
+  return f.test == ContactTest::DirectArea ? physics::direct_area_overlap(a, b)
+                                           : physics::triangles_overlap(a, b);
+}
+
+}  // namespace tridem
