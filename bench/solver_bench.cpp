@@ -28,6 +28,7 @@
 //                     are found (single-domain is O(n²) per step: keep --max_n small)
 //   --contact_test=T  exact (default) or direct-area, for single-domain and decomposition
 //   --bbox_prefilter=0  the paper's pre-filter off (single-domain and decomposition)
+#include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
@@ -41,7 +42,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -184,62 +184,22 @@ void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool conta
   state.SetLabel(solver->description());
 }
 
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) {
-        auto model = line.substr(colon + 1);
-        model.erase(0, model.find_first_not_of(" \t"));
-        return model;
-      }
-    }
-  return "unknown";
-}
-
-/// Takes "--name=value" out of argv; returns the value or an empty string.
-std::string take_flag(int& argc, char** argv, const std::string& name) {
-  const std::string prefix = "--" + name + "=";
-  std::string value;
-  int out = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind(prefix, 0) == 0)
-      value = arg.substr(prefix.size());
-    else
-      argv[out++] = argv[i];
-  }
-  argc = out;
-  return value;
-}
-
-double parse_number(const std::string& flag, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && v > 0) return v;
-  } catch (const std::exception&) {
-  }
-  std::cerr << "tridem_bench: --" << flag << " wants a positive number, got '" << text << "'\n";
-  std::exit(2);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
+  using tridem::bench::parse_number;
+  using tridem::bench::take_flag;
   const std::string max_n_flag = take_flag(argc, argv, "max_n");
   const std::string min_n_flag = take_flag(argc, argv, "min_n");
   const std::string backends_flag = take_flag(argc, argv, "backends");
   const std::string large_reps_flag = take_flag(argc, argv, "large_reps");
   const std::string iter_scale_flag = take_flag(argc, argv, "iter_scale");
-  const double max_n = max_n_flag.empty() ? 1e6 : parse_number("max_n", max_n_flag);
-  const double min_n = min_n_flag.empty() ? 1e3 : parse_number("min_n", min_n_flag);
+  const double max_n = max_n_flag.empty() ? 1e6 : parse_number("tridem_bench", "max_n", max_n_flag);
+  const double min_n = min_n_flag.empty() ? 1e3 : parse_number("tridem_bench", "min_n", min_n_flag);
   const int large_reps =
-      large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("large_reps", large_reps_flag));
+      large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("tridem_bench", "large_reps", large_reps_flag));
   const double iter_scale =
-      iter_scale_flag.empty() ? 1.0 : parse_number("iter_scale", iter_scale_flag);
+      iter_scale_flag.empty() ? 1.0 : parse_number("tridem_bench", "iter_scale", iter_scale_flag);
   std::vector<Variant> variants;
   const std::string list = backends_flag.empty() ? "cpu,openmp" : backends_flag;
   std::size_t start = 0;
@@ -286,7 +246,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 
-  benchmark::AddCustomContext("cpu_model", cpu_model());
+  benchmark::AddCustomContext("cpu_model", tridem::bench::cpu_model());
   benchmark::AddCustomContext("hardware_threads",
                               std::to_string(std::thread::hardware_concurrency()));
   benchmark::AddCustomContext("omp_max_threads", std::to_string(omp_get_max_threads()));
