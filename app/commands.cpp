@@ -1,5 +1,6 @@
 #include "commands.hpp"
 
+#include "interrupt.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/render.hpp"
@@ -64,8 +65,19 @@ int run(const RunArgs& args) {
   options.force = args.force;
   options.threads = args.threads;
   options.progress = !args.quiet;
-  run_scene(scene, options);
-  return 0;
+  options.restart = args.restart;
+  options.interrupt = &install_interrupt_handlers();
+  const RunSummary summary = run_scene(scene, options);
+  if (!summary.interrupted_by) return 0;
+  // The same command line, so that the restarted run has the same steps, backend, folder.
+  std::string same_run = fmt::format("tridem run {} --restart {}", args.scene, summary.checkpoint);
+  if (args.out) same_run += " --out " + *args.out;
+  if (args.steps) same_run += fmt::format(" --steps {}", *args.steps);
+  if (args.backend) same_run += " --backend " + *args.backend;
+  fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
+             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
+             same_run);
+  return exit_code_for_signal(summary.interrupted_by);
 }
 
 int info(const std::string& path) {

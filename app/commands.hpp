@@ -14,10 +14,13 @@ struct RunArgs {
   std::optional<std::string> contact_test;  ///< a spelling of kContactTestNames
   bool no_bbox_prefilter = false;
   std::optional<std::int64_t> steps;
+  std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
   bool force = false;
   bool quiet = false;
 };
+/// 0 when the run finished; 128 + the signal's number when SIGINT or SIGTERM stopped it
+/// (after it wrote its checkpoint).
 int run(const RunArgs&);
 
 int info(const std::string& scene);

@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--restart", run_args.restart,
+                      "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
+      ->check(CLI::ExistingFile);
   run_cmd->add_flag("--force", run_args.force, "Run even if dt is above the stability limit");
   run_cmd->add_flag("--quiet", run_args.quiet, "No progress bar");
 

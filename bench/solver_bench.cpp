@@ -31,6 +31,7 @@
 //   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
 //                     [simulation.decomposition] for --method=decomposition (default 1d,
 //                     capacity 256; rows and columns 2d only, chosen when not given)
+#include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
@@ -44,7 +45,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -189,78 +189,22 @@ void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool conta
   state.SetLabel(solver->description());
 }
 
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) {
-        auto model = line.substr(colon + 1);
-        model.erase(0, model.find_first_not_of(" \t"));
-        return model;
-      }
-    }
-  return "unknown";
-}
-
-/// Takes "--name=value" out of argv; returns the value or an empty string.
-std::string take_flag(int& argc, char** argv, const std::string& name) {
-  const std::string prefix = "--" + name + "=";
-  std::string value;
-  int out = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind(prefix, 0) == 0)
-      value = arg.substr(prefix.size());
-    else
-      argv[out++] = argv[i];
-  }
-  argc = out;
-  return value;
-}
-
-double parse_number(const std::string& flag, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && v > 0) return v;
-  } catch (const std::exception&) {
-  }
-  std::cerr << "tridem_bench: --" << flag << " wants a positive number, got '" << text << "'\n";
-  std::exit(2);
-}
-
-/// Takes "--name=spelling" out of argv into `value`, for a setting spelt in `table`;
-/// false, after saying so, for a spelling it does not know.
-template <class Table, class E>
-bool take_choice(int& argc, char** argv, const std::string& name, const Table& table, E& value) {
-  const std::string text = take_flag(argc, argv, name);
-  if (text.empty()) return true;
-  const auto v = tridem::value_in(table, text);
-  if (!v) {
-    std::cerr << "tridem_bench: --" << name << " wants one of " << tridem::spellings_of(table)
-              << "; got '" << text << "'\n";
-    return false;
-  }
-  value = *v;
-  return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
+  using tridem::bench::parse_number;
+  using tridem::bench::take_flag;
   const std::string max_n_flag = take_flag(argc, argv, "max_n");
   const std::string min_n_flag = take_flag(argc, argv, "min_n");
   const std::string backends_flag = take_flag(argc, argv, "backends");
   const std::string large_reps_flag = take_flag(argc, argv, "large_reps");
   const std::string iter_scale_flag = take_flag(argc, argv, "iter_scale");
-  const double max_n = max_n_flag.empty() ? 1e6 : parse_number("max_n", max_n_flag);
-  const double min_n = min_n_flag.empty() ? 1e3 : parse_number("min_n", min_n_flag);
+  const double max_n = max_n_flag.empty() ? 1e6 : parse_number("tridem_bench", "max_n", max_n_flag);
+  const double min_n = min_n_flag.empty() ? 1e3 : parse_number("tridem_bench", "min_n", min_n_flag);
   const int large_reps =
-      large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("large_reps", large_reps_flag));
+      large_reps_flag.empty() ? 0 : static_cast<int>(parse_number("tridem_bench", "large_reps", large_reps_flag));
   const double iter_scale =
-      iter_scale_flag.empty() ? 1.0 : parse_number("iter_scale", iter_scale_flag);
+      iter_scale_flag.empty() ? 1.0 : parse_number("tridem_bench", "iter_scale", iter_scale_flag);
   std::vector<Variant> variants;
   const std::string list = backends_flag.empty() ? "cpu,openmp" : backends_flag;
   std::size_t start = 0;
@@ -280,15 +224,17 @@ int main(int argc, char** argv) {
   const bool frames = !take_flag(argc, argv, "frames").empty();
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
   tridem::DecompositionSettings& d = g_method.decomposition;
-  if (!take_choice(argc, argv, "method", tridem::kMethodNames, g_method.method) ||
-      !take_choice(argc, argv, "contact_test", tridem::kContactTestNames, g_method.contact_test) ||
-      !take_choice(argc, argv, "layout", tridem::kLayoutNames, d.layout))
+  using tridem::bench::take_choice;
+  if (!take_choice("tridem_bench", argc, argv, "method", tridem::kMethodNames, g_method.method) ||
+      !take_choice("tridem_bench", argc, argv, "contact_test", tridem::kContactTestNames,
+                   g_method.contact_test) ||
+      !take_choice("tridem_bench", argc, argv, "layout", tridem::kLayoutNames, d.layout))
     return 2;
   g_method.bbox_prefilter = prefilter_flag != "0";
   for (auto [flag, value] : {std::pair{"rows", &d.rows}, std::pair{"columns", &d.columns},
                              std::pair{"capacity", &d.capacity}})
     if (const std::string text = take_flag(argc, argv, flag); !text.empty())
-      *value = static_cast<int>(parse_number(flag, text));
+      *value = static_cast<int>(parse_number("tridem_bench", flag, text));
   std::string method_tag =
       g_method.method == tridem::Method::Grid ? "" : "/" + std::string(tridem::method_name(g_method.method));
   if (g_method.method == tridem::Method::Decomposition)
@@ -298,7 +244,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 
-  benchmark::AddCustomContext("cpu_model", cpu_model());
+  benchmark::AddCustomContext("cpu_model", tridem::bench::cpu_model());
   benchmark::AddCustomContext("hardware_threads",
                               std::to_string(std::thread::hardware_concurrency()));
   benchmark::AddCustomContext("omp_max_threads", std::to_string(omp_get_max_threads()));

@@ -11,9 +11,9 @@ dest="$root/.devbin"
 rm -rf "$dest"
 mkdir -p "$dest/lib" "$dest/app" "$dest/bench" "$dest/tests"
 cp "$build/app/tridem" "$dest/app/"
-cp "$build/bench/tridem_bench" "$dest/bench/"
+cp "$build/bench/tridem_bench" "$build/bench/tridem_paper_bench" "$dest/bench/"
 cp "$build/tests/tridem_tests" "$dest/tests/"
-for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/tests/tridem_tests; do
+for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_paper_bench "$dest"/tests/tridem_tests; do
   ldd "$bin" | awk '/=> \// {print $3}'
 done | sort -u | grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" "$dest/lib/"; done

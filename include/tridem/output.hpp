@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace tridem {
@@ -44,6 +45,12 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
 /// are left empty. Throws Error on a file it cannot read or that is not such a frame.
 Snapshot read_vtu_frame(const std::filesystem::path& file);
 
+/// Where a restarted run takes over the outputs of the run it continues.
+struct ResumePoint {
+  std::int64_t step = 0;
+  double time = 0;
+};
+
 /// The files of one run, under one directory:
 ///   energy.csv, walls.csv          one block of rows per log() call, flushed each time
 ///   frames/frame_<step>.vtu        one per write_frame(), listed in tridem.pvd
@@ -52,9 +59,12 @@ Snapshot read_vtu_frame(const std::filesystem::path& file);
 ///   final.csv                      from write_final()
 /// The .pvd collections are replaced atomically after every frame, so they stay valid
 /// if the run dies. Every failure to create or write throws RunError.
+/// A fresh set removes the tridem files of an earlier run in `dir`; a resumed one keeps
+/// them up to the resume point and removes what came after (rows, frames, entries).
 class OutputSet {
  public:
-  OutputSet(const OutputSettings&, std::filesystem::path dir, Encoding = Encoding::Binary);
+  OutputSet(const OutputSettings&, std::filesystem::path dir, Encoding = Encoding::Binary,
+            const std::optional<ResumePoint>& resume = std::nullopt);
   ~OutputSet();
   OutputSet(OutputSet&&) noexcept;
   OutputSet& operator=(OutputSet&&) noexcept;

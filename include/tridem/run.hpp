@@ -4,6 +4,7 @@
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -22,10 +23,20 @@ struct RunOptions {
   int threads = 0;                        ///< OpenMP threads, 0 = default
   bool progress = true;                   ///< bar on stderr when it is a terminal
   std::FILE* log = stdout;                ///< where the start and summary lines go
+  /// A checkpoint to continue from (tridem run --restart): the run goes on from its step
+  /// and continues the logs, frames and collections of the output directory.
+  std::optional<std::string> restart;
+  /// Polled between chunks of steps (a few times a second): once it is non-zero (the
+  /// signal number, set by a signal handler), the run stops at the step boundary, writes
+  /// its checkpoint and final.csv and returns with RunSummary::interrupted_by set.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 struct RunSummary {
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;                 ///< steps run by this call
+  std::int64_t last_step = 0;             ///< the step the state is at
+  int interrupted_by = 0;                 ///< the interrupt's value, 0 if the run finished
+  std::string checkpoint;                 ///< written on interruption
   std::size_t triangles = 0;
   double seconds = 0;                     ///< time-loop wall time, outputs included
   double steps_per_second = 0;
@@ -33,7 +44,9 @@ struct RunSummary {
   std::string solver;
 };
 
-/// Runs the scene to the end, writing its outputs. Throws tridem::Error on failure.
+/// Runs the scene to the end (or to an interruption), writing its outputs, checkpoints
+/// every [output] checkpoint_every steps. Throws tridem::Error on failure; on a blow-up
+/// the last good state is first written to last_good.ckpt and final.csv.
 RunSummary run_scene(const Scene& scene, const RunOptions& options);
 
 /// What `tridem info` prints about a scene.

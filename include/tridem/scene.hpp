@@ -73,6 +73,9 @@ struct SimulationSettings {
   /// Verlet skin of the CUDA pair list, per side of a bounding box, as a fraction of the
   /// grid cell L: the list is rebuilt only when a box leaves its grown copy.
   double skin = 0.05;
+  /// Deepest overlap accepted, as φ of the deepest boundary point (0 at the edge, 1 at
+  /// the centroid); deeper stops the run as a blow-up. 1 = off.
+  double max_penetration = 0.8;
 };
 
 /// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
@@ -83,6 +86,7 @@ struct OutputSettings {
   std::int64_t every = 0;              ///< steps between frames; 0 = no frames
   bool contacts = true;                ///< write the contact network with each frame
   Encoding encoding = Encoding::Binary; ///< of the .vtu/.vtp frames
+  std::int64_t checkpoint_every = 0;   ///< steps between checkpoints; 0 = none
 };
 
 struct Scene {

@@ -3,6 +3,7 @@
 // a fixed sequence of stages (see Stage); backends differ only in how they schedule it.
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
+#include "tridem/solver_state.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -36,6 +37,13 @@ class Solver {
   virtual void advance(std::int64_t steps) = 0;
   /// Copies the state (and the contacts of the last step when asked) to the host.
   virtual void snapshot(Snapshot& out, bool with_contacts) const = 0;
+  /// Copies what a restart needs (state, step, time, contact history) to the host, under
+  /// the contract of solver_state.hpp. Allocates: call it between steps, not inside them.
+  virtual void save_state(SolverState& out) const = 0;
+  /// Replaces the state by `in` (from save_state of a solver of the same scene, backend
+  /// and precision), so that the next advance() continues that run exactly. Throws
+  /// tridem::Error (via validate_solver_state) on a state that does not fit this solver.
+  virtual void load_state(const SolverState& in) = 0;
   virtual std::int64_t step() const = 0;
   virtual double time() const = 0;
   virtual double dt() const = 0;

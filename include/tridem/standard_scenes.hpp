@@ -9,10 +9,12 @@ namespace tridem {
 /// A dense pile of about `n` triangles in a box under gravity: a triangular lattice of
 /// equilateral grains (edge `size`) grown by 0.2% so that every lattice neighbour overlaps
 /// slightly at the start; a floor and two side walls (fixed triangles); sand-like material
-/// (ρ 2650 kg/m³, p 1e8 Pa, μ 0.5, ζ 0.3). The grains take up a region about as wide as it
-/// is high. The first steps carry the contact load of a dense pile (about 6 touching pairs
-/// per triangle); the pre-stressed pile then loosens from its free surface (at 10³ grains,
-/// about 2 touching pairs per triangle after 200 steps), so benchmarks time early steps.
-Scene dense_pile(std::size_t n, double size = 0.01);
+/// (ρ 2650 kg/m³, p 1e8 Pa, μ 0.5, ζ 0.3). The grains take up a region `aspect` times as
+/// wide as it is high (about square by default; a wide layer for the paper's 1D
+/// decomposition, whose strips must hold a whole column of the pile). The first steps
+/// carry the contact load of a dense pile (about 6 touching pairs per triangle); the
+/// pre-stressed pile then loosens from its free surface (at 10³ grains, about 2 touching
+/// pairs per triangle after 200 steps), so benchmarks time early steps.
+Scene dense_pile(std::size_t n, double size = 0.01, double aspect = 1.0);
 
 }  // namespace tridem

@@ -1,7 +1,9 @@
 #include "tridem/run.hpp"
 
-#include "core/progress.hpp"
 #include "core/solver_factory.hpp"
+#include "core/time_loop.hpp"
+#include "tridem/checkpoint.hpp"
+#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <algorithm>
@@ -12,10 +14,31 @@ namespace tridem {
 
 namespace {
 
-/// The next step at or after `step` where something is written.
-std::int64_t next_output(std::int64_t step, std::int64_t every, std::int64_t last) {
-  if (every <= 0) return last;
-  return std::min(last, (step / every + 1) * every);
+namespace fs = std::filesystem;
+
+/// The state the run starts from: the scene's, or that of `--restart`.
+std::optional<ResumePoint> restore(Solver& solver, const Scene& scene, Precision precision,
+                                   const RunOptions& options) {
+  if (!options.restart) return std::nullopt;
+  const fs::path file = *options.restart;
+  const Checkpoint c = read_checkpoint(file);
+  check_checkpoint_fits(c, file, scene, precision);
+  if (c.state.step > scene.simulation.steps)
+    throw RunError(fmt::format("{}: checkpoint at step {} is past the end of the run (steps "
+                               "= {}); raise [simulation] steps or give --steps",
+                               file.string(), c.state.step, scene.simulation.steps));
+  solver.load_state(c.state);
+  return ResumePoint{c.state.step, c.state.time};
+}
+
+void print_start(std::FILE* log, const Solver& solver, const TimeStep& ts, std::size_t free,
+                 const SolverConfig& config, std::int64_t last) {
+  fmt::print(log, "tridem {}: {} triangle{} ({} free), solver {}{}\n", TRIDEM_VERSION,
+             solver.size(), solver.size() == 1 ? "" : "s", free, solver.description(),
+             config.backend == Backend::Auto ? " (picked by backend = auto)" : "");
+  fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
+             solver.dt(), solver.dt() / ts.critical, ts.critical,
+             ts.automatic ? ", automatic" : "", last, static_cast<double>(last) * solver.dt());
 }
 
 }  // namespace
@@ -40,69 +63,43 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   const auto solver = make_solver(scene, model, ts, config);
   const auto free = static_cast<std::size_t>(
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));
+  const std::optional<ResumePoint> resume = restore(*solver, scene, config.precision, options);
 
   const std::int64_t last = scene.simulation.steps;
-  const std::int64_t every = scene.output.every;
+  const std::int64_t first = solver->step();
   std::FILE* log = options.log;
   if (log) {
-    fmt::print(log, "tridem {}: {} triangle{} ({} free), solver {}{}\n", TRIDEM_VERSION,
-               solver->size(), solver->size() == 1 ? "" : "s", free, solver->description(),
-               config.backend == Backend::Auto ? " (picked by backend = auto)" : "");
-    fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
-               solver->dt(), solver->dt() / ts.critical, ts.critical,
-               ts.automatic ? ", automatic" : "", last,
-               static_cast<double>(last) * solver->dt());
+    print_start(log, *solver, ts, free, config, last);
+    if (resume)
+      fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
+                 resume->step, resume->time);
     std::fflush(log);
   }
 
-  OutputSet out(scene.output, scene.output.dir, scene.output.encoding);
-  Snapshot snap;
-  auto emit = [&](std::int64_t step) {
-    const bool frame = every > 0 && (step % every == 0 || step == last);
-    solver->snapshot(snap, frame && scene.output.contacts);
-    if (frame) out.write_frame(snap);
-    out.log(snap);
-    if (step == last) out.write_final(snap);
-  };
-
-  ProgressBar bar(last, options.progress && is_terminal(stderr));
+  OutputSet out(scene.output, scene.output.dir, scene.output.encoding, resume);
+  TimeLoop loop(*solver, out, scene, {config.precision, scene_fingerprint(scene)},
+                options.interrupt, options.progress);
+  RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
-  emit(0);
-  // Advance in chunks of about a tenth of a second between output steps, so that the
-  // progress bar moves without a clock read in every step.
-  std::int64_t chunk = 1;
-  while (solver->step() < last) {
-    const std::int64_t target = next_output(solver->step(), every, last);
-    while (solver->step() < target) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const std::int64_t n = std::min(chunk, target - solver->step());
-      solver->advance(n);
-      const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      // Capped: doubled unchecked at every fast chunk it overflowed after ~63 output
-      // events and the loop stalled.
-      if (took < 0.05) chunk = std::min<std::int64_t>(2 * chunk, std::int64_t{1} << 20);
-      else if (took > 0.2 && chunk > 1) chunk /= 2;
-      bar.update(solver->step());
-    }
-    emit(solver->step());
-  }
-  bar.finish();
+  loop.start(resume.has_value());
+  summary.interrupted_by = loop.run();
+  if (summary.interrupted_by) summary.checkpoint = loop.files().checkpoint.string();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  RunSummary summary;
-  summary.steps = last;
+  summary.steps = solver->step() - first;
+  summary.last_step = solver->step();
   summary.triangles = solver->size();
   summary.seconds = seconds;
-  summary.steps_per_second = seconds > 0 ? static_cast<double>(last) / seconds : 0;
+  summary.steps_per_second = seconds > 0 ? static_cast<double>(summary.steps) / seconds : 0;
   summary.triangle_steps_per_second =
       summary.steps_per_second * static_cast<double>(summary.triangles);
   summary.solver = solver->description();
   if (log) {
-    fmt::print(log, "done: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
+    fmt::print(log, "{}: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
                "outputs in {}\n",
-               last, seconds, summary.steps_per_second, summary.triangle_steps_per_second,
-               scene.output.dir);
+               summary.interrupted_by ? "interrupted" : "done", summary.steps, seconds,
+               summary.steps_per_second, summary.triangle_steps_per_second, scene.output.dir);
     if (const std::string stats = solver->statistics(); !stats.empty())
       fmt::print(log, "{}: {}\n", solver->description(), stats);
     std::fflush(log);

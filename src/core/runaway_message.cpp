@@ -14,4 +14,15 @@ std::string runaway_message(std::int64_t step, std::int64_t particle, double x, 
       step, particle, x, y, speed, dt);
 }
 
+std::string penetration_message(std::int64_t step, const DeepPair& p, double limit) {
+  return fmt::format(
+      "blow-up at step {}: particles {} (at x={:g}, y={:g}) and {} (at x={:g}, y={:g}) "
+      "overlap to depth {:.3g} (0 = touching, 1 = a boundary at the other's centroid), "
+      "deeper than [simulation] max_penetration = {:g}; the contact is too soft for the "
+      "loads or the time step too large (raise the penalty, reduce dt, or check for "
+      "initially overlapping particles)",
+      step, p.emitter, p.emitter_x, p.emitter_y, p.partner, p.partner_x, p.partner_y, p.depth,
+      limit);
+}
+
 }  // namespace tridem

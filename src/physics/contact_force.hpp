@@ -29,6 +29,9 @@ struct PairForce {
   Real torque_a = 0;
   Real torque_b = 0;
   Vec2<Real> point{};    ///< where the normal loads act on average (for output)
+  /// Penetration depth: the largest φ reached by either boundary inside the other
+  /// triangle, 0 at its edge and 1 at its centroid (the blow-up check reads it).
+  Real depth = 0;
   bool touching = false;
 };
 
@@ -38,6 +41,7 @@ struct EdgeLoad {
   Real integral = 0;    ///< ∫ φ_T dΓ over the edge's pieces inside T, metres
   Vec2<Real> point{};   ///< its centroid (valid when integral > 0)
   Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
+  Real peak = 0;        ///< the largest φ_T on the pieces (φ is linear: at an end)
 };
 
 /// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
@@ -145,6 +149,8 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     const Real length = edge_length * (t1 - t0);
     const Vec2<Real> q0 = p0 + d * t0, q1 = p0 + d * t1;
     const LinearLoad<Real> piece = linear_load(q0, q1, length, phi0, phi1);
+    load.peak = phi0 > load.peak ? phi0 : load.peak;
+    load.peak = phi1 > load.peak ? phi1 : load.peak;
     load.integral += piece.integral;
     moment += piece.point * piece.integral;
     // Piece of length ℓ in S_k of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k.
@@ -254,6 +260,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       const int e = lowest_bit(left);
       const int i = 3 * role + e;
       const EdgeLoad<Real> load = pick(loads, i);
+      out.depth = load.peak > out.depth ? load.peak : out.depth;
       if (!(load.integral > Real(0))) continue;
       const Vec2<Real> d = vertex(c.tri, (e + 1) % 3) - vertex(c.tri, e);
       const Vec2<Real> tangent = d / norm(d);

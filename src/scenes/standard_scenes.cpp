@@ -17,20 +17,21 @@ TriangleSpec fixed_triangle(Vec2d a, Vec2d b, Vec2d c) {
 
 }  // namespace
 
-Scene dense_pile(std::size_t n, double size) {
+Scene dense_pile(std::size_t n, double size, double aspect) {
   Scene s;
   s.source = "dense_pile";
   s.simulation.steps = 100;
   s.simulation.gravity = {0, -9.81};
   s.materials.push_back({"sand", 2650, 1e8, 1e7, 0.5, 0.3});
   // A lattice row holds about 2·width/size triangles, a row is size·√3/2 high: choose the
-  // width so that the region is about square.
+  // width and height for n triangles at the asked aspect ratio.
   const double row_height = size * std::sqrt(3.0) / 2;
   const double per_area = 2.0 / (size * row_height);
-  const double side = std::sqrt(static_cast<double>(n) / per_area);
+  const double area = static_cast<double>(n) / per_area;
+  const double width = std::sqrt(area * aspect), height = width / aspect;
   LatticeSpec lattice;
   lattice.region_min = {0, 0};
-  lattice.region_max = {side + size, side + row_height};
+  lattice.region_max = {width + size, height + row_height};
   lattice.size = size;
   lattice.gap = 0;
   s.triangles = generate_lattice(lattice);

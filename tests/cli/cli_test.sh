@@ -80,6 +80,12 @@ grep -q 'format="ascii"' ascii_out/frames/frame_000000100.vtu || fail "vtk_encod
 grep -q 'format="binary"' pile_out/frames/frame_000000100.vtu || fail "frames are not binary by default"
 expect_ok "$tridem" render ascii_out/frames/frame_000000100.vtu -o ascii.png
 
+# Output events every step: the run must reach its end (it stalled at step 63, when the
+# chunk length, doubled at every event, overflowed).
+sed 's/every = 100/every = 1\ncontacts = false/' pile.toml >every1.toml
+expect_ok timeout 60 "$tridem" run every1.toml --quiet --out every1_out
+[ "$(cut -d, -f1 every1_out/energy.csv | tail -1)" = "200" ] || fail "run with every = 1 stalled"
+
 # info describes the scene.
 expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"
@@ -135,6 +141,69 @@ vertices = [[0.2, 0.2], [1.2, 0.2], [0.2, 1.2]]
 TOML
 expect_error "blow-up at step" "$tridem" run blowup.toml --force --quiet --out blow_out
 grep -q "particle" err.txt || fail "blow-up message does not name the particle"
+
+grep -q "last_good.ckpt" err.txt || fail "blow-up message does not name the last good state"
+[ -s blow_out/last_good.ckpt ] || fail "blow-up did not keep the last good state"
+
+# Checkpoints: a run cut in two by --restart ends with the same files as a straight one.
+sed 's/every = 100/every = 100\ncheckpoint_every = 100/' pile.toml >ckpt.toml
+expect_ok "$tridem" run ckpt.toml --quiet --backend cpu --out straight
+expect_ok "$tridem" run ckpt.toml --quiet --backend cpu --out halves --steps 100
+expect_ok "$tridem" run ckpt.toml --quiet --backend cpu --out halves --restart halves/checkpoint.ckpt
+grep -q "continuing from halves/checkpoint.ckpt at step 100" out.txt || fail "restart does not say where it starts"
+for f in final.csv energy.csv walls.csv tridem.pvd frames/frame_000000200.vtu; do
+  cmp -s "straight/$f" "halves/$f" || fail "restarted run differs from the straight one in $f"
+done
+# A checkpoint cut short, damaged, or of another scene is refused with a message.
+head -c 100 straight/checkpoint.ckpt >cut.ckpt
+expect_error "truncated" "$tridem" run ckpt.toml --quiet --out refused --restart cut.ckpt
+cp straight/checkpoint.ckpt flipped.ckpt
+printf '\x55' | dd of=flipped.ckpt bs=1 seek=200 conv=notrunc 2>/dev/null
+expect_error "corrupt" "$tridem" run ckpt.toml --quiet --out refused --restart flipped.ckpt
+sed 's/density = 2650/density = 2600/' ckpt.toml >lighter.toml
+expect_error "another scene" "$tridem" run lighter.toml --quiet --out refused --restart straight/checkpoint.ckpt
+
+# Ctrl-C (SIGINT) and kill (SIGTERM) stop a long run at a step boundary with a checkpoint,
+# exit 128 + signal, and say how to go on; the run then continues from it.
+sed 's/steps = 200/steps = 100000000/; s/\[1, 0\], \[-1, 0\], \[0, -1\]/[10, 0], [-10, 0], [0, -10]/' ckpt.toml >long.toml
+for sig in INT TERM; do
+  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" >out.txt 2>err.txt &
+  pid=$!
+  sleep 1
+  kill -"$sig" "$pid"
+  wait "$pid"
+  code=$?
+  expected=130; [ "$sig" = TERM ] && expected=143
+  [ "$code" = "$expected" ] || fail "SIG$sig: exit code $code, expected $expected :: $(cat err.txt)"
+  grep -q -- "--restart long_$sig/checkpoint.ckpt" err.txt || fail "SIG$sig: no restart advice :: $(cat err.txt)"
+  [ -s "long_$sig/checkpoint.ckpt" ] && [ -s "long_$sig/final.csv" ] || fail "SIG$sig: no checkpoint or final.csv"
+done
+stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err.txt)
+expect_ok "$tridem" run long.toml --quiet --backend cpu --out long_TERM --restart long_TERM/checkpoint.ckpt --steps $((stopped + 100))
+[ "$(cut -d, -f1 long_TERM/energy.csv | tail -1)" = "$((stopped + 100))" ] || fail "run interrupted by SIGTERM did not continue to its end"
+
+# The same guarantees on the GPU, where there is one.
+if nvidia-smi -L >/dev/null 2>&1; then
+  expect_ok "$tridem" run ckpt.toml --quiet --backend cuda --out gpu_straight
+  expect_ok "$tridem" run ckpt.toml --quiet --backend cuda --out gpu_halves --steps 100
+  expect_ok "$tridem" run ckpt.toml --quiet --backend cuda --out gpu_halves --restart gpu_halves/checkpoint.ckpt
+  for f in final.csv energy.csv walls.csv tridem.pvd frames/frame_000000200.vtu; do
+    cmp -s "gpu_straight/$f" "gpu_halves/$f" || fail "restarted GPU run differs from the straight one in $f"
+  done
+  "$tridem" run long.toml --quiet --backend cuda --out long_gpu >out.txt 2>err.txt &
+  pid=$!
+  sleep 2
+  kill -INT "$pid"
+  wait "$pid"
+  code=$?
+  [ "$code" = 130 ] || fail "GPU SIGINT: exit code $code, expected 130 :: $(cat err.txt)"
+  [ -s long_gpu/checkpoint.ckpt ] && [ -s long_gpu/final.csv ] || fail "GPU SIGINT: no checkpoint or final.csv"
+  stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err.txt)
+  expect_ok "$tridem" run long.toml --quiet --backend cuda --out long_gpu --restart long_gpu/checkpoint.ckpt --steps $((stopped + 100))
+  [ "$(cut -d, -f1 long_gpu/energy.csv | tail -1)" = "$((stopped + 100))" ] || fail "GPU run interrupted by SIGINT did not continue to its end"
+  expect_error "blow-up at step" "$tridem" run blowup.toml --force --quiet --backend cuda --out gpu_blow_out
+  [ -s gpu_blow_out/last_good.ckpt ] || fail "GPU blow-up did not keep the last good state"
+fi
 
 if [ "$failures" -gt 0 ]; then echo "$failures failed"; exit 1; fi
 echo "all CLI checks passed"

@@ -34,6 +34,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       gravity_{static_cast<Real>(scene.simulation.gravity.x),
                static_cast<Real>(scene.simulation.gravity.y)},
       local_damping_(static_cast<Real>(scene.simulation.local_damping)),
+      penetration_limit_(static_cast<Real>(scene.simulation.max_penetration)),
       n_materials_(static_cast<int>(scene.materials.size())),
       finder_(model.longest_edge, model.motion),
       filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
@@ -181,7 +182,10 @@ physics::Body<Real> CpuSolver<Real>::body(std::int32_t i) const {
 template <class Real>
 void CpuSolver<Real>::compute_pair_forces() {
   const auto n = static_cast<std::int64_t>(n_);
-#pragma omp parallel for schedule(dynamic, 256) if (parallel_)
+  // The lowest emitter with a pair deeper than the limit: a min-reduction, so the same
+  // pair is reported whatever the threads.
+  std::int64_t too_deep = n;
+#pragma omp parallel for schedule(dynamic, 256) if (parallel_) reduction(min : too_deep)
   for (std::int64_t e = 0; e < n; ++e) {
     const auto emitter = static_cast<std::int32_t>(e);
     std::int64_t old = old_pairs_.offset[e];
@@ -196,8 +200,25 @@ void CpuSolver<Real>::compute_pair_forces() {
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
       result_[s] = physics::pair_force(a, body(j), law, dt_, slip);
       slip_[s] = slip;
+      if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
     }
   }
+  if (too_deep < n) report_penetration(static_cast<std::int32_t>(too_deep));
+}
+
+template <class Real>
+void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
+  std::int64_t s = pairs_.offset[emitter];
+  while (!(result_[s].depth > penetration_limit_)) ++s;
+  const std::int32_t j = pairs_.partner[s];
+  const DeepPair pair{emitter,
+                      j,
+                      static_cast<double>(x_[emitter]),
+                      static_cast<double>(y_[emitter]),
+                      static_cast<double>(x_[j]),
+                      static_cast<double>(y_[j]),
+                      static_cast<double>(result_[s].depth)};
+  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(penetration_limit_)));
 }
 
 template <class Real>

@@ -25,6 +25,8 @@ class CpuSolver final : public Solver {
 
   void advance(std::int64_t steps) override;
   void snapshot(Snapshot& out, bool with_contacts) const override;
+  void save_state(SolverState& out) const override;     // cpu_solver_state.cpp
+  void load_state(const SolverState& in) override;
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
   double dt() const override { return static_cast<double>(dt_); }
@@ -36,6 +38,7 @@ class CpuSolver final : public Solver {
   void update_geometry();
   void find_pairs();
   void compute_pair_forces();
+  [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
   void integrate();
 
@@ -48,6 +51,7 @@ class CpuSolver final : public Solver {
   Real dt_;
   Vec2<Real> gravity_;
   Real local_damping_;
+  Real penetration_limit_;  ///< largest PairForce::depth accepted
   std::int64_t step_ = 0;
   double time_ = 0;
 

@@ -65,6 +65,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
                      static_cast<Real>(scene.simulation.gravity.y)};
   params_.local_damping = static_cast<Real>(scene.simulation.local_damping);
   params_.n_materials = static_cast<int>(scene.materials.size());
+  params_.max_depth = static_cast<Real>(scene.simulation.max_penetration);
   std::vector<physics::ContactLaw<Real>> laws;
   for (const auto& law : contact_law_table(scene.materials))
     laws.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
@@ -201,7 +202,7 @@ ParticleArrays<Real> CudaSolver<Real>::arrays() const {
 
 template <class Real>
 void CudaSolver<Real>::update_geometry() {
-  const StepStatus fresh{0, INT_MAX};
+  const StepStatus fresh{0, INT_MAX, INT_MAX};
   TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
                                     cudaMemcpyHostToDevice, stream_));
   integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), params_, status_.data(),
@@ -226,12 +227,12 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
       rebuild_ = false;
     }
     const PairArrays<Real> q = pairs_->arrays();
-    *host = {0, INT_MAX};
+    *host = {0, INT_MAX, INT_MAX};
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
     if (q.count > 0) {
       constexpr int threads = PairKernelShape<Real>::threads;
       pair_forces_kernel<Real><<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(
-          p, q, params_);
+          p, q, params_, status);
       TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
     }
     gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, false);
@@ -240,6 +241,8 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
     TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host, status, sizeof *host, cudaMemcpyDeviceToHost, stream_));
     TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    // The CPU's order: its pair stage stops on a deep pair before the integrator looks.
+    if (host->deep != INT_MAX) report_penetration(host->deep);
     if (host->bad != INT_MAX) report_runaway(host->bad);
     rebuild_ = host->rebuild != 0;
     ++step_;
@@ -264,6 +267,26 @@ void CudaSolver<Real>::report_runaway(int i) const {
   throw RunError(runaway_message(step_ + 1, i, static_cast<double>(v[0]),
                                  static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
                                  static_cast<double>(params_.dt)));
+}
+
+template <class Real>
+void CudaSolver<Real>::report_penetration(int emitter) const {
+  // The state is still the last good one; the pair list holds this step's results.
+  std::vector<int> offset, partner;
+  std::vector<physics::PairForce<Real>> result;
+  pairs_->download(offset, partner, nullptr, &result);
+  int s = offset[emitter];
+  while (!(result[s].depth > params_.max_depth)) ++s;
+  const int j = partner[s];
+  auto position = [this](int i) {
+    Real xy[2];
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy[0], x_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy[1], y_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+    return Vec2d{static_cast<double>(xy[0]), static_cast<double>(xy[1])};
+  };
+  const Vec2d a = position(emitter), b = position(j);
+  const DeepPair pair{emitter, j, a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
+  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth)));
 }
 
 template <class Real>
@@ -304,7 +327,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   if (!with_contacts || step_ == 0) return;
   std::vector<int> offset, partner;
   std::vector<physics::PairForce<Real>> result;
-  pairs_->download(offset, partner, result);
+  pairs_->download(offset, partner, nullptr, &result);
   append_contacts(out, n, offset.data(), partner.data(), result.data());
 }
 

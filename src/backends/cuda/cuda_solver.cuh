@@ -36,12 +36,15 @@ class CudaSolver final : public Solver {
   std::size_t size() const override { return n_; }
   std::string description() const override;
   std::string statistics() const override;
+  void save_state(SolverState& out) const override;  // cuda_solver_state.cu
+  void load_state(const SolverState& in) override;
 
  private:
   void upload_model(const ParticleModel& model);
   ParticleArrays<Real> arrays() const;
   void update_geometry();
   [[noreturn]] void report_runaway(int particle) const;
+  [[noreturn]] void report_penetration(int emitter) const;
   /// What a snapshot copies back, in Snapshot's order: position, angle, velocities, forces.
   static constexpr int kStateArrays = 9;
   std::array<const DeviceBuffer<Real>*, kStateArrays> state_buffers() const {

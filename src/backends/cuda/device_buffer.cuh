@@ -34,9 +34,18 @@ class DeviceBuffer {
   }
   void upload(const std::vector<T>& host) {
     if (size_ < host.size()) allocate(host.size());
+    if (host.empty()) return;
+    TRIDEM_CUDA_CHECK(cudaMemcpy(data_, host.data(), host.size() * sizeof(T),
+                                 cudaMemcpyHostToDevice));
+    // From pageable memory cudaMemcpy may return before the DMA lands, and the solver's
+    // stream does not wait for the legacy stream: wait here, so kernels see the data.
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(cudaStreamLegacy));
+  }
+  /// The first `host.size()` elements (synchronous: only checkpoints and errors use it).
+  void download(std::vector<T>& host) const {
     if (!host.empty())
-      TRIDEM_CUDA_CHECK(cudaMemcpy(data_, host.data(), host.size() * sizeof(T),
-                                   cudaMemcpyHostToDevice));
+      TRIDEM_CUDA_CHECK(cudaMemcpy(host.data(), data_, host.size() * sizeof(T),
+                                   cudaMemcpyDeviceToHost));
   }
   void swap(DeviceBuffer& o) noexcept {
     std::swap(data_, o.data_);

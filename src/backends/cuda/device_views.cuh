@@ -55,12 +55,14 @@ struct StepParams {
   Real local_damping;
   const physics::ContactLaw<Real>* laws;  ///< row-major by material pair
   int n_materials;
+  Real max_depth;  ///< deepest PairForce::depth accepted ([simulation] max_penetration)
 };
 
 /// What the host reads back after every step.
 struct StepStatus {
   int rebuild;  ///< 1 when some particle has left its build box
   int bad;      ///< lowest particle whose step ran away, or INT_MAX
+  int deep;     ///< lowest emitter of a pair deeper than max_depth, or INT_MAX
 };
 
 }  // namespace tridem::cuda

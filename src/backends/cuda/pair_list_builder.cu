@@ -228,6 +228,24 @@ void PairListBuilder<Real>::index_rows() {
 }
 
 template <class Real>
+void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vector<int>& partner,
+                                 const std::vector<physics::PairSlip<Real>>& slip) {
+  if (partner.size() > partner_.size() || slip.size() > slip_.size())
+    reserve_pairs(partner.size() + partner.size() / 5 + 1024);
+  auto copy = [this](auto& buffer, const auto& host) {
+    if (!host.empty())
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(buffer.data(), host.data(),
+                                        host.size() * sizeof(host[0]),
+                                        cudaMemcpyHostToDevice, stream_));
+  };
+  copy(offset_, offset);
+  copy(partner_, partner);
+  copy(slip_, slip);
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  count_ = static_cast<int>(partner.size());
+}
+
+template <class Real>
 PairArrays<Real> PairListBuilder<Real>::arrays() const {
   return {count_,         offset_.data(),        partner_.data(),
           emitter_.data(), slip_.data(),          result_.data(),
@@ -236,11 +254,11 @@ PairArrays<Real> PairListBuilder<Real>::arrays() const {
 
 template <class Real>
 void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>& partner,
-                                     std::vector<physics::PairForce<Real>>& result) const {
+                                     std::vector<physics::PairSlip<Real>>* slip,
+                                     std::vector<physics::PairForce<Real>>* result) const {
   const auto count = static_cast<std::size_t>(count_);
   offset.resize(static_cast<std::size_t>(n_) + 1);
   partner.resize(count);
-  result.resize(count);
   auto copy = [this](auto& host, const auto& buffer) {
     if (!host.empty())
       TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host.data(), buffer.data(),
@@ -249,7 +267,14 @@ void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>&
   };
   copy(offset, offset_);
   copy(partner, partner_);
-  copy(result, result_);
+  if (slip) {
+    slip->resize(count);
+    copy(*slip, slip_);
+  }
+  if (result) {
+    result->resize(count);
+    copy(*result, result_);
+  }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
 }
 

@@ -45,14 +45,20 @@ class PairListBuilder {
   /// Whether a list serves only the step it was built for.
   bool single_step() const { return method_ == Method::SingleDomain; }
 
+  /// Replaces the list (and its history) by one given on the host: rows by emitter,
+  /// partners ascending. The next rebuild carries its slips over.
+  void load(const std::vector<int>& offset, const std::vector<int>& partner,
+            const std::vector<physics::PairSlip<Real>>& slip);
+
   PairArrays<Real> arrays() const;
   int count() const { return count_; }
   std::size_t capacity() const { return partner_.size(); }
   std::int64_t builds() const { return builds_; }
 
-  /// The list of the last step and its results on the host (contact output).
+  /// The list of the last step on the host (for contact output and checkpoints).
   void download(std::vector<int>& offset, std::vector<int>& partner,
-                std::vector<physics::PairForce<Real>>& result) const;
+                std::vector<physics::PairSlip<Real>>* slip,
+                std::vector<physics::PairForce<Real>>* result) const;
 
  private:
   void reserve_pairs(std::size_t pairs);

@@ -40,14 +40,19 @@ struct PairKernelShape<float> {
 
 template <class Real>
 __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
-    pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp) {
+    pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
+                       StepStatus* status) {
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
   physics::PairSlip<Real> slip = q.slip[s];
   const physics::ContactLaw<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
-  q.result[s] = physics::pair_force(load_body(p, e), load_body(p, j), law, sp.dt, slip);
+  const physics::PairForce<Real> result =
+      physics::pair_force(load_body(p, e), load_body(p, j), law, sp.dt, slip);
+  q.result[s] = result;
   q.slip[s] = slip;
+  // The lowest emitter, as the CPU reports it, whatever order the threads run in.
+  if (result.depth > sp.max_depth) atomicMin(&status->deep, e);
 }
 
 template <class Real>
@@ -101,15 +106,16 @@ __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
   if (!inside) atomicOr(&status->rebuild, 1);
 }
 
-/// Writes the advanced state (unless some particle ran away: then the last good state
-/// stays, as on the CPU) and the geometry of the state it leaves.
+/// Writes the advanced state (unless some particle ran away or some pair overlaps too
+/// deep: then the last good state stays, as on the CPU) and the geometry of the state it
+/// leaves.
 template <class Real>
 __global__ void integrate_kernel(ParticleArrays<Real> p, StepParams<Real> sp,
                                  StepStatus* status, bool advance) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n) return;
   if (advance) {
-    if (status->bad != INT_MAX) return;
+    if (status->bad != INT_MAX || status->deep != INT_MAX) return;
     const physics::Pose<Real> pose = advanced_pose(p, sp, i);
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;

@@ -7,8 +7,8 @@
 
 namespace tridem::io {
 
-OutFile::OutFile(std::filesystem::path path) : path_(std::move(path)) {
-  file_ = std::fopen(path_.c_str(), "wb");
+OutFile::OutFile(std::filesystem::path path, Mode mode) : path_(std::move(path)) {
+  file_ = std::fopen(path_.c_str(), mode == Mode::Append ? "ab" : "wb");
   if (!file_) fail("cannot create");
 }
 

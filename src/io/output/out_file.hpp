@@ -14,8 +14,9 @@ namespace tridem::io {
 
 class OutFile {
  public:
-  /// Creates or truncates the file.
-  explicit OutFile(std::filesystem::path path);
+  enum class Mode { Truncate, Append };
+  /// Creates or truncates the file, or appends to it (a restarted run's logs).
+  explicit OutFile(std::filesystem::path path, Mode mode = Mode::Truncate);
   ~OutFile();  ///< closes without reporting; call close() where errors must surface
   OutFile(OutFile&&) noexcept;
   OutFile& operator=(OutFile&&) noexcept;

@@ -1,6 +1,7 @@
 #include "io/output/log_rows.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/pvd_collection.hpp"
+#include "io/output/resume_outputs.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
@@ -44,11 +45,22 @@ void remove_earlier_run(const fs::path& dir) {
   for (const char* name : {"tridem.pvd", "contacts.pvd", "final.csv"}) fs::remove(dir / name, ec);
 }
 
-io::OutFile open_log(const fs::path& file, std::string_view header) {
+io::OutFile open_log(const fs::path& file, std::string_view header,
+                     const std::optional<ResumePoint>& resume) {
+  if (resume) {
+    io::trim_log(file, header, resume->step);
+    return io::OutFile(file, io::OutFile::Mode::Append);
+  }
   io::OutFile out(file);
   out.write(header);
   out.flush();
   return out;
+}
+
+io::PvdCollection open_collection(const fs::path& file, const std::optional<ResumePoint>& resume) {
+  io::PvdCollection collection(file);
+  if (resume) collection.restore(resume->time);
+  return collection;
 }
 
 }  // namespace
@@ -64,14 +76,18 @@ struct OutputSet::Impl {
   bool subfolders_made = false;
 };
 
-OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding encoding) {
+OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding encoding,
+                     const std::optional<ResumePoint>& resume) {
   make_directory(dir);
-  remove_earlier_run(dir);
+  if (resume)
+    io::remove_frames_after(dir, resume->step);
+  else
+    remove_earlier_run(dir);
   impl_ = std::make_unique<Impl>(Impl{settings, dir, encoding,
-                                      open_log(dir / "energy.csv", io::kEnergyHeader),
-                                      open_log(dir / "walls.csv", io::kWallsHeader),
-                                      io::PvdCollection(dir / "tridem.pvd"),
-                                      io::PvdCollection(dir / "contacts.pvd")});
+                                      open_log(dir / "energy.csv", io::kEnergyHeader, resume),
+                                      open_log(dir / "walls.csv", io::kWallsHeader, resume),
+                                      open_collection(dir / "tridem.pvd", resume),
+                                      open_collection(dir / "contacts.pvd", resume)});
 }
 
 OutputSet::~OutputSet() = default;

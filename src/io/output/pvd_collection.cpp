@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 #include <system_error>
 
 namespace tridem::io {
@@ -21,6 +23,22 @@ void PvdCollection::add(double time, const std::filesystem::path& dataset) {
     same->time = time;
   else
     entries_.push_back({time, std::move(relative)});
+  rewrite();
+}
+
+void PvdCollection::restore(double max_time) {
+  std::ifstream in(file_);
+  if (!in) return;
+  std::string line;
+  // Reads back exactly what rewrite() writes: one DataSet per line.
+  while (std::getline(in, line)) {
+    const std::size_t t = line.find("timestep=\""), f = line.find("file=\"");
+    if (t == std::string::npos || f == std::string::npos) continue;
+    const std::size_t f_end = line.find('"', f + 6);
+    if (f_end == std::string::npos) continue;
+    const double time = std::strtod(line.c_str() + t + 10, nullptr);
+    if (time <= max_time) entries_.push_back({time, line.substr(f + 6, f_end - f - 6)});
+  }
   rewrite();
 }
 

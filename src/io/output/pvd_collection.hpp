@@ -13,6 +13,10 @@ class PvdCollection {
   /// `file` is the .pvd; data set paths are stored relative to its folder.
   explicit PvdCollection(std::filesystem::path file);
 
+  /// Takes over the entries of an existing file with time <= `max_time` (a restarted run
+  /// continues its collection); none if there is no file.
+  void restore(double max_time);
+
   /// Lists `dataset` at `time` and rewrites the file. Adding the same data set again
   /// (a step written twice) updates its entry instead of duplicating it.
   void add(double time, const std::filesystem::path& dataset);

@@ -82,6 +82,10 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
   s.skin = r.real("skin").value_or(s.skin);
   if (!(s.skin >= 0 && s.skin <= 1))
     r.fail("skin", fmt::format("must be in [0, 1] (a fraction of the grid cell), got {}", s.skin));
+  s.max_penetration = r.real("max_penetration").value_or(s.max_penetration);
+  if (!(s.max_penetration > 0 && s.max_penetration <= 1))
+    r.fail("max_penetration",
+           fmt::format("must be in (0, 1] (1 = no check), got {}", s.max_penetration));
   r.reject_unknown_keys();
   return s;
 }
@@ -94,6 +98,10 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
   o.every = r.integer("every").value_or(o.every);
   if (o.every < 0) r.fail("every", fmt::format("must be >= 0 (0 = no frames), got {}", o.every));
   o.contacts = r.boolean("contacts").value_or(o.contacts);
+  o.checkpoint_every = r.integer("checkpoint_every").value_or(o.checkpoint_every);
+  if (o.checkpoint_every < 0)
+    r.fail("checkpoint_every",
+           fmt::format("must be >= 0 (0 = no periodic checkpoints), got {}", o.checkpoint_every));
   o.encoding = r.choice<Encoding>("vtk_encoding",
                                   {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}})
                    .value_or(o.encoding);

@@ -36,6 +36,12 @@ void check_settings(const Scene& scene, const Refuser& refuse) {
   if (!finite(s.gravity)) refuse("[simulation] gravity must be finite");
   if (!(s.local_damping >= 0 && s.local_damping < 1))
     refuse(fmt::format("[simulation] local_damping must be in [0, 1), got {}", s.local_damping));
+  if (!(s.max_penetration > 0 && s.max_penetration <= 1))
+    refuse(fmt::format("[simulation] max_penetration must be in (0, 1], got {}",
+                       s.max_penetration));
+  if (scene.output.checkpoint_every < 0)
+    refuse(fmt::format("[output] checkpoint_every must be >= 0, got {}",
+                       scene.output.checkpoint_every));
   if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
     refuse("[simulation] " + *why);
   const DecompositionSettings& d = s.decomposition;

@@ -39,11 +39,13 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
   EXPECT_EQ(s.simulation.decomposition.columns, 4);
   EXPECT_EQ(s.simulation.decomposition.capacity, 128);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0.2);
+  EXPECT_DOUBLE_EQ(s.simulation.max_penetration, 0.6);
 
   EXPECT_EQ(s.output.dir, "results");
   EXPECT_EQ(s.output.every, 100);
   EXPECT_FALSE(s.output.contacts);
   EXPECT_EQ(s.output.encoding, Encoding::Ascii);
+  EXPECT_EQ(s.output.checkpoint_every, 500);
 
   ASSERT_EQ(s.materials.size(), 2u);
   EXPECT_EQ(s.materials[0].name, "rock");
@@ -119,10 +121,12 @@ TEST(SceneParse, OmittedKeysTakeDefaults) {
   EXPECT_EQ(s.simulation.decomposition.capacity, 256);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0);
   EXPECT_DOUBLE_EQ(s.simulation.skin, 0.05);
+  EXPECT_DOUBLE_EQ(s.simulation.max_penetration, 0.8);
   EXPECT_EQ(s.output.dir, "out");
   EXPECT_EQ(s.output.every, 0);
   EXPECT_TRUE(s.output.contacts);
   EXPECT_EQ(s.output.encoding, Encoding::Binary);
+  EXPECT_EQ(s.output.checkpoint_every, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].friction, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].damping, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].tangential_penalty, 1e6);

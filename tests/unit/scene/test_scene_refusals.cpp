@@ -186,6 +186,12 @@ TEST(SceneRefusals, SettingRanges) {
   expect_refused("[simulation]\nsteps = 5\nskin = 2\n", {"bad.toml:3:", "key 'skin'"});
   expect_refused("[simulation]\nsteps = 5\n[output]\nevery = -1\n",
                  {"bad.toml:4:", "key 'every'"});
+  expect_refused("[simulation]\nsteps = 5\nmax_penetration = 0\n",
+                 {"bad.toml:3:", "key 'max_penetration'"});
+  expect_refused("[simulation]\nsteps = 5\nmax_penetration = 1.5\n",
+                 {"bad.toml:3:", "key 'max_penetration'"});
+  expect_refused("[simulation]\nsteps = 5\n[output]\ncheckpoint_every = -1\n",
+                 {"bad.toml:4:", "key 'checkpoint_every'"});
 }
 
 TEST(SceneRefusals, FixedTriangleThatMoves) {

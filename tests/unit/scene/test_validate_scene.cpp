@@ -90,6 +90,8 @@ TEST(SceneValidate, RefusesBadSettingsAndNamesTheSource) {
   expect_refused([](Scene& s) { s.simulation.safety = 2; }, {"safety"});
   expect_refused([](Scene& s) { s.simulation.local_damping = -0.5; }, {"local_damping"});
   expect_refused([](Scene& s) { s.output.every = -1; }, {"every"});
+  expect_refused([](Scene& s) { s.simulation.max_penetration = 0; }, {"max_penetration"});
+  expect_refused([](Scene& s) { s.output.checkpoint_every = -2; }, {"checkpoint_every"});
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+#pragma once
+// Everything a solver needs to continue a run exactly: the state a checkpoint stores.
+//
+// The contract every backend keeps (save_state / load_state in solver.hpp):
+//  - Values are the solver's own Real, stored in double. float -> double -> float is
+//    exact, so a float run restarted from its state is bit-identical too.
+//  - Per-particle arrays (x, y, theta, vx, vy, omega) have one entry per particle, in id
+//    order. Forces are not state: each step recomputes them before integrating.
+//  - The contact history is the friction slip of the pairs of the last completed step, as
+//    three parallel arrays in emitter-major, partner-ascending order (strictly increasing
+//    (emitter, partner)); the emitter of a pair is the one that computes it (see
+//    ARCHITECTURE.md). Only pairs with a slip other than +0.0 need to be listed: a pair
+//    that is absent starts from zero slip, exactly as a new contact does.
+//  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
+//    would have given without the round trip.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tridem {
+
+inline constexpr int kSlipsPerPair = 6;  ///< physics::kEdgeContacts: 2 roles x 3 edges
+
+struct SolverState {
+  std::int64_t step = 0;
+  double time = 0;
+  std::vector<double> x, y, theta;    ///< centroid and angle
+  std::vector<double> vx, vy, omega;  ///< velocities
+  std::vector<std::int32_t> pair_emitter, pair_partner;
+  std::vector<std::array<double, kSlipsPerPair>> pair_slip;
+
+  std::size_t size() const { return x.size(); }
+  std::size_t pairs() const { return pair_emitter.size(); }
+};
+
+/// Checks `state` against a solver of `particles` particles: array sizes, pair indices in
+/// range and distinct, pairs strictly sorted, values finite. Throws tridem::Error naming
+/// the first problem, prefixed by `source` (a file name, or the solver's name).
+void validate_solver_state(const SolverState& state, std::size_t particles,
+                           const std::string& source);
+
+}  // namespace tridem

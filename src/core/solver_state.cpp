@@ -1,0 +1,69 @@
+// The checks every backend's load_state makes before touching its state, so that a bad
+// state (a checkpoint of another scene, a bug in a backend) is refused with one message
+// instead of indexing out of range.
+#include "tridem/solver_state.hpp"
+
+#include "tridem/error.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace tridem {
+
+namespace {
+
+void check_size(std::size_t got, std::size_t expected, const char* what,
+                const std::string& source) {
+  if (got != expected)
+    throw Error(fmt::format("{}: state has {} values of {} for {} particles", source, got,
+                            what, expected));
+}
+
+void check_finite(const std::vector<double>& v, const char* what, const std::string& source) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      throw Error(fmt::format("{}: {} of particle {} is not finite ({})", source, what, i, v[i]));
+}
+
+}  // namespace
+
+void validate_solver_state(const SolverState& s, std::size_t particles,
+                           const std::string& source) {
+  if (s.step < 0) throw Error(fmt::format("{}: negative step {}", source, s.step));
+  if (!std::isfinite(s.time) || s.time < 0)
+    throw Error(fmt::format("{}: time {} is not a finite time >= 0", source, s.time));
+  const std::pair<const std::vector<double>*, const char*> arrays[] = {
+      {&s.x, "x"}, {&s.y, "y"}, {&s.theta, "theta"},
+      {&s.vx, "vx"}, {&s.vy, "vy"}, {&s.omega, "omega"}};
+  for (const auto& [v, what] : arrays) {
+    check_size(v->size(), particles, what, source);
+    check_finite(*v, what, source);
+  }
+  const std::size_t m = s.pair_emitter.size();
+  if (s.pair_partner.size() != m || s.pair_slip.size() != m)
+    throw Error(fmt::format("{}: contact history arrays differ in length ({} emitters, {} "
+                            "partners, {} slips)",
+                            source, m, s.pair_partner.size(), s.pair_slip.size()));
+  const auto n = static_cast<std::int64_t>(particles);
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::int64_t e = s.pair_emitter[k], p = s.pair_partner[k];
+    if (e < 0 || e >= n || p < 0 || p >= n || e == p)
+      throw Error(fmt::format("{}: contact history pair {} ({}, {}) is not a pair of two "
+                              "particles among 0..{}",
+                              source, k, e, p, n - 1));
+    if (k > 0) {
+      const std::int64_t pe = s.pair_emitter[k - 1], pp = s.pair_partner[k - 1];
+      if (e < pe || (e == pe && p <= pp))
+        throw Error(fmt::format("{}: contact history pair {} ({}, {}) is out of order after "
+                                "({}, {}): pairs must be sorted by emitter, then partner, "
+                                "without repeats",
+                                source, k, e, p, pe, pp));
+    }
+    for (double slip : s.pair_slip[k])
+      if (!std::isfinite(slip))
+        throw Error(fmt::format("{}: contact history pair {} ({}, {}) has a non-finite slip",
+                                source, k, e, p));
+  }
+}
+
+}  // namespace tridem

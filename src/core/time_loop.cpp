@@ -1,0 +1,114 @@
+#include "core/time_loop.hpp"
+
+#include "core/chunk_size.hpp"
+#include "tridem/error.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <fmt/format.h>
+
+namespace tridem {
+
+namespace {
+
+/// The next multiple of `every` after `step`, or `last` if that comes first (or every = 0).
+std::int64_t next_multiple(std::int64_t step, std::int64_t every, std::int64_t last) {
+  if (every <= 0) return last;
+  return std::min(last, (step / every + 1) * every);
+}
+
+bool is_due(std::int64_t step, std::int64_t every) { return every > 0 && step % every == 0; }
+
+}  // namespace
+
+TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, CheckpointMeta meta,
+                   const std::atomic<int>* interrupt, bool progress)
+    : solver_(solver),
+      out_(out),
+      scene_(scene),
+      meta_(meta),
+      interrupt_(interrupt),
+      files_(scene.output.dir),
+      bar_(scene.simulation.steps, progress && is_terminal(stderr)),
+      last_(scene.simulation.steps),
+      every_(scene.output.every),
+      checkpoint_every_(scene.output.checkpoint_every) {}
+
+void TimeLoop::start(bool resumed) {
+  if (!resumed) {
+    emit(solver_.step());
+  } else if (solver_.step() == last_) {  // nothing left to run
+    solver_.snapshot(snap_, false);
+    out_.write_final(snap_);
+  }
+}
+
+int TimeLoop::run() {
+  int signal = 0;
+  while (solver_.step() < last_ && signal == 0) {
+    const std::int64_t step = solver_.step();
+    signal = advance_to(std::min(next_multiple(step, every_, last_),
+                                 next_multiple(step, checkpoint_every_, last_)));
+    if (signal == 0) write_due(solver_.step());
+  }
+  bar_.finish();
+  if (signal != 0) keep_state(files_.checkpoint);
+  return signal;
+}
+
+int TimeLoop::advance_to(std::int64_t target) {
+  while (solver_.step() < target) {
+    if (interrupt_ && interrupt_->load() != 0) return interrupt_->load();
+    advance_chunk(target);
+    bar_.update(solver_.step());
+  }
+  return 0;
+}
+
+// Chunks of 0.05 to 0.2 s (chunk_size.hpp): the progress bar moves without a clock read
+// in every step, and an interruption is seen within a fraction of a second.
+void TimeLoop::advance_chunk(std::int64_t target) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::int64_t steps = std::min(chunk_, target - solver_.step());
+  try {
+    solver_.advance(steps);
+  } catch (const RunError& e) {
+    // A blow-up: the solver holds the last good state; keep it for diagnosis or a restart.
+    bar_.finish();
+    keep_state(files_.last_good);
+    throw RunError(fmt::format("{}\nthe last good state (step {}) is in {} (continue from it "
+                               "with --restart once the cause is fixed) and {}",
+                               e.what(), solver_.step(), files_.last_good.string(),
+                               (out_.dir() / "final.csv").string()));
+  }
+  chunk_ = next_chunk(chunk_, steps,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+void TimeLoop::write_due(std::int64_t step) {
+  if (is_due(step, every_) || step == last_) emit(step);
+  if (is_due(step, checkpoint_every_) || (checkpoint_every_ > 0 && step == last_))
+    save_checkpoint(files_.checkpoint);
+}
+
+void TimeLoop::emit(std::int64_t step) {
+  const bool frame = every_ > 0 && (step % every_ == 0 || step == last_);
+  solver_.snapshot(snap_, frame && scene_.output.contacts);
+  if (frame) out_.write_frame(snap_);
+  out_.log(snap_);
+  if (step == last_) out_.write_final(snap_);
+}
+
+void TimeLoop::keep_state(const std::filesystem::path& file) {
+  save_checkpoint(file);
+  solver_.snapshot(snap_, false);
+  out_.write_final(snap_);
+}
+
+void TimeLoop::save_checkpoint(const std::filesystem::path& file) {
+  solver_.save_state(checkpoint_.state);
+  checkpoint_.meta = meta_;
+  write_checkpoint(file, checkpoint_);
+}
+
+}  // namespace tridem

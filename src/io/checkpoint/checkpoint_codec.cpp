@@ -1,0 +1,156 @@
+// encode_checkpoint / decode_checkpoint: the layout of format.hpp, and every check a
+// file must pass before its numbers are trusted.
+#include "io/checkpoint/byte_codec.hpp"
+#include "io/checkpoint/crc32.hpp"
+#include "io/checkpoint/format.hpp"
+#include "tridem/checkpoint.hpp"
+
+#include <array>
+#include <cstring>
+
+namespace tridem {
+
+namespace fmt_ = checkpoint_format;
+
+namespace {
+
+/// The six per-particle arrays in file order (const or not, as the state is).
+template <class State>
+auto state_arrays(State& s) {
+  return std::array{&s.x, &s.y, &s.theta, &s.vx, &s.vy, &s.omega};
+}
+
+constexpr const char* kArrayNames[6] = {"x", "y", "theta", "vx", "vy", "omega"};
+
+void put_u32_at(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
+}
+
+std::uint32_t header_crc(std::span<const std::uint8_t> bytes) {
+  return io::crc32(bytes.first(fmt_::kHeaderCrcOffset));
+}
+
+struct Header {
+  std::uint32_t version = 0, precision = 0;
+  std::uint64_t particles = 0, scene_hash = 0, payload_size = 0;
+  std::uint32_t payload_crc = 0, header_crc = 0;
+};
+
+Header read_header(std::span<const std::uint8_t> bytes, const std::string& source) {
+  if (bytes.size() < fmt_::kHeaderSize)
+    throw RunError(fmt::format("{}: truncated: {} bytes, less than the {}-byte header of a "
+                               "tridem checkpoint",
+                               source, bytes.size(), fmt_::kHeaderSize));
+  if (std::memcmp(bytes.data(), fmt_::kMagic, sizeof fmt_::kMagic) != 0)
+    throw RunError(fmt::format("{}: not a tridem checkpoint (no TRIDEMCK magic number)", source));
+  io::ByteReader r(bytes.subspan(sizeof fmt_::kMagic), source);
+  Header h;
+  h.version = r.u32("version");
+  h.precision = r.u32("precision");
+  h.particles = r.u64("particle count");
+  h.scene_hash = r.u64("scene fingerprint");
+  h.payload_size = r.u64("payload size");
+  h.payload_crc = r.u32("payload checksum");
+  h.header_crc = r.u32("header checksum");
+  if (h.header_crc != header_crc(bytes))
+    throw RunError(fmt::format("{}: corrupt: the header's checksum does not match", source));
+  if (h.version != fmt_::kVersion)
+    throw RunError(fmt::format("{}: checkpoint format version {}; this tridem reads version {}",
+                               source, h.version, fmt_::kVersion));
+  if (h.precision > 1)
+    throw RunError(fmt::format("{}: corrupt: unknown precision code {}", source, h.precision));
+  return h;
+}
+
+/// The payload's size, checked against the file and against n before anything is sized
+/// from either, so that a damaged count cannot ask for a huge allocation.
+void check_sizes(const Header& h, std::size_t file_size, const std::string& source) {
+  const std::uint64_t actual = file_size - fmt_::kHeaderSize;
+  if (h.payload_size > actual)
+    throw RunError(fmt::format("{}: truncated: {} bytes of state, the header announces {} "
+                               "(the file was cut short; use an earlier checkpoint)",
+                               source, actual, h.payload_size));
+  if (h.payload_size < actual)
+    throw RunError(fmt::format("{}: corrupt: {} bytes after the announced end of the state",
+                               source, actual - h.payload_size));
+  if (h.particles > (h.payload_size / 48) || fmt_::fixed_payload_size(h.particles) > h.payload_size)
+    throw RunError(fmt::format("{}: corrupt: {} particles do not fit in {} bytes of state",
+                               source, h.particles, h.payload_size));
+}
+
+SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& source) {
+  SolverState s;
+  s.step = r.i64("step");
+  s.time = r.f64("time");
+  for (int k = 0; k < 6; ++k) {
+    std::vector<double>& v = *state_arrays(s)[k];
+    v.resize(n);
+    for (double& value : v) value = r.f64(kArrayNames[k]);
+  }
+  const std::uint64_t m = r.u64("pair count");
+  if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
+    throw RunError(fmt::format("{}: corrupt: {} pairs of contact history do not fill the "
+                               "{} bytes left",
+                               source, m, r.remaining()));
+  s.pair_emitter.resize(m);
+  s.pair_partner.resize(m);
+  s.pair_slip.resize(m);
+  for (auto& e : s.pair_emitter) e = r.i32("pair emitters");
+  for (auto& p : s.pair_partner) p = r.i32("pair partners");
+  for (auto& slip : s.pair_slip)
+    for (double& v : slip) v = r.f64("pair slips");
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
+  const SolverState& s = c.state;
+  const std::size_t n = s.size(), m = s.pairs();
+  std::vector<std::uint8_t> payload;
+  payload.reserve(fmt_::fixed_payload_size(n) + m * fmt_::kBytesPerPair);
+  io::ByteWriter p(payload);
+  p.i64(s.step);
+  p.f64(s.time);
+  for (const std::vector<double>* array : state_arrays(s))
+    for (double v : *array) p.f64(v);
+  p.u64(m);
+  for (std::int32_t e : s.pair_emitter) p.i32(e);
+  for (std::int32_t j : s.pair_partner) p.i32(j);
+  for (const auto& slip : s.pair_slip)
+    for (double v : slip) p.f64(v);
+
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(fmt_::kHeaderSize + payload.size());
+  io::ByteWriter h(bytes);
+  for (char ch : fmt_::kMagic) bytes.push_back(static_cast<std::uint8_t>(ch));
+  h.u32(fmt_::kVersion);
+  h.u32(c.meta.precision == Precision::Float ? 1 : 0);
+  h.u64(n);
+  h.u64(c.meta.scene_hash);
+  h.u64(payload.size());
+  h.u32(io::crc32(payload));
+  h.u32(0);  // header checksum, filled below
+  put_u32_at(bytes, fmt_::kHeaderCrcOffset, header_crc(bytes));
+  bytes.insert(bytes.end(), payload.begin(), payload.end());
+  return bytes;
+}
+
+Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::string& source) {
+  const Header h = read_header(bytes, source);
+  check_sizes(h, bytes.size(), source);
+  const auto payload = bytes.subspan(fmt_::kHeaderSize);
+  if (io::crc32(payload) != h.payload_crc)
+    throw RunError(fmt::format("{}: corrupt: the state's checksum does not match (the file "
+                               "was damaged; use an earlier checkpoint)",
+                               source));
+  io::ByteReader r(payload, source);
+  Checkpoint c;
+  c.meta.precision = h.precision == 1 ? Precision::Float : Precision::Double;
+  c.meta.scene_hash = h.scene_hash;
+  c.state = read_payload(r, static_cast<std::size_t>(h.particles), source);
+  validate_solver_state(c.state, c.state.size(), source);
+  return c;
+}
+
+}  // namespace tridem

@@ -1,0 +1,46 @@
+// scene_fingerprint: FNV-1a over the bit patterns of what defines the particles. Generated
+// triangles are reproducible (seeded), so a generated scene has a stable fingerprint too.
+#include "tridem/checkpoint.hpp"
+
+#include <bit>
+
+namespace tridem {
+
+namespace {
+
+class Fnv1a {
+ public:
+  void add(std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) {
+      hash_ ^= (v >> (8 * k)) & 0xFFu;
+      hash_ *= 0x100000001B3ull;
+    }
+  }
+  void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 0xCBF29CE484222325ull;
+};
+
+}  // namespace
+
+std::uint64_t scene_fingerprint(const Scene& scene) {
+  Fnv1a h;
+  h.add(std::uint64_t{scene.triangles.size()});
+  for (const TriangleSpec& t : scene.triangles) {
+    h.add(static_cast<std::uint64_t>(t.material));
+    h.add(static_cast<std::uint64_t>(t.motion));
+    for (const Vec2d& v : t.vertices) {
+      h.add(v.x);
+      h.add(v.y);
+    }
+    h.add(t.velocity.x);
+    h.add(t.velocity.y);
+    h.add(t.angular_velocity);
+  }
+  for (const Material& m : scene.materials) h.add(m.density);
+  return h.value();
+}
+
+}  // namespace tridem

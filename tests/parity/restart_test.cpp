@@ -1,0 +1,171 @@
+// Restart bit-identity: a run stopped at step N/2, saved through a checkpoint file's bytes
+// and loaded into a fresh solver ends at step N exactly where an uninterrupted run does,
+// on each backend and precision. The pile has friction, so the contact history must
+// survive the round trip: RestartWithoutHistoryDiverges shows that it matters here.
+#include "support/gpu.hpp"
+#include "support/scene_builder.hpp"
+#include "tridem/checkpoint.hpp"
+#include "tridem/solver.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+namespace tridem {
+namespace {
+
+constexpr std::int64_t kSteps = 400;
+
+std::unique_ptr<Solver> solver_for(const Scene& s, Backend backend, Precision precision,
+                                   Method method = Method::Grid) {
+  SolverConfig config;
+  config.backend = backend;
+  config.precision = precision;
+  config.method = method;
+  return make_solver(s, config);
+}
+
+/// The state after kSteps/2, through the checkpoint encoding and back.
+SolverState halfway_state(const Scene& s, Backend backend, Precision precision,
+                          Method method = Method::Grid) {
+  auto first = solver_for(s, backend, precision, method);
+  first->advance(kSteps / 2);
+  Checkpoint c;
+  first->save_state(c.state);
+  c.meta = {precision, scene_fingerprint(s)};
+  return decode_checkpoint(encode_checkpoint(c), "test").state;
+}
+
+SolverState final_state(Solver& solver) {
+  solver.advance(kSteps - solver.step());
+  SolverState out;
+  solver.save_state(out);
+  return out;
+}
+
+void expect_bit_identical(const SolverState& a, const SolverState& b) {
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.time, b.time);
+  for (auto member : {&SolverState::x, &SolverState::y, &SolverState::theta, &SolverState::vx,
+                      &SolverState::vy, &SolverState::omega}) {
+    const auto& va = a.*member;
+    const auto& vb = b.*member;
+    ASSERT_EQ(va.size(), vb.size());
+    for (std::size_t i = 0; i < va.size(); ++i) ASSERT_EQ(va[i], vb[i]) << "particle " << i;
+  }
+  EXPECT_EQ(a.pair_emitter, b.pair_emitter);
+  EXPECT_EQ(a.pair_partner, b.pair_partner);
+  EXPECT_EQ(a.pair_slip, b.pair_slip);
+}
+
+void expect_restart_exact(Backend backend, Precision precision, Method method = Method::Grid,
+                          const Scene& s = test::jostling_pile(12, 8)) {
+  auto straight = solver_for(s, backend, precision, method);
+  const SolverState expected = final_state(*straight);
+
+  const SolverState half = halfway_state(s, backend, precision, method);
+  ASSERT_GT(half.pairs(), 10u) << "the pile must carry contact history at the restart";
+  auto restarted = solver_for(s, backend, precision, method);
+  restarted->load_state(half);
+  expect_bit_identical(final_state(*restarted), expected);
+}
+
+TEST(Restart, SerialDoubleIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Double); }
+TEST(Restart, SerialFloatIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Float); }
+
+TEST(Restart, SingleDomainIsBitIdentical) {
+  expect_restart_exact(Backend::Cpu, Precision::Double, Method::SingleDomain);
+}
+
+// A restarted decomposition groups the particles afresh: other borders, the same pairs.
+TEST(Restart, DecompositionIsBitIdentical) {
+  expect_restart_exact(Backend::Cpu, Precision::Double, Method::Decomposition,
+                       test::with_decomposition(test::jostling_pile(12, 8),
+                                                DecompositionLayout::Grid, 24));
+}
+
+TEST(Restart, OpenMPIsBitIdentical) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(3);
+  expect_restart_exact(Backend::OpenMP, Precision::Double);
+  omp_set_num_threads(saved);
+}
+
+TEST(Restart, RestartWithoutHistoryDiverges) {
+  const Scene s = test::jostling_pile(12, 8);
+  auto straight = solver_for(s, Backend::Cpu, Precision::Double);
+  const SolverState expected = final_state(*straight);
+  SolverState half = halfway_state(s, Backend::Cpu, Precision::Double);
+  half.pair_emitter.clear();
+  half.pair_partner.clear();
+  half.pair_slip.clear();
+  auto restarted = solver_for(s, Backend::Cpu, Precision::Double);
+  restarted->load_state(half);
+  const SolverState got = final_state(*restarted);
+  EXPECT_NE(got.x, expected.x) << "dropping the friction history must change the run, or the "
+                                  "restart tests do not test it";
+}
+
+TEST(GpuRestart, DoubleIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Double);
+}
+
+TEST(GpuRestart, FloatIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Float);
+}
+
+TEST(GpuRestart, SingleDomainIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Double, Method::SingleDomain);
+}
+
+TEST(GpuRestart, DecompositionIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Double, Method::Decomposition,
+                       test::with_decomposition(test::jostling_pile(12, 8),
+                                                DecompositionLayout::Grid, 24));
+}
+
+// The GPU's list also holds pairs within its skin that do not touch; its saved history
+// must still be the CPU's: the same pairs, and slips that agree to rounding.
+TEST(GpuRestart, SavesTheSameHistoryAsTheCpu) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = test::jostling_pile(12, 8);
+  const SolverState cpu = halfway_state(s, Backend::Cpu, Precision::Double);
+  const SolverState gpu = halfway_state(s, Backend::Cuda, Precision::Double);
+  ASSERT_GT(cpu.pairs(), 10u);
+  EXPECT_EQ(gpu.pair_emitter, cpu.pair_emitter);
+  ASSERT_EQ(gpu.pair_partner, cpu.pair_partner);
+  for (std::size_t k = 0; k < cpu.pairs(); ++k)
+    for (int e = 0; e < kSlipsPerPair; ++e)
+      EXPECT_NEAR(gpu.pair_slip[k][e], cpu.pair_slip[k][e], 1e-12) << "pair " << k;
+}
+
+// A checkpoint does not name its backend: a CPU state continued on the GPU stays with the
+// CPU run to rounding.
+TEST(GpuRestart, ContinuesACpuCheckpoint) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = test::jostling_pile(12, 8);
+  auto straight = solver_for(s, Backend::Cpu, Precision::Double);
+  const SolverState expected = final_state(*straight);
+  auto gpu = solver_for(s, Backend::Cuda, Precision::Double);
+  gpu->load_state(halfway_state(s, Backend::Cpu, Precision::Double));
+  const SolverState got = final_state(*gpu);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(got.x[i], expected.x[i], 1e-9) << "particle " << i;
+    EXPECT_NEAR(got.y[i], expected.y[i], 1e-9) << "particle " << i;
+  }
+}
+
+TEST(Restart, StateAtStepZeroHasNoHistory) {
+  auto solver = solver_for(test::jostling_pile(4, 3), Backend::Cpu, Precision::Double);
+  SolverState s;
+  solver->save_state(s);
+  EXPECT_EQ(s.step, 0);
+  EXPECT_EQ(s.pairs(), 0u);
+  EXPECT_EQ(s.size(), solver->size());
+}
+
+}  // namespace
+}  // namespace tridem

@@ -1,0 +1,109 @@
+// The run loop's side of checkpoints: restarted runs continue the output files exactly
+// (rows written after the checkpoint by a run that died are replaced, not duplicated), an
+// interruption and a blow-up leave a loadable checkpoint and final.csv.
+#include "support/scene_builder.hpp"
+#include "tridem/checkpoint.hpp"
+#include "tridem/error.hpp"
+#include "tridem/run.hpp"
+#include "unit/io/io_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tridem {
+namespace {
+
+namespace fs = std::filesystem;
+
+Scene pile(const fs::path& dir) {
+  Scene s = test::jostling_pile(6, 4);
+  s.simulation.steps = 300;
+  s.simulation.backend = Backend::Cpu;
+  s.output.dir = dir.string();
+  s.output.every = 50;
+  s.output.checkpoint_every = 100;
+  return s;
+}
+
+RunSummary run(const Scene& s, std::optional<std::int64_t> steps = std::nullopt,
+               std::optional<fs::path> restart = std::nullopt) {
+  RunOptions o;
+  o.progress = false;
+  o.log = nullptr;
+  o.steps = steps;
+  if (restart) o.restart = restart->string();
+  return run_scene(s, o);
+}
+
+void expect_same_outputs(const fs::path& a, const fs::path& b) {
+  for (const char* f : {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
+                        "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv"})
+    EXPECT_EQ(test::read_file(a / f), test::read_file(b / f)) << f;
+}
+
+TEST(RunCheckpoint, RestartContinuesTheOutputsExactly) {
+  test::TempDir dir;
+  const Scene straight = pile(dir.path() / "straight");
+  run(straight);
+  EXPECT_EQ(read_checkpoint(dir.path() / "straight" / "checkpoint.ckpt").state.step, 300);
+
+  // A run that dies at step 250, after its checkpoint at 200 was written.
+  const Scene broken = pile(dir.path() / "broken");
+  run(broken, 200);
+  const fs::path saved = dir.path() / "at200.ckpt";
+  fs::copy_file(dir.path() / "broken" / "checkpoint.ckpt", saved);
+  run(broken, 250, saved);
+  ASSERT_TRUE(fs::exists(dir.path() / "broken" / "frames" / "frame_000000250.vtu"));
+
+  const RunSummary s = run(broken, std::nullopt, saved);
+  EXPECT_EQ(s.steps, 100);
+  EXPECT_EQ(s.last_step, 300);
+  expect_same_outputs(dir.path() / "straight", dir.path() / "broken");
+}
+
+TEST(RunCheckpoint, InterruptionWritesCheckpointAndFinal) {
+  test::TempDir dir;
+  const Scene s = pile(dir.path());
+  std::atomic<int> interrupt{15};
+  RunOptions o;
+  o.progress = false;
+  o.log = nullptr;
+  o.interrupt = &interrupt;
+  const RunSummary summary = run_scene(s, o);
+  EXPECT_EQ(summary.interrupted_by, 15);
+  EXPECT_EQ(summary.checkpoint, (dir.path() / "checkpoint.ckpt").string());
+  EXPECT_EQ(read_checkpoint(summary.checkpoint).state.step, summary.last_step);
+  EXPECT_TRUE(fs::exists(dir.path() / "final.csv"));
+  // and the run can go on from there to the end
+  EXPECT_EQ(run(s, std::nullopt, summary.checkpoint).last_step, 300);
+}
+
+TEST(RunCheckpoint, BlowUpKeepsTheLastGoodState) {
+  test::TempDir dir;
+  Scene s = test::empty_scene(1e3);
+  s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
+  s.triangles.push_back(test::triangle({0.3, 0.3}, {1.3, 0.3}, {0.3, 1.3}));
+  s.simulation.steps = 10;
+  s.output.dir = dir.path().string();
+  try {
+    run(s);
+    ADD_FAILURE() << "no blow-up";
+  } catch (const RunError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("last_good.ckpt"), std::string::npos) << message;
+    EXPECT_NE(message.find("final.csv"), std::string::npos) << message;
+  }
+  const Checkpoint good = read_checkpoint(dir.path() / "last_good.ckpt");
+  EXPECT_EQ(good.state.step, 0);
+  EXPECT_DOUBLE_EQ(good.state.x[1], 0.3 + 1.0 / 3);  // centroid of the untouched particle
+  EXPECT_EQ(test::read_lines(dir.path() / "final.csv").size(), 3u);
+}
+
+TEST(RunCheckpoint, RestartPastTheEndIsRefused) {
+  test::TempDir dir;
+  const Scene s = pile(dir.path());
+  run(s, 200);
+  EXPECT_THROW(run(s, 100, dir.path() / "checkpoint.ckpt"), RunError);
+}
+
+}  // namespace
+}  // namespace tridem
