@@ -8,6 +8,8 @@
 #include <iostream>
 #include <string>
 
+#include "tridem/setting_names.hpp"
+
 namespace tridem::bench {
 
 /// Takes "--name=value" out of argv; returns the value or an empty string.
@@ -36,6 +38,24 @@ inline double parse_number(const char* program, const std::string& flag, const s
   }
   std::cerr << program << ": --" << flag << " wants a positive number, got '" << text << "'\n";
   std::exit(2);
+}
+
+/// Takes "--name=spelling" out of argv into `value`, for a setting spelt in `table`
+/// (tridem/setting_names.hpp); false, after a message naming the program, for a spelling
+/// it does not know.
+template <class Table, class E>
+bool take_choice(const char* program, int& argc, char** argv, const std::string& name,
+                 const Table& table, E& value) {
+  const std::string text = take_flag(argc, argv, name);
+  if (text.empty()) return true;
+  const auto v = value_in(table, text);
+  if (!v) {
+    std::cerr << program << ": --" << name << " wants one of " << spellings_of(table) << "; got '"
+              << text << "'\n";
+    return false;
+  }
+  value = *v;
+  return true;
 }
 
 inline std::string cpu_model() {

@@ -28,6 +28,9 @@
 //                     are found (single-domain is O(n²) per step: keep --max_n small)
 //   --contact_test=T  exact (default) or direct-area, for single-domain and decomposition
 //   --bbox_prefilter=0  the paper's pre-filter off (single-domain and decomposition)
+//   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
+//                     [simulation.decomposition] for --method=decomposition (default 1d,
+//                     capacity 256; rows and columns 2d only, chosen when not given)
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
@@ -46,6 +49,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -110,6 +114,7 @@ const tridem::Scene& pile(std::size_t n) {
     scene.simulation.method = g_method.method;
     scene.simulation.contact_test = g_method.contact_test;
     scene.simulation.bbox_prefilter = g_method.bbox_prefilter;
+    scene.simulation.decomposition = g_method.decomposition;
     cached_n = n;
   }
   return scene;
@@ -217,31 +222,24 @@ int main(int argc, char** argv) {
     start = comma + 1;
   }
   const bool frames = !take_flag(argc, argv, "frames").empty();
-  const std::string method_flag = take_flag(argc, argv, "method");
-  const std::string test_flag = take_flag(argc, argv, "contact_test");
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
-  if (!method_flag.empty()) {
-    const auto m = tridem::value_in(tridem::kMethodNames, method_flag);
-    if (!m) {
-      std::cerr << "tridem_bench: --method wants one of "
-                << tridem::spellings_of(tridem::kMethodNames) << "; got '" << method_flag << "'\n";
-      return 2;
-    }
-    g_method.method = *m;
-  }
-  if (!test_flag.empty()) {
-    const auto t = tridem::value_in(tridem::kContactTestNames, test_flag);
-    if (!t) {
-      std::cerr << "tridem_bench: --contact_test wants one of "
-                << tridem::spellings_of(tridem::kContactTestNames) << "; got '" << test_flag
-                << "'\n";
-      return 2;
-    }
-    g_method.contact_test = *t;
-  }
+  tridem::DecompositionSettings& d = g_method.decomposition;
+  using tridem::bench::take_choice;
+  if (!take_choice("tridem_bench", argc, argv, "method", tridem::kMethodNames, g_method.method) ||
+      !take_choice("tridem_bench", argc, argv, "contact_test", tridem::kContactTestNames,
+                   g_method.contact_test) ||
+      !take_choice("tridem_bench", argc, argv, "layout", tridem::kLayoutNames, d.layout))
+    return 2;
   g_method.bbox_prefilter = prefilter_flag != "0";
-  const std::string method_tag =
+  for (auto [flag, value] : {std::pair{"rows", &d.rows}, std::pair{"columns", &d.columns},
+                             std::pair{"capacity", &d.capacity}})
+    if (const std::string text = take_flag(argc, argv, flag); !text.empty())
+      *value = static_cast<int>(parse_number("tridem_bench", flag, text));
+  std::string method_tag =
       g_method.method == tridem::Method::Grid ? "" : "/" + std::string(tridem::method_name(g_method.method));
+  if (g_method.method == tridem::Method::Decomposition)
+    method_tag += "-" + std::string(tridem::name_in(tridem::kLayoutNames, d.layout)) + "-" +
+                  std::to_string(d.capacity);
 
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;

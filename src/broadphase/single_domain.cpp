@@ -23,12 +23,9 @@ void SingleDomainPairs<Real>::find(const TriangleArrays<Real>& g, bool parallel,
   const auto n = static_cast<std::int32_t>(free_.size());
   fill_rows(free_.size(), parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
     if (!small_[i]) return;  // large particles are reached from the small ones
-    const physics::Triangle<Real> a = g.triangle(i);
-    const physics::Aabb<Real> box_a = g.box(i);
+    const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_);
     auto consider = [&](std::int32_t j) {
-      if (emits_pair(i, j, true, small_[j] != 0, free_[i] != 0, free_[j] != 0) &&
-          passes_contact_test(a, box_a, g.triangle(j), g.box(j), filter_))
-        emit(j);
+      if (passes(j)) emit(j);
     };
     // Partners ascending: the walls below i, then every particle above it.
     for (const std::int32_t j : large_) {

@@ -42,9 +42,6 @@ void check_method(const Scene& scene, Method method) {
   const SimulationSettings& s = scene.simulation;
   if (auto why = method_settings_conflict(method, s.contact_test, s.bbox_prefilter))
     throw SceneError(source + ": [simulation] " + *why);
-  if (method == Method::Decomposition)
-    throw SceneError(source + ": method \"decomposition\" is not implemented yet; use "
-                              "\"single-domain\" (the paper's baseline) or \"grid\"");
 }
 
 }  // namespace

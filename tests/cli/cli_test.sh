@@ -65,7 +65,11 @@ expect_ok "$tridem" run pile.toml --quiet --out single --steps 5 --backend cpu -
   --contact-test direct-area --no-bbox-prefilter
 grep -q "single-domain (contact test direct-area, bbox pre-filter off)" out.txt ||
   fail "--method single-domain --contact-test direct-area --no-bbox-prefilter not used"
-expect_error "not implemented yet" "$tridem" run pile.toml --quiet --steps 5 --method decomposition
+expect_ok "$tridem" run pile.toml --quiet --out decomposition --steps 5 --method decomposition --backend cpu
+grep -q "decomposition: .* sub-domains" out.txt || fail "--method decomposition: no sub-domains in the summary"
+sed 's/^\[output\]/[simulation.decomposition]\ncapacity = 2\n[output]/' pile.toml >tight.toml
+expect_error "more than the capacity 2 of one sub-domain" "$tridem" run tight.toml --quiet --steps 5 --out tight \
+  --method decomposition --backend cpu
 expect_error "contact_test" "$tridem" run pile.toml --quiet --steps 5 --contact-test direct-area
 expect_error "bbox_prefilter" "$tridem" run pile.toml --quiet --steps 5 --no-bbox-prefilter
 

@@ -57,8 +57,8 @@ void expect_bit_identical(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.pair_slip, b.pair_slip);
 }
 
-void expect_restart_exact(Backend backend, Precision precision, Method method = Method::Grid) {
-  const Scene s = test::jostling_pile(12, 8);
+void expect_restart_exact(Backend backend, Precision precision, Method method = Method::Grid,
+                          const Scene& s = test::jostling_pile(12, 8)) {
   auto straight = solver_for(s, backend, precision, method);
   const SolverState expected = final_state(*straight);
 
@@ -74,6 +74,13 @@ TEST(Restart, SerialFloatIsBitIdentical) { expect_restart_exact(Backend::Cpu, Pr
 
 TEST(Restart, SingleDomainIsBitIdentical) {
   expect_restart_exact(Backend::Cpu, Precision::Double, Method::SingleDomain);
+}
+
+// A restarted decomposition groups the particles afresh: other borders, the same pairs.
+TEST(Restart, DecompositionIsBitIdentical) {
+  expect_restart_exact(Backend::Cpu, Precision::Double, Method::Decomposition,
+                       test::with_decomposition(test::jostling_pile(12, 8),
+                                                DecompositionLayout::Grid, 24));
 }
 
 TEST(Restart, OpenMPIsBitIdentical) {
@@ -111,6 +118,13 @@ TEST(GpuRestart, FloatIsBitIdentical) {
 TEST(GpuRestart, SingleDomainIsBitIdentical) {
   TRIDEM_SKIP_WITHOUT_GPU();
   expect_restart_exact(Backend::Cuda, Precision::Double, Method::SingleDomain);
+}
+
+TEST(GpuRestart, DecompositionIsBitIdentical) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_restart_exact(Backend::Cuda, Precision::Double, Method::Decomposition,
+                       test::with_decomposition(test::jostling_pile(12, 8),
+                                                DecompositionLayout::Grid, 24));
 }
 
 // The GPU's list also holds pairs within its skin that do not touch; its saved history

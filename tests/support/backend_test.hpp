@@ -7,7 +7,7 @@
 //   INSTANTIATE_TEST_SUITE_P(Gpu, Suite, ::testing::Values(Backend::Cuda));
 //
 // or TRIDEM_INSTANTIATE_SOLVERS(Suite) for both backends with the cell grid and with the
-// paper's single-domain method.
+// paper's single-domain and decomposition methods.
 //
 // Where no GPU is usable, the CUDA instances skip themselves in SetUp, with the reason;
 // GoogleTest then does not run the test body. No name generator on purpose: GoogleTest
@@ -69,16 +69,12 @@ class BackendTest : public ::testing::TestWithParam<SolverChoice> {
 
 }  // namespace tridem::test
 
-#define TRIDEM_INSTANTIATE_SOLVERS(Suite)                                                   \
-  INSTANTIATE_TEST_SUITE_P(Cpu, Suite,                                                      \
-                           ::testing::Values(::tridem::test::SolverChoice(                  \
-                                                 ::tridem::Backend::Cpu),                   \
-                                             ::tridem::test::SolverChoice(                  \
-                                                 ::tridem::Backend::Cpu,                    \
-                                                 ::tridem::Method::SingleDomain)));         \
-  INSTANTIATE_TEST_SUITE_P(Gpu, Suite,                                                      \
-                           ::testing::Values(::tridem::test::SolverChoice(                  \
-                                                 ::tridem::Backend::Cuda),                  \
-                                             ::tridem::test::SolverChoice(                  \
-                                                 ::tridem::Backend::Cuda,                   \
-                                                 ::tridem::Method::SingleDomain)))
+/// Every method on one backend.
+#define TRIDEM_SOLVER_CHOICES(backend)                                                       \
+  ::testing::Values(::tridem::test::SolverChoice(backend),                                  \
+                    ::tridem::test::SolverChoice(backend, ::tridem::Method::SingleDomain),  \
+                    ::tridem::test::SolverChoice(backend, ::tridem::Method::Decomposition))
+
+#define TRIDEM_INSTANTIATE_SOLVERS(Suite)                                         \
+  INSTANTIATE_TEST_SUITE_P(Cpu, Suite, TRIDEM_SOLVER_CHOICES(::tridem::Backend::Cpu)); \
+  INSTANTIATE_TEST_SUITE_P(Gpu, Suite, TRIDEM_SOLVER_CHOICES(::tridem::Backend::Cuda))

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
 
 namespace tridem::test {
@@ -72,16 +73,31 @@ inline Scene jostling_pile(int columns, int rows, unsigned seed = 5) {
   return s;
 }
 
-inline Snapshot run_to(const Scene& scene, Backend backend, std::int64_t steps,
-                       Precision precision = Precision::Double, Method method = Method::Grid) {
+/// The scene with [simulation.decomposition] set (used when the method is decomposition).
+inline Scene with_decomposition(Scene s, DecompositionLayout layout, int capacity, int rows = 0,
+                                int columns = 0) {
+  s.simulation.decomposition = {layout, rows, columns, capacity};
+  return s;
+}
+
+/// A solver for the scene, advanced `steps` steps.
+inline std::unique_ptr<Solver> advanced_solver(const Scene& scene, Backend backend,
+                                               std::int64_t steps,
+                                               Precision precision = Precision::Double,
+                                               Method method = Method::Grid) {
   SolverConfig config;
   config.backend = backend;
   config.precision = precision;
   config.method = method;
   auto solver = make_solver(scene, config);
   solver->advance(steps);
+  return solver;
+}
+
+inline Snapshot run_to(const Scene& scene, Backend backend, std::int64_t steps,
+                       Precision precision = Precision::Double, Method method = Method::Grid) {
   Snapshot snap;
-  solver->snapshot(snap, true);
+  advanced_solver(scene, backend, steps, precision, method)->snapshot(snap, true);
   return snap;
 }
 

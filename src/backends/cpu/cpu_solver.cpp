@@ -40,6 +40,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
       single_domain_(model.longest_edge, model.motion, filter_) {
   if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
+  if (method_ == Method::Decomposition)
+    decomposed_.emplace(scene.simulation.decomposition, model.longest_edge, model.motion,
+                        filter_);
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].resize(n_);
     offset_y_[k].resize(n_);
@@ -103,6 +106,11 @@ std::string CpuSolver<Real>::description() const {
 }
 
 template <class Real>
+std::string CpuSolver<Real>::statistics() const {
+  return decomposed_ ? decomposed_->decomposition().summary() : std::string();
+}
+
+template <class Real>
 void CpuSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     update_geometry();
@@ -144,11 +152,13 @@ void CpuSolver<Real>::update_geometry() {
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
+  const TriangleArrays<Real> geometry{{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
+                                      {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
+                                      lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()};
   if (method_ == Method::SingleDomain)
-    single_domain_.find({{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
-                         {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
-                         lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()},
-                        parallel_, pairs_);
+    single_domain_.find(geometry, parallel_, pairs_);
+  else if (decomposed_)
+    decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
   else
     finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                  pairs_);

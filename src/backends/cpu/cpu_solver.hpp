@@ -7,10 +7,12 @@
 #include "broadphase/single_domain.hpp"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
+#include "decomposition/decomposed_pairs.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "tridem/solver.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace tridem {
@@ -30,6 +32,7 @@ class CpuSolver final : public Solver {
   double dt() const override { return static_cast<double>(dt_); }
   std::size_t size() const override { return n_; }
   std::string description() const override;
+  std::string statistics() const override;
 
  private:
   void update_geometry();
@@ -71,6 +74,7 @@ class CpuSolver final : public Solver {
   CandidatePairs<Real> finder_;
   ContactFilter filter_;
   SingleDomainPairs<Real> single_domain_;
+  std::optional<DecomposedPairs<Real>> decomposed_;  ///< method = decomposition
   PairList pairs_, old_pairs_;
   std::vector<physics::PairSlip<Real>> slip_, old_slip_;
   std::vector<physics::PairForce<Real>> result_;

@@ -8,6 +8,7 @@
 // depend on scheduling.
 #include "backends/cuda/grid_types.cuh"
 #include "backends/cuda/row_history.cuh"
+#include "backends/cuda/sorted_ranges.cuh"
 #include "broadphase/grid_rules.hpp"
 #include "broadphase/row_sort.hpp"
 
@@ -158,20 +159,6 @@ __global__ void fill_rows_kernel(CandidateSearch<Real> c, RowHistory<Real> h) {
   visit_candidates(c, i, [&](int j) { h.partner[at++] = j; });
   insertion_sort(h.partner, begin, end);
   carry_history(i, h);
-}
-
-/// reverse_offset[p] = first position of partner p in the partner-sorted slots.
-__global__ void reverse_offset_kernel(const int* sorted_partner, int count, int n,
-                                      int* reverse_offset) {
-  const int p = blockIdx.x * blockDim.x + threadIdx.x;
-  if (p > n) return;
-  int lo = 0, hi = count;
-  while (lo < hi) {
-    const int mid = lo + (hi - lo) / 2;
-    if (sorted_partner[mid] < p) lo = mid + 1;
-    else hi = mid;
-  }
-  reverse_offset[p] = lo;
 }
 
 }  // namespace tridem::cuda

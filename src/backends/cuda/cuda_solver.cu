@@ -80,6 +80,8 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   pairs_ = std::make_unique<PairListBuilder<Real>>(
       classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, reserve,
       stream_);
+  if (method_ == Method::Decomposition)
+    decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(1);
   host_status_.allocate(1);
   staging_.allocate(kStateArrays * n_);
@@ -216,9 +218,11 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
   StepStatus* status = status_.data();
   StepStatus* host = host_status_.data();
   for (std::int64_t s = 0; s < steps; ++s) {
-    // A single-domain list holds the pairs that pass the contact test at this step's
-    // positions only: no skin can keep it valid, so it is rebuilt every step.
-    if (rebuild_ || pairs_->single_step()) {
+    if (decomposed_) {
+      decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
+    } else if (rebuild_ || pairs_->single_step()) {
+      // A single-domain list holds the pairs that pass the contact test at this step's
+      // positions only: no skin can keep it valid, so it is rebuilt every step.
       pairs_->rebuild(p, margin_);
       rebuild_ = false;
     }
@@ -333,7 +337,8 @@ std::string CudaSolver<Real>::description() const {
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
          method_description(method_, filter_.test, filter_.bbox_prefilter) +
-         (pairs_->single_step() ? std::string(", list rebuilt every step") : std::string(skin));
+         (pairs_->single_step() || decomposed_ ? std::string(", list rebuilt every step")
+                                               : std::string(skin));
 }
 
 template <class Real>
@@ -342,6 +347,7 @@ std::string CudaSolver<Real>::statistics() const {
   std::snprintf(text, sizeof text, "pair list built %lld times in %lld steps; %d pairs (room for %zu)",
                 static_cast<long long>(pairs_->builds()), static_cast<long long>(step_),
                 pairs_->count(), pairs_->capacity());
+  if (decomposed_) return std::string(text) + "; " + decomposed_->summary();
   return text;
 }
 

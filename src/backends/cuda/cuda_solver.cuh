@@ -8,6 +8,7 @@
 // the CPU solver's stages with the same sums in the same order, so that both agree to
 // rounding and two runs of one scene agree bit for bit.
 #include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/decomposed_rows.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
@@ -77,6 +78,8 @@ class CudaSolver final : public Solver {
   DeviceBuffer<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   DeviceBuffer<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
   std::unique_ptr<PairListBuilder<Real>> pairs_;
+  /// method = decomposition: the pair list is built by sub-domain, every step.
+  std::unique_ptr<DecomposedRows<Real>> decomposed_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
   mutable PinnedBuffer<Real> staging_;  ///< the state_buffers() a snapshot copies

@@ -222,9 +222,9 @@ void PairListBuilder<Real>::index_rows() {
   TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
       temp_.data(), bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
       reverse_slot_.data(), count_, 0, particle_bits_, stream_));
-  reverse_offset_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(sorted_partner_.data(), count_,
-                                                                n_, reverse_offset_.data());
-  TRIDEM_CUDA_CHECK_LAUNCH("reverse_offset_kernel");
+  range_start_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(sorted_partner_.data(), count_,
+                                                             n_, reverse_offset_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("range_start_kernel (reverse index)");
 }
 
 template <class Real>

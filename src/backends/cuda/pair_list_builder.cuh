@@ -30,6 +30,18 @@ class PairListBuilder {
   /// pairs passing the contact test now (single-domain); carries the contact history of
   /// the old list over. Synchronises once, to learn the number of pairs.
   void rebuild(const ParticleArrays<Real>& p, Real margin);
+  /// A list found by another method's kernels (the decomposition's sub-domains), through
+  /// the same rows, history and reverse index: count(row_count) writes the length of every
+  /// particle's row into n counts (zero where it emits nothing), fill(history()) writes the
+  /// rows, sorted, and calls carry_history. Synchronises once, to learn the number of pairs.
+  template <class Count, class Fill>
+  void rebuild_with(Count&& count, Fill&& fill) {
+    count(row_count_.data());
+    size_rows();
+    fill(history());
+    index_rows();
+    ++builds_;
+  }
   /// Whether a list serves only the step it was built for.
   bool single_step() const { return method_ == Method::SingleDomain; }
 
