@@ -8,7 +8,7 @@
 //   fig12      the whole job (solver set-up with its upload, k steps, the state back)
 //              for k = 1..1000: the speed-up against the number of steps
 //   fig19      time for 100 steps against n, 1D decomposition, CPU and GPU
-//   fig20      2D decompositions of different rows × columns against n, GPU
+//   fig20      2D decompositions with rows of different heights against n, GPU
 //   fig21      2D decomposition against n on the problems of fig19, CPU and GPU
 //   prefilter  single-domain with and without the bounding-box pre-filter, on sparse,
 //              medium and dense packings
@@ -26,6 +26,7 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -45,12 +46,16 @@ struct Design {
   Method method = Method::Grid;
   DecompositionLayout layout = DecompositionLayout::Strips;
   int rows = 0, columns = 0;
+  /// 2D: rows of this many cells of size L (the paper's Fig. 20 shapes are sub-domain sizes
+  /// in cells); the row count then follows from the problem's height. 0: `rows`.
+  int row_cells = 0;
   bool prefilter = true;
 
   std::string name() const {
     const char* layout_tag = layout == DecompositionLayout::Strips ? "-1d" : "-2d";
     const std::string shape =
-        rows > 0 || columns > 0 ? fmt::format("-{}x{}", rows, columns) : std::string();
+        row_cells > 0 ? fmt::format("-h{}", row_cells)
+                      : (rows > 0 || columns > 0 ? fmt::format("-{}x{}", rows, columns) : std::string());
     return fmt::format("{}{}{}", tridem::method_name(method),
                        method == Method::Decomposition ? layout_tag + shape : std::string(),
                        prefilter ? "" : "-noprefilter");
@@ -118,6 +123,21 @@ std::unique_ptr<tridem::Solver> make(const Case& c) {
   s.simulation.bbox_prefilter = c.design.prefilter;
   s.simulation.decomposition.layout = c.design.layout;
   s.simulation.decomposition.rows = c.design.rows;
+  if (c.design.row_cells > 0) {
+    // Rows of row_cells cells of L (the longest free edge) over the height of the grains.
+    double lo = 1e300, hi = -1e300, longest = 0;
+    for (const tridem::TriangleSpec& t : s.triangles) {
+      if (t.motion != tridem::Motion::Free) continue;
+      for (int k = 0; k < 3; ++k) {
+        lo = std::min(lo, t.vertices[k].y);
+        hi = std::max(hi, t.vertices[k].y);
+        const tridem::Vec2d e = t.vertices[(k + 1) % 3] - t.vertices[k];
+        longest = std::max(longest, std::hypot(e.x, e.y));
+      }
+    }
+    s.simulation.decomposition.rows =
+        std::max(1, static_cast<int>(std::ceil((hi - lo) / (c.design.row_cells * longest))));
+  }
   s.simulation.decomposition.columns = c.design.columns;
   tridem::SolverConfig config;
   config.backend = c.backend;
@@ -258,11 +278,12 @@ void register_all(const std::set<std::string>& experiments, const Limits& limits
   if (wanted("fig20"))
     for (const std::size_t n : {std::size_t{4096}, std::size_t{16384}, std::size_t{65536},
                                 std::size_t{262144}, std::size_t{1048576}}) {
-      for (const auto& [rows, columns] : std::vector<std::pair<int, int>>{
-               {0, 0}, {2, 2}, {4, 4}, {8, 8}, {14, 14}, {4, 16}, {16, 4}}) {
+      // Sub-domain rows 3..8 cells high (auto: about square sub-domains). The paper's best,
+      // 14 x 14 cells, held one particle per cell; a dense pile of triangles holds about 2.3
+      // per cell of L, so 8 + 2 band cells are the most a row of capacity 256 takes.
+      for (const int cells : {0, 3, 4, 6, 8}) {
         Design d = auto_2d;
-        d.rows = rows;
-        d.columns = columns;
+        d.row_cells = cells;
         add_steps("fig20", {Backend::Cuda, d, Problem::Square, n}, 100, 3, limits);
       }
       add_steps("fig20", {Backend::Cuda, grid, Problem::Square, n}, 100, 3, limits);
