@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Tables and figures of the paper's experiments from tridem_paper_bench's JSON.
 
-    make_figures.py BENCH.json OUTDIR
+    make_figures.py BENCH.json [LATER.json ...] OUTDIR
 
-Writes OUTDIR/paper_tables.md and fig12.png, fig19.png, fig20.png, fig21.png,
+A case in a later file replaces the case of the same name in an earlier one (a rerun of
+one experiment). Writes OUTDIR/paper_tables.md and fig12.png, fig19.png, fig20.png, fig21.png,
 prefilter.png (matplotlib). Every number is a median over the case's repetitions when it
 has several, else the mean over its iterations; ratios are taken between cases of the one
 run in BENCH.json."""
@@ -16,11 +17,24 @@ from collections import defaultdict
 UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 
 
-def load(path):
-    with open(path) as f:
-        data = json.load(f)
+def load(paths):
     runs = defaultdict(list)
     errors = {}
+    context = {}
+    for path in paths:
+        with open(path) as f:
+            data = json.load(f)
+        context = context or data.get("context", {})
+        names = {(b.get("run_name") or b["name"]).split("/iterations:")[0]
+                 for b in data["benchmarks"]}
+        for name in names:
+            runs.pop(name, None)
+            errors.pop(name, None)
+        read_runs(data, runs, errors)
+    return context, summarise(runs), errors
+
+
+def read_runs(data, runs, errors):
     for b in data["benchmarks"]:
         if b.get("run_type") == "aggregate":
             continue
@@ -30,6 +44,9 @@ def load(path):
             errors[name] = b.get("error_message", "error")
             continue
         runs[name].append(b)
+
+
+def summarise(runs):
     cases = {}
     for name, reps in runs.items():
         parts = name.split("/")
@@ -42,7 +59,7 @@ def load(path):
         key["triangles"] = int(reps[0].get("triangles", key["n"]))
         key["label"] = reps[0].get("label", "")
         cases[name] = key
-    return data.get("context", {}), cases, errors
+    return cases
 
 
 def pick(cases, **want):
@@ -194,13 +211,14 @@ def prefilter(cases, out, outdir):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    context, cases, errors = load(sys.argv[1])
-    outdir = sys.argv[2]
+    context, cases, errors = load(sys.argv[1:-1])
+    outdir = sys.argv[-1]
     os.makedirs(outdir, exist_ok=True)
     out = [f"# The paper's experiments on {context.get('gpu', '?')} and {context.get('cpu_model', '?')}\n",
-           f"From `{os.path.basename(sys.argv[1])}` ({context.get('date', '?')}); made by "
+           f"From {', '.join(f'`{os.path.basename(p)}`' for p in sys.argv[1:-1])} "
+           f"({context.get('date', '?')}); made by "
            "bench/paper/make_figures.py. CPU = one core (the serial solver).\n"]
     table3(cases, errors, out)
     fig12(cases, out, outdir)
