@@ -6,7 +6,7 @@
 //    exact, so a float run restarted from its state is bit-identical too.
 //  - Per-particle arrays (x, y, theta, vx, vy, omega) have one entry per particle, in id
 //    order. Forces are not state: each step recomputes them before integrating.
-//  - The contact history is the friction slip of the pairs of the last completed step, as
+//  - The contact history is the tangential displacement of the pairs of the last completed step, as
 //    three parallel arrays in emitter-major, partner-ascending order (strictly increasing
 //    (emitter, partner)); the emitter of a pair is the one that computes it (see
 //    ARCHITECTURE.md). Only pairs with a slip other than +0.0 need to be listed: a pair
@@ -20,7 +20,7 @@
 
 namespace tridem {
 
-inline constexpr int kSlipsPerPair = 6;  ///< physics::kEdgeContacts: 2 roles x 3 edges
+inline constexpr int kSlipsPerPair = 2;  ///< physics::kHistoryValues: the tangential displacement (x, y)
 
 struct SolverState {
   std::int64_t step = 0;

@@ -1,0 +1,122 @@
+// The energy quantities of a pair (PairForce::elastic_energy, damping_dissipation,
+// friction_dissipation): the stored energy against the work of the force along a path, and
+// the dissipation of dashpots and of sliding against their definitions.
+#include "physics/contact_force.hpp"
+#include "physics/restitution.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <random>
+
+namespace tridem::physics {
+namespace {
+
+using V = Vec2<double>;
+
+Body<double> make_body(Triangle<double> t, V v = {}, double w = 0, double mass = 1) {
+  Body<double> b;
+  b.tri = t;
+  if (signed_area(b.tri) < 0) std::swap(b.tri.v[1], b.tri.v[2]);
+  b.c = centroid(b.tri);
+  b.area = signed_area(b.tri);
+  b.v = v;
+  b.w = w;
+  b.mass = mass;
+  return b;
+}
+
+Body<double> moved(Body<double> b, V shift) {
+  for (V& v : b.tri.v) v += shift;
+  b.c += shift;
+  return b;
+}
+
+TEST(PairEnergy, FlatContactStoresTheNormalPotential) {
+  // A wide contactor face at depth d in a wide floor: Ω is (up to corners of order d²) a
+  // strip ℓ × d where φ_b = 3y/h_b and φ_a = 3(d − y)/h_a, so E = 1.5·p·ℓ·d²·(1/h_a + 1/h_b).
+  const double d = 1e-4, p = 1e6;
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1 - d}}});
+  PairSlip<double> slip{};
+  const PairForce<double> f = pair_force(c, floor, contact_law(p, 1e5, 0, 1), 1e-4, slip);
+  const double h_floor = 10, h_c = 1;
+  const double expect = 1.5 * p * 1.0 * d * d * (1 / h_floor + 1 / h_c);
+  EXPECT_NEAR(f.elastic_energy, expect, 2e-3 * expect);
+}
+
+TEST(PairEnergy, ElasticEnergyIsMinusTheWorkOfTheForce) {
+  // Frictionless, undamped: moving a through the overlap in small steps, the change of the
+  // stored energy equals minus the work of the force on a (midpoint rule).
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0, 1);
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const auto a0 = make_body({{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}}});
+    const auto b = make_body({{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}}});
+    if (a0.area < 0.05 || b.area < 0.05) continue;
+    const V step = V{u(rng), u(rng)} * 2e-5;
+    const int n = 2000;
+    double work = 0;
+    PairSlip<double> slip{};
+    Body<double> a = a0;
+    PairForce<double> f = pair_force(a, b, law, 1e-4, slip);
+    const double e0 = f.elastic_energy;
+    for (int i = 0; i < n; ++i) {
+      const Body<double> next = moved(a, step);
+      const PairForce<double> g = pair_force(next, b, law, 1e-4, slip);
+      work += dot((f.force_a + g.force_a) * 0.5, step);
+      a = next;
+      f = g;
+    }
+    const double change = f.elastic_energy - e0;
+    if (std::abs(change) < 1e-6 * law.penalty * 1e-6) continue;
+    ++checked;
+    const double scale = std::abs(work) + std::abs(change) + 1e-3;
+    EXPECT_NEAR(change, -work, 2e-4 * scale) << "trial " << trial;
+  }
+  EXPECT_GT(checked, 10);
+}
+
+TEST(PairEnergy, SlidingDissipatesMuTimesNormalForceTimesSlip) {
+  // Steady sliding: after the first step the spring sits at the cap, so each step's slip
+  // is the whole tangential displacement v·dt.
+  const double d = 1e-3, v = 50, dt = 1e-3;  // k_t·v·dt far above μ·f_n: sliding
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1}}}, {v, 0});
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0.4, 1);
+  PairSlip<double> slip{};
+  pair_force(c, floor, law, dt, slip);
+  const PairForce<double> f = pair_force(c, floor, law, dt, slip);
+  EXPECT_NEAR(f.force_a.x, -0.4 * f.force_a.y, 1e-12 * f.force_a.y);
+  EXPECT_NEAR(f.friction_dissipation, 0.4 * f.force_a.y * v * dt, 1e-9 * f.friction_dissipation);
+  EXPECT_EQ(f.damping_dissipation, 0.0);  // e = 1: no dashpot
+}
+
+TEST(PairEnergy, DashpotsDissipateWhatTheyTakeAndStickingStoresTheSpring) {
+  // A slow approach with damping: the normal dashpot takes c·v_n²·dt >= 0; a sticking
+  // tangential displacement stores ½·k_t·ξ².
+  const double d = 1e-3, dt = 1e-4;
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1}}}, {1e-4, -0.01});
+  const ContactLaw<double> damped = contact_law(1e6, 1e5, 0.5, 0.5);
+  const ContactLaw<double> plain = contact_law(1e6, 1e5, 0.5, 1);
+  PairSlip<double> s1{}, s2{};
+  const PairForce<double> f = pair_force(c, floor, damped, dt, s1);
+  const PairForce<double> g = pair_force(c, floor, plain, dt, s2);
+  EXPECT_GT(f.damping_dissipation, 0.0);
+  EXPECT_EQ(f.friction_dissipation, 0.0);
+  // The normal dashpot adds c·v_n along y: its power is (f_y − g_y)·|v_y| and the
+  // tangential one c_t·v_t².
+  const double normal_part = (f.force_a.y - g.force_a.y) * 0.01 * dt;
+  const double tangential_part = -(f.force_a.x - g.force_a.x) * 1e-4 * dt;
+  EXPECT_NEAR(f.damping_dissipation, normal_part + tangential_part,
+              1e-9 * f.damping_dissipation);
+  // Spring energy: ½ k_t ξ² with ξ = v_t·dt, k_t = p_t·Σ3ℓ/h (g has no dashpot).
+  const double k_t = -g.force_a.x / s2.s[0];
+  EXPECT_NEAR(g.elastic_energy - (f.elastic_energy - 0.5 * k_t * s1.s[0] * s1.s[0]),
+              0.5 * k_t * s2.s[0] * s2.s[0], 1e-12 * g.elastic_energy);
+}
+
+}  // namespace
+}  // namespace tridem::physics
