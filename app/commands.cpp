@@ -1,4 +1,5 @@
 #include "commands.hpp"
+#include "restart_command.hpp"
 
 #include "interrupt.hpp"
 #include "tridem/error.hpp"
@@ -69,11 +70,9 @@ int run(const RunArgs& args) {
   options.interrupt = &install_interrupt_handlers();
   const RunSummary summary = run_scene(scene, options);
   if (!summary.interrupted_by) return 0;
-  // The same command line, so that the restarted run has the same steps, backend, folder.
-  std::string same_run = fmt::format("tridem run {} --restart {}", args.scene, summary.checkpoint);
-  if (args.out) same_run += " --out " + *args.out;
-  if (args.steps) same_run += fmt::format(" --steps {}", *args.steps);
-  if (args.backend) same_run += " --backend " + *args.backend;
+  // The same command line, so that the restarted run has the same overrides: the
+  // checkpoint refuses any other physics.
+  const std::string same_run = restart_command(args.command_line, summary.checkpoint);
   fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
              signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
              same_run);

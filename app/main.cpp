@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
 
   RunArgs run_args;
+  run_args.command_line.assign(argv, argv + argc);
   auto* run_cmd = cli.add_subcommand("run", "Run a scene and write its outputs");
   run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
   run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");

@@ -166,8 +166,13 @@ expect_error "another scene" "$tridem" run lighter.toml --quiet --out refused --
 # Ctrl-C (SIGINT) and kill (SIGTERM) stop a long run at a step boundary with a checkpoint,
 # exit 128 + signal, and say how to go on; the run then continues from it.
 sed 's/steps = 200/steps = 100000000/; s/\[1, 0\], \[-1, 0\], \[0, -1\]/[10, 0], [-10, 0], [0, -10]/' ckpt.toml >long.toml
+# The INT run has overrides of the physics: the printed command must carry them all.
+overrides_INT="--method single-domain --contact-test exact --no-bbox-prefilter"
+overrides_TERM=""
 for sig in INT TERM; do
-  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" >out.txt 2>err.txt &
+  overrides=overrides_$sig
+  # shellcheck disable=SC2086
+  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" ${!overrides} >out.txt 2>err.txt &
   pid=$!
   sleep 1
   kill -"$sig" "$pid"
@@ -177,8 +182,19 @@ for sig in INT TERM; do
   [ "$code" = "$expected" ] || fail "SIG$sig: exit code $code, expected $expected :: $(cat err.txt)"
   grep -q -- "--restart long_$sig/checkpoint.ckpt" err.txt || fail "SIG$sig: no restart advice :: $(cat err.txt)"
   [ -s "long_$sig/checkpoint.ckpt" ] && [ -s "long_$sig/final.csv" ] || fail "SIG$sig: no checkpoint or final.csv"
+  for option in ${!overrides}; do
+    grep -q -- "continue with: .*$option" err.txt || fail "SIG$sig: restart advice drops $option :: $(cat err.txt)"
+  done
+  cp err.txt "err_$sig.txt"
 done
-stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err.txt)
+# The checkpoint holds the physics settings: a restart without the overrides is refused
+# naming both values; the printed command continues the run.
+expect_error "method = single-domain, this run has grid" "$tridem" run long.toml --quiet --backend cpu --out long_INT --restart long_INT/checkpoint.ckpt
+stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err_INT.txt)
+continue_INT=$(sed -n 's/^continue with: //p' err_INT.txt)
+eval "$continue_INT --steps $((stopped + 50))" >out.txt 2>err.txt || fail "the printed restart command failed :: $continue_INT :: $(cat err.txt)"
+[ "$(cut -d, -f1 long_INT/energy.csv | tail -1)" = "$((stopped + 50))" ] || fail "the printed restart command did not continue the SIGINT run to its end"
+stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err_TERM.txt)
 expect_ok "$tridem" run long.toml --quiet --backend cpu --out long_TERM --restart long_TERM/checkpoint.ckpt --steps $((stopped + 100))
 [ "$(cut -d, -f1 long_TERM/energy.csv | tail -1)" = "$((stopped + 100))" ] || fail "run interrupted by SIGTERM did not continue to its end"
 
