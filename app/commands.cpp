@@ -20,23 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Backend parse_backend(const std::string& name) {
-  if (name == "cpu") return Backend::Cpu;
-  if (name == "openmp") return Backend::OpenMP;
-  if (name == "cuda") return Backend::Cuda;
-  return Backend::Auto;
-}
-
-const char* backend_name(Backend b) {
-  switch (b) {
-    case Backend::Cpu: return "cpu";
-    case Backend::OpenMP: return "openmp";
-    case Backend::Cuda: return "cuda";
-    case Backend::Auto: break;
-  }
-  return "auto";
-}
-
 /// The last frame of an output directory: the highest step among frames/frame_*.vtu.
 fs::path last_frame(const fs::path& dir) {
   std::vector<fs::path> frames;
@@ -57,7 +40,7 @@ int run(const RunArgs& args) {
   const Scene scene = read_scene(args.scene);
   RunOptions options;
   options.out_dir = args.out;
-  if (args.backend) options.backend = parse_backend(*args.backend);
+  if (args.backend) options.backend = value_in(kBackendNames, *args.backend);
   options.steps = args.steps;
   // main.cpp checked the spellings against the same tables.
   if (args.method) options.method = value_in(kMethodNames, *args.method);

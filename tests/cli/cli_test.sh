@@ -7,10 +7,14 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 expect_ok() { "$@" >out.txt 2>err.txt || fail "exit $? from: $* :: $(cat err.txt)"; }
-# expect_error PATTERN CMD...: non-zero exit and PATTERN in stderr.
+# expect_error PATTERN CMD...: exit code 1 (the README's promise for every refusal, usage
+# errors included), one "error: " message, and PATTERN in it.
 expect_error() {
   local pattern=$1; shift
-  if "$@" >out.txt 2>err.txt; then fail "expected failure from: $*"; return; fi
+  "$@" >out.txt 2>err.txt
+  local code=$?
+  [ "$code" = 1 ] || { fail "exit code $code, expected 1, from: $* :: $(cat err.txt)"; return; }
+  head -n 1 err.txt | grep -q "^error: " || fail "the message of: $* does not start with 'error: ' :: $(cat err.txt)"
   grep -q -- "$pattern" err.txt || fail "'$pattern' not in the message of: $* :: $(cat err.txt)"
 }
 
@@ -118,8 +122,13 @@ if nvidia-smi -L >/dev/null 2>&1; then
 else
   expect_error "not available" "$tridem" run pile.toml --backend cuda
 fi
-expect_error "" "$tridem" run does_not_exist.toml
-expect_error "" "$tridem" run pile.toml --no-such-option
+expect_error "no scene file 'does_not_exist.toml'" "$tridem" run does_not_exist.toml
+expect_error "no-such-option" "$tridem" run pile.toml --no-such-option
+expect_error "subcommand" "$tridem" bogus
+expect_error "at least 1, got '0'" "$tridem" run pile.toml --steps 0
+grep -q "[0-9]\{40\}" err.txt && fail "--steps 0: the message prints a huge number :: $(cat err.txt)"
+expect_error "backend is cpu" "$tridem" run pile.toml --quiet --steps 5 --backend cpu --threads 2 --out threads_out
+expect_error "folder 'missing/dir' does not exist" "$tridem" render pile_out -o missing/dir/x.png
 "$tridem" --version | grep -q "^tridem [0-9]" || fail "--version"
 "$tridem" --help | grep -q "run" || fail "--help"
 
