@@ -105,9 +105,10 @@ class BackendTest : public ::testing::TestWithParam<SolverChoice> {
                     ::tridem::test::SolverChoice(backend, ::tridem::Method::SingleDomain),  \
                     ::tridem::test::SolverChoice(backend, ::tridem::Method::Decomposition))
 
-/// For suites whose walls are much larger than their grains: in float, the potential of
-/// such a wall is resolved only to ε·(wall size), which at those scenes' penetrations is
-/// per cent of the contact force (docs/model.md, "Precision"), so they are checked in double.
+/// For suites of friction-held statics on walls much larger than their grains: in float
+/// such a wall is resolved only to ε·(wall size) inside pair_force (per cent of the contact
+/// force at those scenes' penetrations) and friction slips lose creep increments, so a
+/// block that holds in double creeps (docs/model.md, "Precision"): checked in double.
 #define TRIDEM_INSTANTIATE_SOLVERS_IN_DOUBLE(Suite)                                      \
   INSTANTIATE_TEST_SUITE_P(Cpu, Suite, TRIDEM_DOUBLE_SOLVER_CHOICES(::tridem::Backend::Cpu)); \
   INSTANTIATE_TEST_SUITE_P(Gpu, Suite, TRIDEM_DOUBLE_SOLVER_CHOICES(::tridem::Backend::Cuda))

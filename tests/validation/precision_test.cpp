@@ -39,10 +39,10 @@ TEST_P(PrecisionTest, SlowTriangleFarFromOriginMovesTheRightDistance) {
 // the rounding flips, and on main the grain jitters at centimetres per second. In the
 // pair's own frame it rests as it does at the origin: the same bounds as
 // Resting.TriangleComesToRestOnFixedFloor, and the same residual motion as at the origin.
-// In float that residual is 4e-4 m/s and 6e-3 rad/s (measured, at every distance): the
-// floor is 20 grains wide, and a float potential of a triangle much larger than the grain
-// is resolved only to ε·size (docs/model.md, "Precision"), which also puts 2% of noise on
-// the floor's force.
+// In float that residual is 4e-4 m/s and 6e-3 rad/s (measured, at every distance): float
+// friction slips lose creep increments, and a floor 20 grains wide is resolved only to
+// ε·its size inside pair_force, which also puts 2% of noise on its force (docs/model.md,
+// "Precision", the table of what float still costs).
 TEST_P(PrecisionTest, RestingContactFarFromOriginSettles) {
   const double p = 1e7, rho = 2000, g = 9.81;
   const double mass = rho * 0.5 * 0.2 * 0.1;
