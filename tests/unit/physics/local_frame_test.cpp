@@ -16,7 +16,9 @@ TEST(LocalFrame, DirectedRoundingBracketsTheValueTightly) {
     EXPECT_LE(static_cast<double>(lo), v);
     EXPECT_GE(static_cast<double>(hi), v);
     EXPECT_LE(hi, std::nextafter(lo, INFINITY)) << "adjacent floats or equal, for " << v;
-    if (static_cast<double>(static_cast<float>(v)) == v) EXPECT_EQ(lo, hi);
+    if (static_cast<double>(static_cast<float>(v)) == v) {
+      EXPECT_EQ(lo, hi);
+    }
   }
   EXPECT_EQ(physics::round_down(0.1, 0.0), 0.1);  // the identity in double
 }
