@@ -98,7 +98,10 @@ TEST_P(Friction, EquilateralGrainHoldsOnASlopeFlatterThanAtanMu) {
   Scene s = test::empty_scene(1e8, 2000, 0.7, 0.0);
   s.materials[0].restitution = 0.3;
   s.simulation.gravity = {g * std::sin(angle), -g * std::cos(angle)};
-  s.triangles.push_back(test::floor_triangle(-5, 5));
+  // A floor 1 m wide: in float (mixed precision) the contact's depth, about 0.2 µm here,
+  // must stand above the rounding of the wall's vertices in the grain's frame, which a
+  // 10 m floor does not allow (docs/model.md, mixed precision).
+  s.triangles.push_back(test::floor_triangle(-0.5, 0.5));
   const double side = 0.1;
   s.triangles.push_back(test::triangle({-side / 2, 0}, {side / 2, 0},
                                        {0, side * std::sqrt(3.0) / 2}));
