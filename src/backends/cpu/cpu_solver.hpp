@@ -12,6 +12,7 @@
 #include "physics/integrate.hpp"
 #include "tridem/solver.hpp"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,7 @@ class CpuSolver final : public Solver {
   void snapshot(Snapshot& out, bool with_contacts) const override;
   void save_state(SolverState& out) const override;     // cpu_solver_state.cpp
   void load_state(const SolverState& in) override;
+  EnergyBudget energy() const override;
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
   double dt() const override { return static_cast<double>(dt_); }
@@ -41,6 +43,8 @@ class CpuSolver final : public Solver {
   [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
   void integrate();
+  void add_step_energy(std::size_t i, const physics::Pose<Real>& before,
+                       const physics::Pose<Real>& after);
 
   physics::Body<Real> body(std::int32_t i) const;
   physics::Pose<Real> advanced_pose(std::size_t i) const;
@@ -65,6 +69,10 @@ class CpuSolver final : public Solver {
   // State.
   std::vector<Real> x_, y_, theta_, vx_, vy_, w_;
   std::vector<Real> fx_, fy_, torque_;
+  // The energy budget's cumulative sums, per particle (EnergyAccumulator order): each
+  // particle adds its own row of pairs and its local damping when its step is written.
+  std::array<std::vector<double>, kEnergyAccumulators> energy_;
+  bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
   // Geometry of the current step.
   std::vector<Real> vert_x_[3], vert_y_[3];
   std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;

@@ -175,7 +175,7 @@ material = "m"
 vertices = [[0, 0], [0, 1], [1, 0]]
 [[triangle]]
 material = "m"
-vertices = [[0, 0], [1, 0], [0, 1]]
+vertices = [[2, 0], [3, 0], [2, 1]]
 )",
                               "cw.toml");
   for (const TriangleSpec& t : s.triangles)
@@ -185,7 +185,7 @@ vertices = [[0, 0], [1, 0], [0, 1]]
   EXPECT_DOUBLE_EQ(s.triangles[0].vertices[1].x, 1);
   EXPECT_DOUBLE_EQ(s.triangles[0].vertices[2].y, 1);
   // An already counter-clockwise one is left exactly as written.
-  EXPECT_DOUBLE_EQ(s.triangles[1].vertices[1].x, 1);
+  EXPECT_DOUBLE_EQ(s.triangles[1].vertices[1].x, 3);
 }
 
 TEST(SceneParse, IdsAreExplicitTrianglesThenGeneratedInFileOrder) {
