@@ -17,9 +17,10 @@ namespace {
 template <class Real>
 std::size_t run_bytes(std::size_t n) {
   // Per particle: offsets and vertices (12), mass terms and size (5), state (6), forces
-  // (3), boxes (4) reals; material, motion, cell bookkeeping and the pair-row offsets.
+  // (3), boxes (4) reals; material, motion, cell bookkeeping, the pair-row offsets and
+  // the energy budget's four sums.
   const std::size_t per_particle = 30 * sizeof(Real) + sizeof(int) + 1 + 2 * 4 * 8 + 8 + 4 +
-                                   8 + 3 * 8 + 2 * 8;
+                                   8 + 3 * 8 + 2 * 8 + 4 * 8;
   // Per pair, two buffers of partner and slip, one of results and the reverse slot. A
   // dense packing has 6.6 candidate pairs per particle (bench/), and the lists keep 20%
   // headroom: 8 pairs per particle.
