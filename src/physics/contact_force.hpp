@@ -34,7 +34,7 @@ struct PairForce {
   Real depth = 0;
   bool touching = false;
   // The pair's share of the energy budget (energy.csv). A minimal version, isolated in
-  // pair_energy below: normal energy p∫_Ω(φ_a + φ_b)dA at the positions of this step plus
+  // OverlapSums below and a few marked lines of pair_force: normal energy p∫_Ω(φ_a + φ_b)dA at the positions of this step plus
   // the tangential springs' ½p_t·s² at the new slips; dashpots and sliding over this step.
   Real elastic_energy = 0;        ///< J/m stored in the pair
   Real damping_dissipation = 0;   ///< J/m removed by the dashpots over this step (>= 0)

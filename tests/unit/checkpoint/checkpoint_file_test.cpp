@@ -109,8 +109,8 @@ TEST(CheckpointFile, OtherVersionIsRefusedByName) {
   // one (4), with a consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  for (std::uint8_t version : {1, 2, 4}) {
-    bytes[8] = version;
+  for (const int version : {1, 2, 4}) {
+    bytes[8] = static_cast<std::uint8_t>(version);
     const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
     for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
     expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
