@@ -13,28 +13,30 @@ struct RowEnergy {
 };
 
 /// `wall_velocity(j, v, w)` is true only for a wall (non-free particle) that moves, and
-/// then gives its velocity and angular velocity; a wall at rest does no work. Work of a
-/// wall W over the step: −(F_W·v_W + τ_W·ω_W)·dt, F_W and τ_W the contact force and torque
-/// on it. A pair of two walls is never listed, so the partner of a wall is free.
+/// then gives its velocity and angular velocity (double, as the state); a wall at rest
+/// does no work. Work of a wall W over the step: −(F_W·v_W + τ_W·ω_W)·dt, F_W and τ_W the
+/// contact force and torque on it. A pair of two walls is never listed, so the partner of
+/// a wall is free.
 template <class Real, class Offset, class Index, class WallVelocity>
 TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, const Index* partner,
                                       const physics::PairForce<Real>* result,
-                                      WallVelocity&& wall_velocity, Real dt) {
+                                      WallVelocity&& wall_velocity, double dt) {
   RowEnergy sum;
-  Vec2<Real> v_e{};
-  Real w_e = 0;
+  Vec2d v_e{};
+  double w_e = 0;
   const bool e_moves = wall_velocity(e, v_e, w_e);
   for (auto s = offset[e]; s < offset[e + 1]; ++s) {
     const physics::PairForce<Real>& r = result[s];
     sum.damping += static_cast<double>(r.damping_dissipation);
     sum.friction += static_cast<double>(r.friction_dissipation);
+    const Vec2d f{static_cast<double>(r.force_a.x), static_cast<double>(r.force_a.y)};
     if (e_moves) {
-      sum.wall_work -= static_cast<double>((dot(r.force_a, v_e) + r.torque_a * w_e) * dt);
+      sum.wall_work -= (dot(f, v_e) + static_cast<double>(r.torque_a) * w_e) * dt;
     } else {
-      Vec2<Real> v_j{};
-      Real w_j = 0;
+      Vec2d v_j{};
+      double w_j = 0;
       if (wall_velocity(partner[s], v_j, w_j))
-        sum.wall_work += static_cast<double>((dot(r.force_a, v_j) - r.torque_b * w_j) * dt);
+        sum.wall_work += (dot(f, v_j) - static_cast<double>(r.torque_b) * w_j) * dt;
     }
   }
   return sum;
