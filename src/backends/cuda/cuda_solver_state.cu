@@ -15,7 +15,10 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
   out.time = time_;
   std::vector<double>* fields[] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy, &out.omega};
   const auto buffers = state_buffers();
-  for (int k = 0; k < kStateArrays; ++k) buffers[k]->download(*fields[k]);
+  for (int k = 0; k < kStateArrays; ++k) {
+    fields[k]->resize(n_);  // download() copies as many values as the host vector holds
+    buffers[k]->download(*fields[k]);
+  }
   std::vector<int> offset, partner;
   std::vector<physics::PairSlip<Real>> slip;
   pairs_->download(offset, partner, &slip, nullptr);
