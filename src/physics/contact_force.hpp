@@ -21,8 +21,9 @@ namespace tridem::physics {
 constexpr int kEdgeContacts = 6;  ///< 2 roles × 3 contactor edges carry the normal loads
 constexpr int kHistoryValues = 2;  ///< the tangential displacement, x and y
 
-/// Tangential elastic displacement ξ of a pair's contact (world frame, metres), kept from
-/// step to step: the spring force on a is −k_t·ξ. Zero for a new contact.
+/// Tangential history of a pair's contact, kept from step to step: u = √k_t·ξ with ξ the
+/// elastic tangential displacement (world frame; units √(N/m)·m = √(J/m)). The spring
+/// force on a is −√k_t·u and its energy ½|u|². Zero for a new contact.
 template <class Real>
 struct PairSlip {
   Real s[kHistoryValues];
@@ -40,7 +41,7 @@ struct PairForce {
   Real depth = 0;
   /// Energy stored in the pair (J/m) at the configuration the force is computed for:
   /// the normal potential p·(∫_Ω φ_a dA + ∫_Ω φ_b dA) over the overlap Ω, plus the
-  /// tangential spring's ½·k_t·|ξ|² with the history written back by this step.
+  /// tangential spring's ½·|u|² (= ½·k_t·|ξ|²) with the history written back by this step.
   Real elastic_energy = 0;
   /// Energy removed by the normal and tangential dashpots over this step (J/m):
   /// c_n·v_n²·dt + the tangential dashpot's −f_d·v_t·dt. >= 0 except when the Coulomb cap
@@ -335,25 +336,29 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   Vec2<Real> extra = n_ab * (-c_normal * v_n);  // on a, at r: normal dashpot ...
   out.damping_dissipation = c_normal * v_n * v_n * dt;
 
-  // ... and friction. The history turns with the contact: projected onto the new tangent,
-  // keeping its length, then it grows by the step's tangential motion.
-  Vec2<Real> xi{slip.s[0], slip.s[1]};
-  const Real xi_length = norm(xi);
-  xi = xi - n_ab * dot(xi, n_ab);
-  const Real xi_projected = norm(xi);
-  xi = xi_projected > Real(0) ? xi * (xi_length / xi_projected) : Vec2<Real>{};
-  xi += v_t * dt;
-  const Vec2<Real> f_spring = xi * (-k_tangent);
+  // ... and friction. The history u = √k_t·ξ (ξ the elastic tangential displacement) turns
+  // with the contact: projected onto the new tangent, keeping its length; then it grows by
+  // √k_t times the step's tangential motion. The spring force is −√k_t·u and its energy
+  // ½|u|²: a change of k_t (the contact growing or shrinking) scales the force and leaves
+  // the stored energy alone, so the energy budget closes (docs/model.md, "Friction").
+  const Real root_k = math::sqrt(k_tangent);
+  Vec2<Real> u{slip.s[0], slip.s[1]};
+  const Real u_length = norm(u);
+  u = u - n_ab * dot(u, n_ab);
+  const Real u_projected = norm(u);
+  u = u_projected > Real(0) ? u * (u_length / u_projected) : Vec2<Real>{};
+  u += v_t * (dt * root_k);
+  const Vec2<Real> f_spring = u * (-root_k);
   const Real spring = norm(f_spring);
   const Real cap = law.friction * (f_normal > Real(0) ? f_normal : Real(0));
   Vec2<Real> f_tangent;
   if (spring > cap) {
     // Sliding: the force is the cap; the spring keeps what the cap allows, the rest of
-    // the displacement is slip.
+    // the displacement, (|u| − |u_kept|)/√k_t, is slip.
     f_tangent = spring > Real(0) ? f_spring * (cap / spring) : Vec2<Real>{};
-    const Vec2<Real> kept = k_tangent > Real(0) ? f_tangent / (-k_tangent) : Vec2<Real>{};
-    out.friction_dissipation = cap * (norm(xi) - norm(kept));
-    xi = kept;
+    const Vec2<Real> kept = root_k > Real(0) ? f_tangent / (-root_k) : Vec2<Real>{};
+    if (root_k > Real(0)) out.friction_dissipation = cap * (norm(u) - norm(kept)) / root_k;
+    u = kept;
   } else {
     // Sticking: spring and dashpot, together no more than the cap.
     f_tangent = f_spring - v_t * c_tangent;
@@ -362,14 +367,13 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
     out.damping_dissipation -= dot(f_tangent - f_spring, v_t) * dt;
   }
   extra += f_tangent;
-  slip.s[0] = xi.x;
-  slip.s[1] = xi.y;
+  slip.s[0] = u.x;
+  slip.s[1] = u.y;
 
   out.force_a += extra;
   out.torque_a += cross(r - a.c, extra);
   out.torque_b -= cross(r - b.c, extra);
-  out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) +
-                       Real(0.5) * k_tangent * dot(xi, xi);
+  out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
   return out;
 }
 

@@ -99,7 +99,10 @@ TEST(ContactForce, FrictionSpringSticksThenSlides) {
     PairSlip<double> slip{};
     const auto f = pair_force(c, target, law, 1e-3, slip);
     EXPECT_LT(f.force_a.x, 0.0);       // opposes the motion
-    EXPECT_NEAR(slip.s[0], 1e-6, 1e-12);  // the contact's tangent is x
+    // The history is u = √k_t·ξ along the contact's tangent x, ξ = v·dt = 1e-6, and the
+    // spring force −√k_t·u: so u² = −f_x·ξ.
+    EXPECT_GT(slip.s[0], 0.0);
+    EXPECT_NEAR(slip.s[0] * slip.s[0], -f.force_a.x * 1e-6, 1e-12 * slip.s[0] * slip.s[0]);
     EXPECT_NEAR(slip.s[1], 0.0, 1e-15);
   }
   // Fast motion (k_t·v·dt far above μN): the tangential force is capped at μ·N and the
@@ -109,8 +112,10 @@ TEST(ContactForce, FrictionSpringSticksThenSlides) {
     PairSlip<double> slip{};
     const auto f = pair_force(c, target, law, 1e-3, slip);
     EXPECT_NEAR(f.force_a.x, -0.5 * f.force_a.y, 1e-12 * f.force_a.y);
+    // The spring keeps ξ = μ·f_n/k_t of the step's 0.1 m; the rest slid. √k_t = |f_x|/u.
     EXPECT_GT(slip.s[0], 0.0);
-    EXPECT_NEAR(f.friction_dissipation, 0.5 * f.force_a.y * (100 * 1e-3 - slip.s[0]),
+    const double kept = slip.s[0] * slip.s[0] / std::abs(f.force_a.x);
+    EXPECT_NEAR(f.friction_dissipation, 0.5 * f.force_a.y * (100 * 1e-3 - kept),
                 1e-9 * f.friction_dissipation);
   }
 }
