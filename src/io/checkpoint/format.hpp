@@ -19,8 +19,8 @@
 //     f64[n] dissipated damping, friction, local damping, wall work (four arrays: the
 //            energy budget's cumulative per-particle sums, SolverState::energy)
 //     u64 m, the number of pairs with contact history
-//     i32[m] emitters, i32[m] partners, f64[2m] tangential
-//            displacements (x, y per pair, pair-major)
+//     i32[m] emitters, i32[m] partners, f64[2m] tangential spring states u = √k_t·ξ
+//            (x, y per pair, pair-major)
 //
 // The header has its own checksum so that a damaged count is caught before it is used
 // to size anything; the payload size is checked against the file size for the same
