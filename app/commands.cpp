@@ -1,4 +1,5 @@
 #include "commands.hpp"
+#include "restart_command.hpp"
 
 #include "interrupt.hpp"
 #include "tridem/error.hpp"
@@ -18,23 +19,6 @@ namespace tridem::app {
 namespace fs = std::filesystem;
 
 namespace {
-
-Backend parse_backend(const std::string& name) {
-  if (name == "cpu") return Backend::Cpu;
-  if (name == "openmp") return Backend::OpenMP;
-  if (name == "cuda") return Backend::Cuda;
-  return Backend::Auto;
-}
-
-const char* backend_name(Backend b) {
-  switch (b) {
-    case Backend::Cpu: return "cpu";
-    case Backend::OpenMP: return "openmp";
-    case Backend::Cuda: return "cuda";
-    case Backend::Auto: break;
-  }
-  return "auto";
-}
 
 /// The last frame of an output directory: the highest step among frames/frame_*.vtu.
 fs::path last_frame(const fs::path& dir) {
@@ -56,7 +40,7 @@ int run(const RunArgs& args) {
   const Scene scene = read_scene(args.scene);
   RunOptions options;
   options.out_dir = args.out;
-  if (args.backend) options.backend = parse_backend(*args.backend);
+  if (args.backend) options.backend = value_in(kBackendNames, *args.backend);
   options.steps = args.steps;
   // main.cpp checked the spellings against the same tables.
   if (args.method) options.method = value_in(kMethodNames, *args.method);
@@ -69,11 +53,9 @@ int run(const RunArgs& args) {
   options.interrupt = &install_interrupt_handlers();
   const RunSummary summary = run_scene(scene, options);
   if (!summary.interrupted_by) return 0;
-  // The same command line, so that the restarted run has the same steps, backend, folder.
-  std::string same_run = fmt::format("tridem run {} --restart {}", args.scene, summary.checkpoint);
-  if (args.out) same_run += " --out " + *args.out;
-  if (args.steps) same_run += fmt::format(" --steps {}", *args.steps);
-  if (args.backend) same_run += " --backend " + *args.backend;
+  // The same command line, so that the restarted run has the same overrides: the
+  // checkpoint refuses any other physics.
+  const std::string same_run = restart_command(args.command_line, summary.checkpoint);
   fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
              signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
              same_run);

@@ -3,10 +3,12 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tridem::app {
 
 struct RunArgs {
+  std::vector<std::string> command_line;  ///< argv as given, for the restart advice
   std::string scene;
   std::optional<std::string> out;
   std::optional<std::string> backend;

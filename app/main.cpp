@@ -1,10 +1,11 @@
-// tridem: the command line. Every failure reaches the user as one message and exit code 1;
-// usage errors are CLI11's, with exit code 2 or above.
+// tridem: the command line. Every failure, a usage error included, reaches the user as one
+// "error: ..." message and exit code 1 (README.md).
 #include "commands.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <fmt/format.h>
 #include <string>
 #include <vector>
@@ -19,6 +20,29 @@ std::vector<std::string> spelling_list(const Table& table) {
   return out;
 }
 
+/// An existing file or folder, with the message a user can act on.
+CLI::Validator existing(const char* what) {
+  return CLI::Validator(
+      [what](std::string& path) {
+        std::error_code ec;
+        return std::filesystem::exists(path, ec) ? std::string()
+                                                 : fmt::format("no {} '{}' here", what, path);
+      },
+      "PATH");
+}
+
+/// A whole number of at least `least`, said without CLI11's range of doubles.
+CLI::Validator at_least(long long least) {
+  return CLI::Validator(
+      [least](std::string& text) {
+        long long v = 0;
+        return CLI::detail::lexical_cast(text, v) && v >= least
+                   ? std::string()
+                   : fmt::format("must be a whole number of at least {}, got '{}'", least, text);
+      },
+      fmt::format("INT>={}", least));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -29,11 +53,12 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
 
   RunArgs run_args;
+  run_args.command_line.assign(argv, argv + argc);
   auto* run_cmd = cli.add_subcommand("run", "Run a scene and write its outputs");
-  run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(existing("scene file"));
   run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");
   run_cmd->add_option("--backend", run_args.backend, "auto, cpu (serial reference), openmp or cuda")
-      ->check(CLI::IsMember({"auto", "cpu", "openmp", "cuda"}));
+      ->check(CLI::IsMember(spelling_list(tridem::kBackendNames)));
   run_cmd->add_option("--method", run_args.method,
                       "Overrides [simulation] method: " + tridem::spellings_of(tridem::kMethodNames))
       ->check(CLI::IsMember(spelling_list(tridem::kMethodNames)));
@@ -44,31 +69,38 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-bbox-prefilter", run_args.no_bbox_prefilter,
                     "Sets [simulation] bbox_prefilter = false (single-domain, decomposition)");
   run_cmd->add_option("--steps", run_args.steps, "Number of steps (overrides [simulation] steps)")
-      ->check(CLI::PositiveNumber);
+      ->check(at_least(1));
   run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(at_least(0));
   run_cmd->add_option("--restart", run_args.restart,
                       "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
-      ->check(CLI::ExistingFile);
+      ->check(existing("checkpoint"));
   run_cmd->add_flag("--force", run_args.force, "Run even if dt is above the stability limit");
   run_cmd->add_flag("--quiet", run_args.quiet, "No progress bar");
 
   std::string info_scene;
   auto* info_cmd = cli.add_subcommand("info", "Describe a scene: particles, time step, memory");
-  info_cmd->add_option("scene", info_scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  info_cmd->add_option("scene", info_scene, "Scene file (TOML)")->required()->check(existing("scene file"));
 
   RenderArgs render_args;
   auto* render_cmd = cli.add_subcommand("render", "Draw a frame to PNG");
   render_cmd->add_option("input", render_args.input,
                          "A frame (.vtu) or an output directory (its last frame)")
-      ->required()->check(CLI::ExistingPath);
+      ->required()->check(existing("frame or folder"));
   render_cmd->add_option("-o,--out", render_args.out, "PNG file (default: beside the frame)");
   render_cmd->add_option("--color", render_args.color, "speed or material")
       ->check(CLI::IsMember({"speed", "material"}));
   render_cmd->add_option("--width", render_args.width, "Image width in pixels")
       ->check(CLI::Range(16, 16384));
 
-  CLI11_PARSE(cli, argc, argv);
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "error: {}\n(tridem --help lists the commands and options)\n", e.what());
+    return 1;
+  }
   try {
     if (*run_cmd) return run(run_args);
     if (*info_cmd) return info(info_scene);

@@ -14,6 +14,11 @@ namespace tridem {
 template <class E, std::size_t N>
 using Spellings = std::array<std::pair<std::string_view, E>, N>;
 
+inline constexpr Spellings<Backend, 4> kBackendNames{{{"auto", Backend::Auto},
+                                                   {"cpu", Backend::Cpu},
+                                                   {"openmp", Backend::OpenMP},
+                                                   {"cuda", Backend::Cuda}}};
+
 inline constexpr Spellings<Method, 4> kMethodNames{{{"grid", Method::Grid},
                                                  {"all-pairs", Method::AllPairs},
                                                  {"single-domain", Method::SingleDomain},
@@ -51,6 +56,7 @@ std::string spellings_of(const Table& table) {
   return out;
 }
 
+inline std::string_view backend_name(Backend b) { return name_in(kBackendNames, b); }
 inline std::string_view method_name(Method m) { return name_in(kMethodNames, m); }
 inline std::string_view contact_test_name(ContactTest t) { return name_in(kContactTestNames, t); }
 

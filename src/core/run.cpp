@@ -17,12 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The state the run starts from: the scene's, or that of `--restart`.
-std::optional<ResumePoint> restore(Solver& solver, const Scene& scene, Precision precision,
-                                   const RunOptions& options) {
+std::optional<ResumePoint> restore(Solver& solver, const Scene& scene,
+                                   const CheckpointMeta& run, const RunOptions& options) {
   if (!options.restart) return std::nullopt;
   const fs::path file = *options.restart;
   const Checkpoint c = read_checkpoint(file);
-  check_checkpoint_fits(c, file, scene, precision);
+  check_checkpoint_fits(c, file, scene, run);
   if (c.state.step > scene.simulation.steps)
     throw RunError(fmt::format("{}: checkpoint at step {} is past the end of the run (steps "
                                "= {}); raise [simulation] steps or give --steps",
@@ -66,7 +66,10 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   const auto solver = make_solver(scene, model, ts, config);
   const auto free = static_cast<std::size_t>(
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));
-  const std::optional<ResumePoint> resume = restore(*solver, scene, config.precision, options);
+  // What the checkpoints of this run record, and what a restart must match.
+  const CheckpointMeta meta{config.precision, scene_fingerprint(scene),
+                           physics_settings(scene, ts.chosen)};
+  const std::optional<ResumePoint> resume = restore(*solver, scene, meta, options);
 
   const std::int64_t last = scene.simulation.steps;
   const std::int64_t first = solver->step();
@@ -80,8 +83,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   }
 
   OutputSet out(scene.output, scene.output.dir, scene.output.encoding, resume);
-  TimeLoop loop(*solver, out, scene, {config.precision, scene_fingerprint(scene)},
-                options.interrupt, options.progress);
+  TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress);
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
   loop.start(resume.has_value());

@@ -6,6 +6,7 @@
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 namespace tridem {
@@ -56,6 +57,12 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   check_method(scene, config.method);
   check_time_step(scene, ts, config.force);
   const Backend backend = resolve_backend(config.backend);
+  if (config.threads > 0 && backend != Backend::OpenMP)
+    throw RunError(fmt::format(
+        "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "
+        "them: give --backend openmp, or leave --threads out",
+        config.threads, backend_name(backend),
+        config.backend == Backend::Auto ? " (picked by backend = auto)" : ""));
   if (config.precision == Precision::Float)
     return make_for_real<float>(scene, model, ts, config, backend);
   return make_for_real<double>(scene, model, ts, config, backend);

@@ -7,10 +7,14 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 expect_ok() { "$@" >out.txt 2>err.txt || fail "exit $? from: $* :: $(cat err.txt)"; }
-# expect_error PATTERN CMD...: non-zero exit and PATTERN in stderr.
+# expect_error PATTERN CMD...: exit code 1 (the README's promise for every refusal, usage
+# errors included), one "error: " message, and PATTERN in it.
 expect_error() {
   local pattern=$1; shift
-  if "$@" >out.txt 2>err.txt; then fail "expected failure from: $*"; return; fi
+  "$@" >out.txt 2>err.txt
+  local code=$?
+  [ "$code" = 1 ] || { fail "exit code $code, expected 1, from: $* :: $(cat err.txt)"; return; }
+  head -n 1 err.txt | grep -q "^error: " || fail "the message of: $* does not start with 'error: ' :: $(cat err.txt)"
   grep -q -- "$pattern" err.txt || fail "'$pattern' not in the message of: $* :: $(cat err.txt)"
 }
 
@@ -120,8 +124,13 @@ if nvidia-smi -L >/dev/null 2>&1; then
 else
   expect_error "not available" "$tridem" run pile.toml --backend cuda
 fi
-expect_error "" "$tridem" run does_not_exist.toml
-expect_error "" "$tridem" run pile.toml --no-such-option
+expect_error "no scene file 'does_not_exist.toml'" "$tridem" run does_not_exist.toml
+expect_error "no-such-option" "$tridem" run pile.toml --no-such-option
+expect_error "subcommand" "$tridem" bogus
+expect_error "at least 1, got '0'" "$tridem" run pile.toml --steps 0
+grep -q "[0-9]\{40\}" err.txt && fail "--steps 0: the message prints a huge number :: $(cat err.txt)"
+expect_error "backend is cpu" "$tridem" run pile.toml --quiet --steps 5 --backend cpu --threads 2 --out threads_out
+expect_error "folder 'missing/dir' does not exist" "$tridem" render pile_out -o missing/dir/x.png
 "$tridem" --version | grep -q "^tridem [0-9]" || fail "--version"
 "$tridem" --help | grep -q "run" || fail "--help"
 
@@ -168,8 +177,13 @@ expect_error "another scene" "$tridem" run lighter.toml --quiet --out refused --
 # Ctrl-C (SIGINT) and kill (SIGTERM) stop a long run at a step boundary with a checkpoint,
 # exit 128 + signal, and say how to go on; the run then continues from it.
 sed 's/steps = 200/steps = 100000000/; s/\[1, 0\], \[-1, 0\], \[0, -1\]/[10, 0], [-10, 0], [0, -10]/' ckpt.toml >long.toml
+# The INT run has overrides of the physics: the printed command must carry them all.
+overrides_INT="--method single-domain --contact-test exact --no-bbox-prefilter"
+overrides_TERM=""
 for sig in INT TERM; do
-  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" >out.txt 2>err.txt &
+  overrides=overrides_$sig
+  # shellcheck disable=SC2086
+  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" ${!overrides} >out.txt 2>err.txt &
   pid=$!
   sleep 1
   kill -"$sig" "$pid"
@@ -179,8 +193,19 @@ for sig in INT TERM; do
   [ "$code" = "$expected" ] || fail "SIG$sig: exit code $code, expected $expected :: $(cat err.txt)"
   grep -q -- "--restart long_$sig/checkpoint.ckpt" err.txt || fail "SIG$sig: no restart advice :: $(cat err.txt)"
   [ -s "long_$sig/checkpoint.ckpt" ] && [ -s "long_$sig/final.csv" ] || fail "SIG$sig: no checkpoint or final.csv"
+  for option in ${!overrides}; do
+    grep -q -- "continue with: .*$option" err.txt || fail "SIG$sig: restart advice drops $option :: $(cat err.txt)"
+  done
+  cp err.txt "err_$sig.txt"
 done
-stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err.txt)
+# The checkpoint holds the physics settings: a restart without the overrides is refused
+# naming both values; the printed command continues the run.
+expect_error "method = single-domain, this run has grid" "$tridem" run long.toml --quiet --backend cpu --out long_INT --restart long_INT/checkpoint.ckpt
+stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err_INT.txt)
+continue_INT=$(sed -n 's/^continue with: //p' err_INT.txt)
+eval "$continue_INT --steps $((stopped + 50))" >out.txt 2>err.txt || fail "the printed restart command failed :: $continue_INT :: $(cat err.txt)"
+[ "$(cut -d, -f1 long_INT/energy.csv | tail -1)" = "$((stopped + 50))" ] || fail "the printed restart command did not continue the SIGINT run to its end"
+stopped=$(sed -n 's/.* at step \([0-9]*\):.*/\1/p' err_TERM.txt)
 expect_ok "$tridem" run long.toml --quiet --backend cpu --out long_TERM --restart long_TERM/checkpoint.ckpt --steps $((stopped + 100))
 [ "$(cut -d, -f1 long_TERM/energy.csv | tail -1)" = "$((stopped + 100))" ] || fail "run interrupted by SIGTERM did not continue to its end"
 

@@ -31,7 +31,7 @@ SolverState halfway_state(const Scene& s, Backend backend, Precision precision,
   first->advance(kSteps / 2);
   Checkpoint c;
   first->save_state(c.state);
-  c.meta = {precision, scene_fingerprint(s)};
+  c.meta = {precision, scene_fingerprint(s), {}};
   return decode_checkpoint(encode_checkpoint(c), "test").state;
 }
 

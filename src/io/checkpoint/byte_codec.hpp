@@ -21,6 +21,11 @@ class ByteWriter {
   void i32(std::int32_t v) { unsigned_le(static_cast<std::uint32_t>(v), 4); }
   void i64(std::int64_t v) { unsigned_le(static_cast<std::uint64_t>(v), 8); }
   void f64(double v) { unsigned_le(std::bit_cast<std::uint64_t>(v), 8); }
+  /// u32 length, then the bytes.
+  void text(const std::string& v) {
+    u32(static_cast<std::uint32_t>(v.size()));
+    out_.insert(out_.end(), v.begin(), v.end());
+  }
 
  private:
   void unsigned_le(std::uint64_t v, int bytes) {
@@ -38,6 +43,13 @@ class ByteReader {
   std::int32_t i32(const char* what) { return static_cast<std::int32_t>(u32(what)); }
   std::int64_t i64(const char* what) { return static_cast<std::int64_t>(u64(what)); }
   double f64(const char* what) { return std::bit_cast<double>(u64(what)); }
+  std::string text(const char* what) {
+    const std::uint32_t size = u32(what);
+    need(size, what);
+    std::string v(reinterpret_cast<const char*>(bytes_.data() + at_), size);
+    at_ += size;
+    return v;
+  }
   std::size_t remaining() const { return bytes_.size() - at_; }
 
  private:

@@ -78,10 +78,28 @@ void check_sizes(const Header& h, std::size_t file_size, const std::string& sour
                                source, h.particles, h.payload_size));
 }
 
-SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& source) {
+std::vector<PhysicsSetting> read_settings(io::ByteReader& r) {
+  std::vector<PhysicsSetting> settings;
+  const std::uint32_t k = r.u32("settings count");
+  for (std::uint32_t i = 0; i < k; ++i) {
+    // Each setting takes at least its two lengths: a lying count runs out of bytes first.
+    std::string key = r.text("setting name");
+    std::string value = r.text("setting value");
+    settings.push_back({std::move(key), std::move(value)});
+  }
+  return settings;
+}
+
+SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& source,
+                         std::vector<PhysicsSetting>& settings) {
   SolverState s;
   s.step = r.i64("step");
   s.time = r.f64("time");
+  settings = read_settings(r);
+  if (r.remaining() < 48 * n + 8)
+    throw RunError(fmt::format("{}: corrupt: {} particles do not fit in the {} bytes of state "
+                               "left after the settings",
+                               source, n, r.remaining()));
   for (int k = 0; k < 6; ++k) {
     std::vector<double>& v = *state_arrays(s)[k];
     v.resize(n);
@@ -112,6 +130,11 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   io::ByteWriter p(payload);
   p.i64(s.step);
   p.f64(s.time);
+  p.u32(static_cast<std::uint32_t>(c.meta.settings.size()));
+  for (const PhysicsSetting& setting : c.meta.settings) {
+    p.text(setting.key);
+    p.text(setting.value);
+  }
   for (const std::vector<double>* array : state_arrays(s))
     for (double v : *array) p.f64(v);
   p.u64(m);
@@ -148,7 +171,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   Checkpoint c;
   c.meta.precision = h.precision == 1 ? Precision::Float : Precision::Double;
   c.meta.scene_hash = h.scene_hash;
-  c.state = read_payload(r, static_cast<std::size_t>(h.particles), source);
+  c.state = read_payload(r, static_cast<std::size_t>(h.particles), source, c.meta.settings);
   validate_solver_state(c.state, c.state.size(), source);
   return c;
 }

@@ -32,7 +32,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
 }
 
 void check_checkpoint_fits(const Checkpoint& c, const std::filesystem::path& file,
-                           const Scene& scene, Precision precision) {
+                           const Scene& scene, const CheckpointMeta& run) {
+  const Precision precision = run.precision;
   const std::string name = file.string();
   if (c.state.size() != scene.triangles.size())
     throw RunError(fmt::format("{}: checkpoint of {} particles, but scene '{}' has {}: it "
@@ -50,6 +51,7 @@ void check_checkpoint_fits(const Checkpoint& c, const std::filesystem::path& fil
                                name, spelt(c.meta.precision), spelt(precision),
                                spelt(c.meta.precision)));
   }
+  check_physics_settings(c.meta.settings, run.settings, name);
 }
 
 }  // namespace tridem

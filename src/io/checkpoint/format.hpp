@@ -1,9 +1,9 @@
 #pragma once
-// The checkpoint file, version 1. All numbers little-endian; reals are IEEE doubles.
+// The checkpoint file, version 2. All numbers little-endian; reals are IEEE doubles.
 //
 //   header (48 bytes)
 //     0  char[8]  magic "TRIDEMCK"
-//     8  u32      version (1)
+//     8  u32      version (2)
 //    12  u32      precision of the solver: 0 double, 1 float
 //    16  u64      particle count n
 //    24  u64      scene fingerprint (scene_fingerprint)
@@ -12,6 +12,8 @@
 //    44  u32      CRC-32 of header bytes 0..43
 //   payload
 //     i64 step, f64 time
+//     u32 k, then k physics settings (physics_settings()), each as two texts, key and
+//       value; a text is a u32 byte count and that many bytes of UTF-8
 //     f64[n] x, y, theta, vx, vy, omega (six arrays, in this order)
 //     u64 m, the number of pairs with contact history
 //     i32[m] emitters, i32[m] partners, f64[6m] slips (six per pair, pair-major)
@@ -25,12 +27,13 @@
 namespace tridem::checkpoint_format {
 
 inline constexpr char kMagic[8] = {'T', 'R', 'I', 'D', 'E', 'M', 'C', 'K'};
-inline constexpr std::uint32_t kVersion = 1;
+inline constexpr std::uint32_t kVersion = 2;
 inline constexpr std::size_t kHeaderSize = 48;
 inline constexpr std::size_t kHeaderCrcOffset = 44;
 inline constexpr std::size_t kPayloadCrcOffset = 40;
-/// Bytes of the payload that do not depend on the pair count: step, time, six arrays, m.
-inline constexpr std::size_t fixed_payload_size(std::uint64_t n) { return 8 + 8 + 48 * n + 8; }
+/// The least bytes of a payload of n particles: step, time, the settings count, six
+/// arrays, m.
+inline constexpr std::size_t fixed_payload_size(std::uint64_t n) { return 8 + 8 + 4 + 48 * n + 8; }
 inline constexpr std::size_t kBytesPerPair = 4 + 4 + 6 * 8;
 
 }  // namespace tridem::checkpoint_format

@@ -25,9 +25,11 @@ void make_directory(const fs::path& dir) {
                                ec.message()));
 }
 
-/// A run owns the tridem files of its directory: frames and contact files of an earlier
-/// run there would otherwise mix with the new ones (ParaView and `tridem render` would
-/// show them). Only files with tridem's own names are removed; nothing else is touched.
+/// A run owns the tridem files of its directory: frames, their renderings and contact files
+/// of an earlier run there would otherwise mix with the new ones (ParaView and `tridem
+/// render` would show them), and an earlier blow-up's last_good.ckpt would describe a
+/// failure this run did not have. Only files with tridem's own names are removed; nothing
+/// else is touched (checkpoint.ckpt stays: it may be what the user means to restart from).
 void remove_earlier_run(const fs::path& dir) {
   auto remove_matching = [](const fs::path& folder, std::string_view prefix) {
     std::error_code ec;
@@ -35,14 +37,16 @@ void remove_earlier_run(const fs::path& dir) {
     for (const auto& entry : fs::directory_iterator(folder, ec)) {
       const std::string name = entry.path().filename().string();
       const std::string ext = entry.path().extension().string();
-      if (name.starts_with(prefix) && (ext == ".vtu" || ext == ".vtp" || ext == ".csv"))
+      if (name.starts_with(prefix) &&
+          (ext == ".vtu" || ext == ".vtp" || ext == ".csv" || ext == ".png"))
         fs::remove(entry.path(), ec);
     }
   };
   remove_matching(dir / "frames", "frame_");
   remove_matching(dir / "contacts", "contacts_");
   std::error_code ec;
-  for (const char* name : {"tridem.pvd", "contacts.pvd", "final.csv"}) fs::remove(dir / name, ec);
+  for (const char* name : {"tridem.pvd", "contacts.pvd", "final.csv", "last_good.ckpt"})
+    fs::remove(dir / name, ec);
 }
 
 io::OutFile open_log(const fs::path& file, std::string_view header,

@@ -141,6 +141,12 @@ void draw_colorbar(cairo_t* cr, const Layout& l, double lo, double hi) {
 }  // namespace
 
 void render_png(const Snapshot& s, const std::filesystem::path& png, const RenderOptions& o) {
+  // cairo would say only "error while writing to output stream".
+  const std::filesystem::path folder = png.parent_path();
+  std::error_code ec;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    throw Error(fmt::format("cannot render '{}': the folder '{}' does not exist", png.string(),
+                            folder.string()));
   io::check_snapshot(s, png.string());
   if (o.width < 1 || o.width > kMaxSide || o.height < 0 || o.height > kMaxSide)
     throw Error(fmt::format("cannot render '{}': image size {}x{} is outside 1..{}",

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdio>
+#include <unistd.h>
 
 namespace tridem::scene_detail {
 namespace {
@@ -49,5 +51,37 @@ std::size_t saturating_count(double n) {
 }
 
 double tolerant_floor(double x) { return std::floor(x + 1e-9); }
+
+std::size_t bytes_to_read(std::size_t n) {
+  // Two TriangleSpec lists while the vector grows, and the particle model's per-particle
+  // arrays (centroid, offsets, velocities, mass terms, sizes, material, motion).
+  constexpr std::size_t kModel = 136;
+  return n * (2 * sizeof(TriangleSpec) + kModel);
+}
+
+std::size_t available_memory_bytes() {
+  if (std::FILE* f = std::fopen("/proc/meminfo", "r")) {
+    char line[256];
+    unsigned long long kib = 0;
+    bool found = false;
+    while (!found && std::fgets(line, sizeof line, f))
+      found = std::sscanf(line, "MemAvailable: %llu kB", &kib) == 1;
+    std::fclose(f);
+    if (found) return static_cast<std::size_t>(kib) * 1024;
+  }
+  return static_cast<std::size_t>(sysconf(_SC_PHYS_PAGES)) *
+         static_cast<std::size_t>(sysconf(_SC_PAGE_SIZE));
+}
+
+std::string memory_shortfall(std::size_t total, std::size_t available) {
+  const std::size_t need = bytes_to_read(total);
+  if (need <= available) return {};
+  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+  return fmt::format("{} triangles in all would need about {:.1f} GiB of memory just to be "
+                     "read, and this machine has {:.1f} GiB available (check the units of "
+                     "region and size)",
+                     total, static_cast<double>(need) / kGiB,
+                     static_cast<double>(available) / kGiB);
+}
 
 }  // namespace tridem::scene_detail

@@ -4,6 +4,7 @@
 #include "tridem/vec2.hpp"
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace tridem::scene_detail {
@@ -15,6 +16,19 @@ void check_generator_common(std::string_view generator, int material, Vec2d regi
 
 /// Throws SceneError if `n` triangles is none at all or more than kMaxGeneratedTriangles.
 void check_generated_count(std::string_view generator, std::size_t n);
+
+/// Bytes of host memory that reading a scene of n triangles and building its particle
+/// model take at the peak (the list of triangles may be copied once as it grows).
+std::size_t bytes_to_read(std::size_t n);
+
+/// The host memory available now (MemAvailable of /proc/meminfo; the physical memory where
+/// that cannot be read).
+std::size_t available_memory_bytes();
+
+/// Why `total` generated triangles in all cannot be read on a machine with `available`
+/// bytes free, or an empty string when they can: the reader refuses before generating, so
+/// that a units slip ends with a message rather than the kernel's out-of-memory kill.
+std::string memory_shortfall(std::size_t total, std::size_t available);
 
 /// Converts a non-negative count computed in double (which may be astronomically large for
 /// a units mistake) to size_t without overflow: anything too big saturates.

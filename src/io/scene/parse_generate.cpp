@@ -1,5 +1,6 @@
 // [[generate]] blocks. Each key is range-checked here, before the generator runs, so that a
 // refusal names the key; the generators repeat the checks for callers that use them directly.
+#include "io/scene/generator_checks.hpp"
 #include "io/scene/scene_sections.hpp"
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
@@ -104,13 +105,22 @@ void parse_generate(const toml::table& table, const std::string& source, std::si
   // Read everything and refuse unknown keys before generating: a typo should not cost the
   // time of generating a million triangles first.
   std::vector<TriangleSpec> made;
+  // Nor should it cost the machine: a count that cannot be held is refused before a byte
+  // of it is made.
+  auto check_memory = [&](std::size_t count) {
+    if (const std::string why = memory_shortfall(out.size() + count, available_memory_bytes());
+        !why.empty())
+      r.fail("size", why);
+  };
   if (kind == Kind::Lattice) {
     const LatticeSpec spec = read_lattice(r, common);
     r.reject_unknown_keys();
+    check_memory(count_lattice(spec));
     made = generate_here(r, [&] { return generate_lattice(spec); });
   } else {
     const RandomPackingSpec spec = read_random(r, common);
     r.reject_unknown_keys();
+    check_memory(spec.count > 0 ? spec.count : count_random_cells(spec));
     made = generate_here(r, [&] { return generate_random(spec); });
   }
   if (out.empty()) {

@@ -60,11 +60,7 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
   if (!(s.safety > 0 && s.safety <= 1))
     r.fail("safety", fmt::format("must be in (0, 1], got {}", s.safety));
   s.gravity = r.vec2("gravity").value_or(s.gravity);
-  s.backend = r.choice<Backend>("backend", {{"auto", Backend::Auto},
-                                            {"cpu", Backend::Cpu},
-                                            {"openmp", Backend::OpenMP},
-                                            {"cuda", Backend::Cuda}})
-                  .value_or(s.backend);
+  s.backend = r.choice_in<Backend>("backend", kBackendNames).value_or(s.backend);
   s.precision =
       r.choice<Precision>("precision", {{"double", Precision::Double}, {"float", Precision::Float}})
           .value_or(s.precision);

@@ -16,7 +16,8 @@ namespace {
 
 Checkpoint sample_checkpoint() {
   Checkpoint c;
-  c.meta = {Precision::Float, 0x0123456789ABCDEFull};
+  c.meta = {Precision::Float, 0x0123456789ABCDEFull,
+            {{"[simulation] method", "single-domain"}, {"[simulation] dt", "1e-05"}, {"", ""}}};
   SolverState& s = c.state;
   s.step = 1234;
   s.time = 0.1 + 0.2;
@@ -48,6 +49,7 @@ TEST(CheckpointFile, RoundTripIsExact) {
   const Checkpoint back = decode_checkpoint(encode_checkpoint(c), "mem");
   EXPECT_EQ(back.meta.precision, Precision::Float);
   EXPECT_EQ(back.meta.scene_hash, c.meta.scene_hash);
+  EXPECT_EQ(back.meta.settings, c.meta.settings);
   EXPECT_EQ(back.state.step, c.state.step);
   EXPECT_EQ(back.state.time, c.state.time);
   EXPECT_EQ(back.state.x, c.state.x);
@@ -81,7 +83,7 @@ TEST(CheckpointFile, FlippedBitsAreRefused) {
     EXPECT_THROW(decode_checkpoint(bytes, "ck.bin"), Error) << "flip in byte " << byte;
   }
   auto payload = good;
-  payload.back() ^= 1;
+  payload[payload.size() - 1] ^= 1;
   expect_refused(payload, "checksum");
 }
 
@@ -95,13 +97,14 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 }
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
-  // Version 2 with a consistent header checksum: refused for the version, not as damage.
+  // Version 1 (before the physics settings) with a consistent header checksum: refused for
+  // the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  bytes[8] = 2;
+  bytes[8] = 1;
   const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
   for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
-  expect_refused(bytes, "version 2");
+  expect_refused(bytes, "version 1");
 }
 
 TEST(CheckpointFile, ValidFileOfAnotherSceneOrPrecisionIsRefused) {
@@ -109,13 +112,17 @@ TEST(CheckpointFile, ValidFileOfAnotherSceneOrPrecisionIsRefused) {
   scene.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
   scene.triangles.push_back(test::triangle({2, 0}, {3, 0}, {2, 1}));
   scene.triangles.push_back(test::triangle({4, 0}, {5, 0}, {4, 1}));
+  const double dt = 1e-5;
+  auto run_of = [&](const Scene& s, Precision p) {
+    return CheckpointMeta{p, scene_fingerprint(s), physics_settings(s, dt)};
+  };
   Checkpoint c = sample_checkpoint();
-  c.meta = {Precision::Double, scene_fingerprint(scene)};
-  EXPECT_NO_THROW(check_checkpoint_fits(c, "ck.bin", scene, Precision::Double));
+  c.meta = run_of(scene, Precision::Double);
+  EXPECT_NO_THROW(check_checkpoint_fits(c, "ck.bin", scene, c.meta));
 
   auto refused = [&](const Scene& other, Precision p, const std::string& fragment) {
     try {
-      check_checkpoint_fits(c, "ck.bin", other, p);
+      check_checkpoint_fits(c, "ck.bin", other, run_of(other, p));
       ADD_FAILURE() << "accepted; expected '" << fragment << "'";
     } catch (const RunError& e) {
       EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
@@ -131,9 +138,56 @@ TEST(CheckpointFile, ValidFileOfAnotherSceneOrPrecisionIsRefused) {
   Scene fewer = scene;
   fewer.triangles.pop_back();
   refused(fewer, Precision::Double, "2");
-  Scene stiffer = scene;  // contact parameters may change between runs
-  stiffer.materials[0].penalty *= 10;
-  EXPECT_NO_THROW(check_checkpoint_fits(c, "ck.bin", stiffer, Precision::Double));
+}
+
+// A restart must not silently continue with other physics: every setting that changes the
+// trajectory is stored, and a change is refused naming the key and both values.
+TEST(CheckpointFile, OtherPhysicsSettingsAreRefusedNamingBothValues) {
+  Scene scene = test::empty_scene();
+  for (double x : {0.0, 2.0, 4.0}) scene.triangles.push_back(test::triangle({x, 0}, {x + 1, 0}, {x, 1}));
+  scene.materials[0].penalty = 1e6;
+  Checkpoint c = sample_checkpoint();
+  c.meta = {Precision::Double, scene_fingerprint(scene), physics_settings(scene, 1e-5)};
+  c.meta.settings = decode_checkpoint(encode_checkpoint(c), "mem").meta.settings;
+  auto refused = [&](const Scene& other, double dt, const std::string& fragment) {
+    const CheckpointMeta run{Precision::Double, scene_fingerprint(other),
+                             physics_settings(other, dt)};
+    try {
+      check_checkpoint_fits(c, "ck.bin", other, run);
+      ADD_FAILURE() << "accepted; expected '" << fragment << "'";
+    } catch (const RunError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  EXPECT_NO_THROW(check_checkpoint_fits(
+      c, "ck.bin", scene, {Precision::Double, scene_fingerprint(scene), physics_settings(scene, 1e-5)}));
+  Scene other = scene;
+  other.simulation.method = Method::SingleDomain;
+  refused(other, 1e-5, "[simulation] method = grid, this run has single-domain");
+  other = scene;
+  other.simulation.method = Method::Decomposition;
+  other.simulation.contact_test = ContactTest::DirectArea;
+  refused(other, 1e-5, "method = grid");
+  other = scene;
+  other.simulation.bbox_prefilter = false;
+  refused(other, 1e-5, "bbox_prefilter = true, this run has false");
+  refused(scene, 2e-5, "dt = 1e-05, this run has 2e-05");
+  other = scene;
+  other.materials[0].penalty *= 10;
+  refused(other, 1e-5, "penalty = 1000000, this run has 10000000");
+  other = scene;
+  other.simulation.gravity.y = -9.81;
+  refused(other, 1e-5, "gravity = [0, 0], this run has [0, -9.81]");
+  other = scene;
+  other.materials[0].name = "renamed";
+  refused(other, 1e-5, "does not record [[material]] \"renamed\"");
+  // Settings that change no result may differ: a CPU checkpoint continues on the GPU.
+  other = scene;
+  other.simulation.backend = Backend::Cuda;
+  other.simulation.skin = 0.2;
+  other.output.every = 7;
+  EXPECT_NO_THROW(check_checkpoint_fits(
+      c, "ck.bin", other, {Precision::Double, scene_fingerprint(other), physics_settings(other, 1e-5)}));
 }
 
 }  // namespace

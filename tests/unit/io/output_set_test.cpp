@@ -42,15 +42,18 @@ TEST(OutputSet, RemovesFilesOfAnEarlierRunAndNothingElse) {
   const auto dir = tmp.path() / "run";
   std::filesystem::create_directories(dir / "frames");
   std::filesystem::create_directories(dir / "contacts");
-  for (const char* stale : {"frames/frame_000099999.vtu", "contacts/contacts_000099999.csv",
-                            "contacts/contacts_000099999.vtp", "final.csv", "tridem.pvd"})
+  for (const char* stale : {"frames/frame_000099999.vtu", "frames/frame_000099999.png",
+                            "contacts/contacts_000099999.csv", "contacts/contacts_000099999.vtp",
+                            "final.csv", "tridem.pvd", "last_good.ckpt", "checkpoint.ckpt"})
     std::ofstream(dir / stale) << "old";
   std::ofstream(dir / "notes.txt") << "mine";
   std::ofstream(dir / "frames" / "sketch.png") << "mine";
   OutputSet out(OutputSettings{}, dir);
-  for (const char* stale : {"frames/frame_000099999.vtu", "contacts/contacts_000099999.csv",
-                            "contacts/contacts_000099999.vtp", "final.csv"})
+  for (const char* stale : {"frames/frame_000099999.vtu", "frames/frame_000099999.png",
+                            "contacts/contacts_000099999.csv", "contacts/contacts_000099999.vtp",
+                            "final.csv", "last_good.ckpt"})
     EXPECT_FALSE(std::filesystem::exists(dir / stale)) << stale;
+  EXPECT_TRUE(std::filesystem::exists(dir / "checkpoint.ckpt"));
   EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
   EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "sketch.png"));
 }

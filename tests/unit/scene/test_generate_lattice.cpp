@@ -1,4 +1,5 @@
 // generate_lattice: geometry, spacing, no overlap, counting, refusals.
+#include "io/scene/generator_checks.hpp"
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
 #include "triangle_overlap.hpp"
@@ -138,3 +139,23 @@ TEST(SceneLattice, MillionTrianglesInWellUnderASecond) {
 
 }  // namespace
 }  // namespace tridem
+
+namespace tridem::scene_detail {
+namespace {
+
+// tridem info on 1.1e8 generated triangles (a units slip) used 24 GB and was killed by the
+// kernel with no message; the reader now refuses such a count before generating.
+TEST(SceneMemory, CountThatCannotBeHeldIsRefusedNamingTheEstimate) {
+  const std::size_t eight_gib = std::size_t{8} << 30;
+  const std::string why = memory_shortfall(110'000'000, eight_gib);
+  ASSERT_FALSE(why.empty());
+  EXPECT_NE(why.find("110000000 triangles"), std::string::npos) << why;
+  EXPECT_NE(why.find("8.0 GiB available"), std::string::npos) << why;
+  EXPECT_TRUE(memory_shortfall(1'000'000, eight_gib).empty());
+  // The estimate is at least what the triangles themselves take.
+  EXPECT_GE(bytes_to_read(1000), 1000 * sizeof(TriangleSpec));
+  EXPECT_GT(available_memory_bytes(), std::size_t{1} << 20);
+}
+
+}  // namespace
+}  // namespace tridem::scene_detail

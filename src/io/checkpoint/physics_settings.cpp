@@ -1,0 +1,65 @@
+// physics_settings: the settings a checkpoint keeps so that a restart cannot silently go on
+// with other physics. A setting belongs here when changing it changes the trajectory; the
+// ones that only change speed or bookkeeping (backend, skin, decomposition layout, output)
+// do not, so that a CPU checkpoint may continue on the GPU, for instance.
+#include "tridem/checkpoint.hpp"
+#include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
+
+#include <fmt/format.h>
+
+namespace tridem {
+
+std::vector<PhysicsSetting> physics_settings(const Scene& scene, double dt) {
+  const SimulationSettings& s = scene.simulation;
+  // "{}" prints the shortest text that reads back to the same double, so equal text means
+  // an equal value.
+  std::vector<PhysicsSetting> out = {
+      {"[simulation] method", std::string(method_name(s.method))},
+      {"[simulation] contact_test", std::string(contact_test_name(s.contact_test))},
+      {"[simulation] bbox_prefilter", s.bbox_prefilter ? "true" : "false"},
+      {"[simulation] dt", fmt::format("{}", dt)},
+      {"[simulation] gravity", fmt::format("[{}, {}]", s.gravity.x, s.gravity.y)},
+      {"[simulation] local_damping", fmt::format("{}", s.local_damping)},
+      {"[simulation] max_penetration", fmt::format("{}", s.max_penetration)},
+  };
+  for (const Material& m : scene.materials) {
+    const std::string key = fmt::format("[[material]] \"{}\" ", m.name);
+    out.push_back({key + "penalty", fmt::format("{}", m.penalty)});
+    out.push_back({key + "tangential_penalty", fmt::format("{}", m.tangential_penalty)});
+    out.push_back({key + "friction", fmt::format("{}", m.friction)});
+    out.push_back({key + "damping", fmt::format("{}", m.damping)});
+  }
+  return out;
+}
+
+void check_physics_settings(const std::vector<PhysicsSetting>& stored,
+                            const std::vector<PhysicsSetting>& current,
+                            const std::string& file) {
+  const auto find = [](const std::vector<PhysicsSetting>& list, const std::string& key) {
+    for (const PhysicsSetting& s : list)
+      if (s.key == key) return &s;
+    return static_cast<const PhysicsSetting*>(nullptr);
+  };
+  const char* advice =
+      "restart with the settings the checkpoint was written with (scene and command line), "
+      "or start a new run";
+  for (const PhysicsSetting& now : current) {
+    const PhysicsSetting* then = find(stored, now.key);
+    if (!then)
+      throw RunError(fmt::format("{}: the checkpoint does not record {} (this run: {}); it "
+                                 "was written by another tridem or for other materials; {}",
+                                 file, now.key, now.value, advice));
+    if (then->value != now.value)
+      throw RunError(fmt::format("{}: the checkpoint was written with {} = {}, this run has "
+                                 "{}; {}",
+                                 file, now.key, then->value, now.value, advice));
+  }
+  for (const PhysicsSetting& then : stored)
+    if (!find(current, then.key))
+      throw RunError(fmt::format("{}: the checkpoint was written with {} = {}, which this "
+                                 "run does not have; {}",
+                                 file, then.key, then.value, advice));
+}
+
+}  // namespace tridem
