@@ -24,18 +24,17 @@ struct Thinnest {
   double heaviest = 0;  ///< largest mass (0 for walls: they move by prescription)
 };
 
-/// The springs and dashpots of particle i with every edge pressed along its whole length
-/// by partners of one kind and material, and the limit they give.
-struct ParticleBound {
-  double lambda_k = 0, lambda_c = 0, dt = kInf;
-};
-
 }  // namespace
 
 std::string StepLimit::describe() const {
   if (particle < 0) return "";
-  return fmt::format("particle {} pressed against {} particle {} ({:g} m thick{})", particle,
-                     partner_free ? "free" : "fixed or prescribed", partner, partner_height,
+  if (partner_free)
+    return fmt::format("particle {} pressed on every edge by free particles as thin as "
+                       "particle {} ({:g} m)",
+                       particle, partner, partner_height);
+  return fmt::format("particle {} pressed on every edge by fixed or prescribed particle {} "
+                     "({:g} m thick{})",
+                     particle, partner, partner_height,
                      thin_wall() ? ": a thin wall makes a stiff contact" : "");
 }
 

@@ -21,7 +21,8 @@ struct StepLimit {
   double particle_height = 0;  ///< the particle's smallest height, m
   double damping_ratio = 0;    ///< the largest ζ it meets
 
-  /// "particle 3 pressed against fixed or prescribed particle 0 (0.0001 m thick)", or "".
+  /// "particle 3 pressed on every edge by fixed or prescribed particle 0 (0.0001 m
+  /// thick: a thin wall ...)", or "" when no particle is free.
   std::string describe() const;
   /// True when the partner is a wall much thinner than the particle: its contact is stiff.
   bool thin_wall() const { return !partner_free && partner_height < 0.5 * particle_height; }
@@ -33,7 +34,7 @@ struct TimeStep {
   bool automatic = true; ///< dt was left out of the scene
   StepLimit limit;       ///< what sets dt_crit
 
-  /// "dt_crit = 1.2e-05 s, set by particle 3 pressed against ..." for messages.
+  /// "dt_crit = 1.2e-05 s, set by particle 3 pressed on every edge by ..." for messages.
   std::string describe() const;
 };
 
