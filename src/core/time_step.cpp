@@ -43,6 +43,14 @@ std::string TimeStep::describe() const {
   return fmt::format("dt_crit = {:g} s{}{}", critical, by.empty() ? "" : ", set by ", by);
 }
 
+std::string TimeStep::cure() const {
+  return fmt::format("lower dt or [simulation] safety{}",
+                     limit.thin_wall()
+                         ? fmt::format(", or make the thin wall (particle {}) thicker",
+                                       limit.partner)
+                         : "");
+}
+
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
   const std::size_t n_mat = scene.materials.size();
   // thinnest[kind][material], kind 0: free, 1: fixed or prescribed.
@@ -150,7 +158,9 @@ void check_time_step(const Scene& scene, const TimeStep& ts, bool force) {
       "dt <= {:g} (safety 0.1){}, leave dt out for an automatic step, or pass --force to run "
       "anyway",
       scene.source, ts.chosen, ts.describe(), ts.chosen / ts.critical, 0.1 * ts.critical,
-      ts.limit.thin_wall() ? ", make the thin wall thicker" : ""));
+      ts.limit.thin_wall()
+          ? fmt::format(", make the thin wall (particle {}) thicker", ts.limit.partner)
+          : ""));
 }
 
 }  // namespace tridem

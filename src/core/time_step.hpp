@@ -36,6 +36,9 @@ struct TimeStep {
 
   /// "dt_crit = 1.2e-05 s, set by particle 3 pressed on every edge by ..." for messages.
   std::string describe() const;
+  /// "lower dt or [simulation] safety", and ", or make the thin wall (particle 0) thicker"
+  /// when a thin wall sets dt_crit. Never a larger penalty: it would stiffen the contact.
+  std::string cure() const;
 };
 
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model);

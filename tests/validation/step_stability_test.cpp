@@ -143,7 +143,8 @@ TEST(StepLimit, BlowUpMessageNamesTheStepLimitNotThePenalty) {
   s.simulation.dt = 20 * critical_step(s);
   const Outcome o = run(s, Backend::Cpu, 20000, true);
   ASSERT_TRUE(o.blew_up);
-  for (const char* part : {"blow-up at step", "dt_crit", "thin wall", "lower dt"})
+  for (const char* part : {"blow-up at step", "dt_crit", "lower dt",
+                           "make the thin wall (particle 0) thicker"})
     EXPECT_NE(o.message.find(part), std::string::npos) << part << " not in: " << o.message;
   EXPECT_EQ(o.message.find("raise the penalty"), std::string::npos) << o.message;
 }

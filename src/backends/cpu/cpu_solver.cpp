@@ -35,8 +35,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                static_cast<Real>(scene.simulation.gravity.y)},
       local_damping_(static_cast<Real>(scene.simulation.local_damping)),
       penetration_limit_(static_cast<Real>(scene.simulation.max_penetration)),
-      dt_crit_(ts.critical),
-      stability_(ts.describe()),
+      limit_(ts),
       n_materials_(static_cast<int>(scene.materials.size())),
       finder_(model.longest_edge, model.motion),
       filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
@@ -221,7 +220,7 @@ void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
                       static_cast<double>(y_[j]),
                       static_cast<double>(result_[s].depth)};
   throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(penetration_limit_),
-                                     static_cast<double>(dt_), dt_crit_, stability_));
+                                     static_cast<double>(dt_), limit_));
 }
 
 template <class Real>
@@ -263,7 +262,7 @@ void CpuSolver<Real>::integrate() {
     const physics::Pose<Real> p = advanced_pose(i);
     throw RunError(runaway_message(step_ + 1, bad, static_cast<double>(x_[i]),
                                    static_cast<double>(y_[i]), static_cast<double>(norm(p.v)),
-                                   static_cast<double>(dt_), stability_));
+                                   static_cast<double>(dt_), limit_));
   }
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -52,8 +52,7 @@ class CpuSolver final : public Solver {
   Vec2<Real> gravity_;
   Real local_damping_;
   Real penetration_limit_;  ///< largest PairForce::depth accepted
-  double dt_crit_;          ///< the stability limit, for the blow-up messages
-  std::string stability_;   ///< TimeStep::describe(), for the blow-up messages
+  TimeStep limit_;          ///< dt_crit and what sets it, for the blow-up messages
   std::int64_t step_ = 0;
   double time_ = 0;
 

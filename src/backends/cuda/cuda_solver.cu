@@ -61,8 +61,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
 
   params_.dt = static_cast<Real>(ts.chosen);
-  dt_crit_ = ts.critical;
-  stability_ = ts.describe();
+  limit_ = ts;
   params_.gravity = {static_cast<Real>(scene.simulation.gravity.x),
                      static_cast<Real>(scene.simulation.gravity.y)};
   params_.local_damping = static_cast<Real>(scene.simulation.local_damping);
@@ -268,7 +267,7 @@ void CudaSolver<Real>::report_runaway(int i) const {
                         params_.gravity, params_.local_damping, params_.dt);
   throw RunError(runaway_message(step_ + 1, i, static_cast<double>(v[0]),
                                  static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
-                                 static_cast<double>(params_.dt), stability_));
+                                 static_cast<double>(params_.dt), limit_));
 }
 
 template <class Real>
@@ -289,7 +288,7 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
   const Vec2d a = position(emitter), b = position(j);
   const DeepPair pair{emitter, j, a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
   throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth),
-                                     static_cast<double>(params_.dt), dt_crit_, stability_));
+                                     static_cast<double>(params_.dt), limit_));
 }
 
 template <class Real>
