@@ -24,6 +24,80 @@ struct Thinnest {
   double heaviest = 0;  ///< largest mass (0 for walls: they move by prescription)
 };
 
+/// The limit of free particle i with every edge pressed along its whole length by the
+/// stiffest partners of each kind and material, and the partner that sets it.
+struct ParticleLimit {
+  double dt = kInf;
+  StepLimit limit;
+};
+
+ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
+                             const std::vector<Thinnest> (&thinnest)[2],
+                             const std::vector<physics::ContactLaw<double>>& laws,
+                             double local) {
+  const std::size_t n_mat = thinnest[0].size();
+  const double m = model.mass[i], h_i = model.smallest_height[i];
+  const auto& r = model.offsets[i];
+  double edge_length[3];
+  for (int e = 0; e < 3; ++e) edge_length[e] = norm(r[(e + 1) % 3] - r[e]);
+  // Per metre of each edge: normal and tangential stiffness, normal and tangential
+  // damping, the largest over the partners this particle can meet.
+  double kn[3] = {}, kt[3] = {}, cn[3] = {}, ct[3] = {};
+  double strongest = 0;
+  const Thinnest* setter = nullptr;
+  bool setter_free = true;
+  double zeta_max = 0;
+  for (int kind = 0; kind < 2; ++kind)
+    for (std::size_t b = 0; b < n_mat; ++b) {
+      const Thinnest& t = thinnest[kind][b];
+      // The free kind includes the particle itself: a particle alone is bounded as if it
+      // met a copy of itself, which keeps the automatic step defined.
+      if (t.count == 0) continue;
+      const auto in = physics::contact_stiffness_inputs(laws[model.material[i] * n_mat + b]);
+      // One pair pressed along a length ℓ of this edge: ℓ of its edge in the partner's
+      // sub-triangle (height >= t.height) and about ℓ of the partner's boundary in its own
+      // (height >= h_i): k = 3p·ℓ·(1/h_partner + 1/h_i).
+      const double per_metre = 3.0 * in.normal * (1.0 / t.height + 1.0 / h_i);
+      // Two free bodies: (u_a − u_b)² <= 2u_a² + 2u_b², so each takes twice the pair's
+      // springs; a wall does not move.
+      const double share = kind == 0 ? 2.0 : 1.0;
+      const double m_eff = kind == 0 ? m * t.heaviest / (m + t.heaviest) : m;
+      if (share * per_metre > strongest) {
+        strongest = share * per_metre;
+        setter = &t;
+        setter_free = kind == 0;
+      }
+      zeta_max = std::max(zeta_max, in.damping_ratio);
+      for (int e = 0; e < 3; ++e) {
+        const double l = edge_length[e];
+        kn[e] = std::max(kn[e], share * per_metre);
+        kt[e] = std::max(kt[e], share * per_metre * in.tangential_ratio);
+        // Partners side by side along the edge, each at least as wide as its smallest
+        // height (and no more than there are): n of them, each with its own dashpot
+        // 2ζ√(m_eff·k), carry Σ√k <= √(n·Σk) of damping. m_eff grows with the
+        // partner's mass: the heaviest one of this kind, or a wall's m.
+        const double partners =
+            std::min(1.0 + std::floor(l / t.height), static_cast<double>(t.count));
+        auto dashpot = [&](double k) {
+          return share * 2.0 * in.damping_ratio * std::sqrt(partners * m_eff * k * l) / l;
+        };
+        cn[e] = std::max(cn[e], dashpot(per_metre));
+        ct[e] = std::max(ct[e], dashpot(per_metre * in.tangential_ratio));
+      }
+    }
+  if (setter == nullptr) return {};  // nothing to meet
+  physics::Sym3<double> springs, dashpots;
+  for (int e = 0; e < 3; ++e) {
+    physics::add_edge_springs(springs, r[e], r[(e + 1) % 3], kn[e], kt[e]);
+    physics::add_edge_springs(dashpots, r[e], r[(e + 1) % 3], cn[e], ct[e]);
+  }
+  const double lambda_k = local * physics::largest_mode(springs, m, model.inertia[i]);
+  const double lambda_c = local * physics::largest_mode(dashpots, m, model.inertia[i]);
+  const double dt = physics::symplectic_euler_limit(lambda_k, lambda_c);
+  return {dt, {static_cast<std::int64_t>(i), setter->id, setter_free, setter->height, h_i,
+               zeta_max}};
+}
+
 }  // namespace
 
 std::string StepLimit::describe() const {
@@ -74,68 +148,10 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
   ts.critical = kInf;
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (model.motion[i] != Motion::Free) continue;
-    const double m = model.mass[i], h_i = model.smallest_height[i];
-    const auto& r = model.offsets[i];
-    double edge_length[3];
-    for (int e = 0; e < 3; ++e) edge_length[e] = norm(r[(e + 1) % 3] - r[e]);
-    // Per metre of each edge: normal and tangential stiffness, normal and tangential
-    // damping, the largest over the partners this particle can meet.
-    double kn[3] = {}, kt[3] = {}, cn[3] = {}, ct[3] = {};
-    double strongest = 0;
-    const Thinnest* setter = nullptr;
-    bool setter_free = true;
-    double zeta_max = 0;
-    for (int kind = 0; kind < 2; ++kind)
-      for (std::size_t b = 0; b < n_mat; ++b) {
-        const Thinnest& t = thinnest[kind][b];
-        // The free kind includes the particle itself: a particle alone is bounded as if it
-        // met a copy of itself, which keeps the automatic step defined.
-        if (t.count == 0) continue;
-        const auto in = physics::contact_stiffness_inputs(laws[model.material[i] * n_mat + b]);
-        // One pair pressed along a length ℓ of this edge: ℓ of its edge in the partner's
-        // sub-triangle (height >= t.height) and about ℓ of the partner's boundary in its own
-        // (height >= h_i): k = 3p·ℓ·(1/h_partner + 1/h_i).
-        const double per_metre = 3.0 * in.normal * (1.0 / t.height + 1.0 / h_i);
-        // Two free bodies: (u_a − u_b)² <= 2u_a² + 2u_b², so each takes twice the pair's
-        // springs; a wall does not move.
-        const double share = kind == 0 ? 2.0 : 1.0;
-        const double m_eff = kind == 0 ? m * t.heaviest / (m + t.heaviest) : m;
-        if (share * per_metre > strongest) {
-          strongest = share * per_metre;
-          setter = &t;
-          setter_free = kind == 0;
-        }
-        zeta_max = std::max(zeta_max, in.damping_ratio);
-        for (int e = 0; e < 3; ++e) {
-          const double l = edge_length[e];
-          kn[e] = std::max(kn[e], share * per_metre);
-          kt[e] = std::max(kt[e], share * per_metre * in.tangential_ratio);
-          // Partners side by side along the edge, each at least as wide as its smallest
-          // height (and no more than there are): n of them, each with its own dashpot
-          // 2ζ√(m_eff·k), carry Σ√k <= √(n·Σk) of damping. m_eff grows with the
-          // partner's mass: the heaviest one of this kind, or a wall's m.
-          const double partners =
-              std::min(1.0 + std::floor(l / t.height), static_cast<double>(t.count));
-          auto dashpot = [&](double k) {
-            return share * 2.0 * in.damping_ratio * std::sqrt(partners * m_eff * k * l) / l;
-          };
-          cn[e] = std::max(cn[e], dashpot(per_metre));
-          ct[e] = std::max(ct[e], dashpot(per_metre * in.tangential_ratio));
-        }
-      }
-    if (setter == nullptr) continue;  // nothing to meet
-    physics::Sym3<double> springs, dashpots;
-    for (int e = 0; e < 3; ++e) {
-      physics::add_edge_springs(springs, r[e], r[(e + 1) % 3], kn[e], kt[e]);
-      physics::add_edge_springs(dashpots, r[e], r[(e + 1) % 3], cn[e], ct[e]);
-    }
-    const double lambda_k = local * physics::largest_mode(springs, m, model.inertia[i]);
-    const double lambda_c = local * physics::largest_mode(dashpots, m, model.inertia[i]);
-    const double dt = physics::symplectic_euler_limit(lambda_k, lambda_c);
-    if (dt < ts.critical) {
-      ts.critical = dt;
-      ts.limit = {static_cast<std::int64_t>(i), setter->id, setter_free, setter->height, h_i,
-                  zeta_max};
+    const ParticleLimit p = particle_limit(model, i, thinnest, laws, local);
+    if (p.dt < ts.critical) {
+      ts.critical = p.dt;
+      ts.limit = p.limit;
     }
   }
   ts.automatic = !scene.simulation.dt.has_value();
