@@ -19,7 +19,8 @@
 //   --max_n=N         skip sizes above N (e.g. --max_n=1e5 to fit a time budget)
 //   --min_n=N         skip sizes below N
 //   --backends=LIST   cpu,openmp,cuda,cuda-float (default cpu,openmp); cuda-float is the
-//                     GPU in single precision, the others double
+//                     GPU in precision = "float" (the mixed mode: double state, float
+//                     pairs; docs/model.md, "Precision"), the others double
 //   --frames=1        also time one output frame (snapshot) per variant and size
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
 //   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
@@ -173,8 +174,9 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
   state.SetLabel(solver->description() + (stats.empty() ? "" : "; " + stats));
 }
 
-/// The cost of one output frame: the state (9 arrays of n) copied from the solver's
-/// memory into a host Snapshot, without and with the contact network.
+/// The cost of one output frame: the state (6 arrays of n in double in every precision)
+/// and the forces (3 in the precision) copied from the solver's memory into a host
+/// Snapshot, without and with the contact network.
 void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool contacts) {
   const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
   if (!solver) return;
@@ -183,7 +185,7 @@ void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool conta
   const double real = v.precision == tridem::Precision::Float ? 4 : 8;
   using benchmark::Counter;
   state.counters["s_per_frame"] = Counter(1, Counter::kIsIterationInvariantRate | Counter::kInvert);
-  state.counters["state_bytes"] = 9 * real * static_cast<double>(solver->size());
+  state.counters["state_bytes"] = (6 * 8 + 3 * real) * static_cast<double>(solver->size());
   state.counters["contacts"] = static_cast<double>(snap.contacts.size());
   state.counters["triangles"] = static_cast<double>(solver->size());
   state.SetLabel(solver->description());

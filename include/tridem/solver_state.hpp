@@ -2,8 +2,10 @@
 // Everything a solver needs to continue a run exactly: the state a checkpoint stores.
 //
 // The contract every backend keeps (save_state / load_state in solver.hpp):
-//  - Values are the solver's own Real, stored in double. float -> double -> float is
-//    exact, so a float run restarted from its state is bit-identical too.
+//  - Values are the solver's own, stored in double: the state (positions, angles,
+//    velocities) is double in every precision (mixed precision, docs/model.md), and the
+//    slips are the solver's Real (float -> double -> float is exact), so a float run
+//    restarted from its state is bit-identical too.
 //  - Per-particle arrays (x, y, theta, vx, vy, omega) have one entry per particle, in id
 //    order. Forces are not state: each step recomputes them before integrating.
 //  - The contact history is the friction slip of the pairs of the last completed step, as

@@ -47,14 +47,16 @@ void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   const auto n = static_cast<std::int64_t>(n_);
   Real min_x = std::numeric_limits<Real>::max(), min_y = min_x;
   Real max_x = std::numeric_limits<Real>::lowest(), max_y = max_x;
+  double widest = 0;
 #pragma omp parallel for schedule(static) if (parallel) \
-    reduction(min : min_x, min_y) reduction(max : max_x, max_y)
+    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
     min_x = std::min(min_x, b.lo_x[i]);
     min_y = std::min(min_y, b.lo_y[i]);
     max_x = std::max(max_x, b.lo_x[i]);
     max_y = std::max(max_y, b.lo_y[i]);
+    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
   }
   origin_x_ = min_x;
   origin_y_ = min_y;
@@ -62,7 +64,8 @@ void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   const GridFit fit =
       fit_grid(static_cast<double>(max_x) - static_cast<double>(min_x),
                static_cast<double>(max_y) - static_cast<double>(min_y),
-               static_cast<double>(cell_size_), static_cast<double>(4 * n_ + 16));
+               grid_cell_for(static_cast<double>(cell_size_), widest),
+               static_cast<double>(4 * n_ + 16));
   nx_ = fit.nx;
   ny_ = fit.ny;
   grid_cell_ = static_cast<Real>(fit.cell);

@@ -3,7 +3,7 @@
 // and the device alike: whether particle i emits the pair {i, j}, and whether the pair
 // passes the contact test, with or without the bounding-box pre-filter before it. Only the
 // pairs that pass get a force computed.
-#include "physics/geometry.hpp"
+#include "physics/local_frame.hpp"
 #include "tridem/hd.hpp"
 #include "tridem/scene.hpp"
 
@@ -16,15 +16,21 @@ struct ContactFilter {
 };
 
 /// The geometry a contact test reads, structure of arrays: vertices (counter-clockwise)
-/// and bounding boxes of the current step.
+/// relative to their centroid, bounding boxes of the current step, and the centroids in
+/// double (mixed precision: physics/local_frame.hpp).
 template <class Real>
 struct TriangleArrays {
   const Real* x[3];
   const Real* y[3];
   const Real *lo_x, *lo_y, *hi_x, *hi_y;
+  const double *cx, *cy;
 
-  TRIDEM_HD physics::Triangle<Real> triangle(int i) const {
-    return {{{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}}};
+  TRIDEM_HD Vec2d centroid(int i) const { return {cx[i], cy[i]}; }
+  /// Particle i's triangle in the frame whose origin is at `origin` (for a pair: the
+  /// emitter's centroid), as pair_force sees it.
+  TRIDEM_HD physics::Triangle<Real> triangle(int i, Vec2d origin) const {
+    const Vec2<Real> rel[3] = {{x[0][i], y[0][i]}, {x[1][i], y[1][i]}, {x[2][i], y[2][i]}};
+    return physics::triangle_at(physics::offset_from<Real>(origin, centroid(i)), rel);
   }
   TRIDEM_HD physics::Aabb<Real> box(int i) const {
     return {{lo_x[i], lo_y[i]}, {hi_x[i], hi_y[i]}};

@@ -14,23 +14,26 @@
 namespace tridem {
 
 /// Whether emitter i lists the pair {i, j}: the emitter rule, then the contact test. One
-/// per emitter, built once with i's triangle and box (single-domain and decomposition).
+/// per emitter, built once with i's triangle and box (single-domain and decomposition), in
+/// the frame of i's centroid, as the pair's force is computed.
 template <class Real>
 class EmitterTest {
  public:
   EmitterTest(const TriangleArrays<Real>& g, std::int32_t i, const std::uint8_t* small,
               const std::uint8_t* free, ContactFilter filter)
-      : g_(g), i_(i), a_(g.triangle(i)), box_a_(g.box(i)), small_(small), free_(free),
+      : g_(g), i_(i), origin_(g.centroid(i)), a_(g.triangle(i, origin_)), box_a_(g.box(i)),
+        small_(small), free_(free),
         filter_(filter) {}
 
   bool operator()(std::int32_t j) const {
     return emits_pair(i_, j, small_[i_] != 0, small_[j] != 0, free_[i_] != 0, free_[j] != 0) &&
-           passes_contact_test(a_, box_a_, g_.triangle(j), g_.box(j), filter_);
+           passes_contact_test(a_, box_a_, g_.triangle(j, origin_), g_.box(j), filter_);
   }
 
  private:
   const TriangleArrays<Real>& g_;
   std::int32_t i_;
+  Vec2d origin_;
   physics::Triangle<Real> a_;
   physics::Aabb<Real> box_a_;
   const std::uint8_t* small_;

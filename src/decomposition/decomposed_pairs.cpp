@@ -34,7 +34,7 @@ void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
 }
 
 template <class Real>
-void DecomposedPairs<Real>::find(const Real* x, const Real* y, const TriangleArrays<Real>& g,
+void DecomposedPairs<Real>::find(const double* x, const double* y, const TriangleArrays<Real>& g,
                                  bool parallel, PairList& pairs) {
   decomposition_.update({x, y, g.lo_x, g.lo_y, g.hi_x, g.hi_y}, parallel);
   const Decomposition<Real>& d = decomposition_;

@@ -23,7 +23,7 @@ class DecomposedPairs {
 
   /// Brings the decomposition up to date for centroids (x, y) and the geometry (migration,
   /// borders), then fills `pairs` with the pairs that pass the contact test.
-  void find(const Real* x, const Real* y, const TriangleArrays<Real>& geometry, bool parallel,
+  void find(const double* x, const double* y, const TriangleArrays<Real>& geometry, bool parallel,
             PairList& pairs);
 
   const Decomposition<Real>& decomposition() const { return decomposition_; }

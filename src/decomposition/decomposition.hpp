@@ -28,10 +28,11 @@
 
 namespace tridem {
 
-/// Centroids and boxes of every particle at the current step.
+/// Centroids (double in every precision: docs/model.md, "Precision") and boxes of every
+/// particle at the current step.
 template <class Real>
 struct DomainInput {
-  const Real *x, *y;
+  const double *x, *y;
   const Real *lo_x, *lo_y, *hi_x, *hi_y;
 };
 

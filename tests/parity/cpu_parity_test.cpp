@@ -85,6 +85,23 @@ TEST(CpuParity, BboxPrefilterChangesNoResult) {
                          single_domain(s, Backend::Cpu, 200, ContactTest::DirectArea, false));
 }
 
+// Mixed precision far from the origin: a pile of 1 mm grains at (10 km, 10 km), where a
+// float coordinate is resolved to 1 mm, so the float boxes (rounded outward) are two to
+// three grains wide. The grid must still list every touching pair (its cell grows to the
+// widest box: LocalFrame.GridFindsOverlappingBoxesWiderThanItsBaseCell checks that rule
+// on a case built for it). Single-domain with the exact test and no pre-filter tests every
+// pair in the pair's own frame, so any pair the grid missed would change the result.
+TEST(CpuParity, FloatGridFindsEveryContactFarFromOrigin) {
+  Scene s = test::jostling_pile(12, 8);
+  for (TriangleSpec& t : s.triangles)
+    for (Vec2d& v : t.vertices) v = v * 0.01 + Vec2d{1e4, 1e4};
+  const Snapshot grid = test::run_to(s, Backend::Cpu, 600, Precision::Float);
+  s.simulation.bbox_prefilter = false;
+  test::expect_identical(
+      grid, test::run_to(s, Backend::Cpu, 600, Precision::Float, Method::SingleDomain));
+  EXPECT_GT(grid.contacts.size(), 10u) << "the pile must be in contact at the last step";
+}
+
 TEST(CpuParity, FloatStaysCloseToDoubleOverShortRun) {
   const Scene s = test::jostling_pile(8, 5);
   const Snapshot d = test::run_to(s, Backend::Cpu, 50);

@@ -62,9 +62,13 @@ TEST_P(Conservation, CollidingCloudConservesMomentum) {
     solver->snapshot(snap, true);
     contacts += snap.contacts.size();
     const EnergyRow now = compute_energy(snap);
-    EXPECT_NEAR(now.momentum_x, before.momentum_x, 1e-12 * momentum_scale);
-    EXPECT_NEAR(now.momentum_y, before.momentum_y, 1e-12 * momentum_scale);
-    EXPECT_NEAR(now.angular_momentum, before.angular_momentum, 1e-12 * angular_scale);
+    // A pair's forces are equal and opposite exactly, but each particle's sum is rounded
+    // in the pairs' precision before the double integration: in float that leaves about
+    // 2e-11 of the scale after 2000 steps (measured); 1e-10 allowed.
+    const double relative = test::tolerance(GetParam(), 1e-12, 1e-10);
+    EXPECT_NEAR(now.momentum_x, before.momentum_x, relative * momentum_scale);
+    EXPECT_NEAR(now.momentum_y, before.momentum_y, relative * momentum_scale);
+    EXPECT_NEAR(now.angular_momentum, before.angular_momentum, relative * angular_scale);
     kinetic = now.kinetic;
   }
   EXPECT_GT(contacts, 100u) << "the cloud must actually collide";

@@ -28,8 +28,11 @@ double restitution(double damping, double dt, const test::SolverChoice& choice) 
   solver->advance(steps);
   solver->snapshot(snap, false);
   EXPECT_GT(snap.x[1] - snap.x[0], 2.0 / 3.0) << "the triangles must have separated";
-  EXPECT_NEAR(snap.vy[0], 0.0, 1e-9);
-  EXPECT_NEAR(snap.omega[0], 0.0, 1e-9);
+  // A symmetric impact: no sideways motion or spin, to rounding. In float the pair's
+  // forces are rounded to 6e-8 of their size, about 1e3 N/m here over the 2 ms contact:
+  // 2e-7 m/s and rad/s measured, 1e-6 allowed.
+  EXPECT_NEAR(snap.vy[0], 0.0, test::tolerance(choice, 1e-9, 1e-6));
+  EXPECT_NEAR(snap.omega[0], 0.0, test::tolerance(choice, 1e-9, 1e-6));
   return (snap.vx[1] - snap.vx[0]) / 2.0;
 }
 

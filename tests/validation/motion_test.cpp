@@ -70,7 +70,7 @@ TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {
     s.simulation.local_damping = alpha;
     s.triangles.push_back(test::floor_triangle(-1, 1));
     s.triangles.push_back(test::triangle({-0.05, 0.05}, {0.05, 0.05}, {0, 0.12}));
-    const Snapshot snap = test::run_to(s, choice.backend, 20000, Precision::Double, choice.method);
+    const Snapshot snap = test::run_to(s, choice.backend, 20000, choice.precision, choice.method);
     return 0.5 * snap.mass[1] * (snap.vx[1] * snap.vx[1] + snap.vy[1] * snap.vy[1]);
   };
   const double undamped = kinetic_after(0.0), damped = kinetic_after(0.7);

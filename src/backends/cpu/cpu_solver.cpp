@@ -5,6 +5,7 @@
 #include "core/snapshot_fill.hpp"
 
 #include "physics/integrate.hpp"
+#include "physics/local_frame.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
@@ -30,10 +31,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     : n_(model.size()),
       parallel_(parallel),
       method_(config.method),
-      dt_(static_cast<Real>(ts.chosen)),
-      gravity_{static_cast<Real>(scene.simulation.gravity.x),
-               static_cast<Real>(scene.simulation.gravity.y)},
-      local_damping_(static_cast<Real>(scene.simulation.local_damping)),
+      dt_(ts.chosen),
+      gravity_(scene.simulation.gravity),
+      local_damping_(scene.simulation.local_damping),
       penetration_limit_(static_cast<Real>(scene.simulation.max_penetration)),
       limit_(ts),
       n_materials_(static_cast<int>(scene.materials.size())),
@@ -47,8 +47,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].resize(n_);
     offset_y_[k].resize(n_);
-    vert_x_[k].resize(n_);
-    vert_y_[k].resize(n_);
+    rel_x_[k].resize(n_);
+    rel_y_[k].resize(n_);
   }
   mass_.resize(n_);
   inv_mass_.resize(n_);
@@ -56,7 +56,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   half_size_.resize(n_);
   x_.resize(n_);
   y_.resize(n_);
-  theta_.assign(n_, Real(0));
+  theta_.assign(n_, 0.0);
   vx_.resize(n_);
   vy_.resize(n_);
   w_.resize(n_);
@@ -67,14 +67,14 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     }
     const bool free = model.motion[i] == Motion::Free;
     mass_[i] = free ? static_cast<Real>(model.mass[i]) : Real(0);
-    inv_mass_[i] = free ? static_cast<Real>(1.0 / model.mass[i]) : Real(0);
-    inv_inertia_[i] = free ? static_cast<Real>(1.0 / model.inertia[i]) : Real(0);
+    inv_mass_[i] = free ? 1.0 / model.mass[i] : 0.0;
+    inv_inertia_[i] = free ? 1.0 / model.inertia[i] : 0.0;
     half_size_[i] = static_cast<Real>(0.5 * model.longest_edge[i]);
-    x_[i] = static_cast<Real>(model.centroid[i].x);
-    y_[i] = static_cast<Real>(model.centroid[i].y);
-    vx_[i] = static_cast<Real>(model.velocity[i].x);
-    vy_[i] = static_cast<Real>(model.velocity[i].y);
-    w_[i] = static_cast<Real>(model.angular_velocity[i]);
+    x_[i] = model.centroid[i].x;
+    y_[i] = model.centroid[i].y;
+    vx_[i] = model.velocity[i].x;
+    vy_[i] = model.velocity[i].y;
+    w_[i] = model.angular_velocity[i];
   }
   area_ = cast<Real>(model.area);
   material_ = model.material;
@@ -99,7 +99,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
 
 template <class Real>
 std::string CpuSolver<Real>::description() const {
-  const char* real = sizeof(Real) == 8 ? "double" : "float";
+  // float is the mixed mode: double state, float pairs (docs/model.md, "Precision").
+  const char* real = sizeof(Real) == 8 ? "double" : "float (double state)";
   const std::string method = method_description(method_, filter_.test, filter_.bbox_prefilter);
   if (parallel_)
     return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
@@ -122,7 +123,7 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
     ++step_;
-    time_ += static_cast<double>(dt_);
+    time_ += dt_;
   }
 }
 
@@ -131,31 +132,29 @@ void CpuSolver<Real>::update_geometry() {
   const auto n = static_cast<std::int64_t>(n_);
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
-    const Real c = math::cos(theta_[i]), s = math::sin(theta_[i]);
-    Real lx = std::numeric_limits<Real>::max(), ly = lx;
-    Real hx = std::numeric_limits<Real>::lowest(), hy = hx;
+    const Vec2<Real> body_frame[3] = {{offset_x_[0][i], offset_y_[0][i]},
+                                      {offset_x_[1][i], offset_y_[1][i]},
+                                      {offset_x_[2][i], offset_y_[2][i]}};
+    Vec2<Real> rel[3];
+    physics::rotated_offsets(theta_[i], body_frame, rel);
     for (int k = 0; k < 3; ++k) {
-      const Vec2<Real> v = Vec2<Real>{x_[i], y_[i]} +
-                           rotate(Vec2<Real>{offset_x_[k][i], offset_y_[k][i]}, c, s);
-      vert_x_[k][i] = v.x;
-      vert_y_[k][i] = v.y;
-      lx = std::min(lx, v.x);
-      ly = std::min(ly, v.y);
-      hx = std::max(hx, v.x);
-      hy = std::max(hy, v.y);
+      rel_x_[k][i] = rel[k].x;
+      rel_y_[k][i] = rel[k].y;
     }
-    lo_x_[i] = lx;
-    lo_y_[i] = ly;
-    hi_x_[i] = hx;
-    hi_y_[i] = hy;
+    const physics::Aabb<Real> box = physics::outward_box(Vec2d{x_[i], y_[i]}, rel, half_size_[i]);
+    lo_x_[i] = box.lo.x;
+    lo_y_[i] = box.lo.y;
+    hi_x_[i] = box.hi.x;
+    hi_y_[i] = box.hi.y;
   }
 }
 
 template <class Real>
 void CpuSolver<Real>::find_pairs() {
-  const TriangleArrays<Real> geometry{{vert_x_[0].data(), vert_x_[1].data(), vert_x_[2].data()},
-                                      {vert_y_[0].data(), vert_y_[1].data(), vert_y_[2].data()},
-                                      lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()};
+  const TriangleArrays<Real> geometry{{rel_x_[0].data(), rel_x_[1].data(), rel_x_[2].data()},
+                                      {rel_y_[0].data(), rel_y_[1].data(), rel_y_[2].data()},
+                                      lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data(),
+                                      x_.data(), y_.data()};
   if (method_ == Method::SingleDomain)
     single_domain_.find(geometry, parallel_, pairs_);
   else if (decomposed_)
@@ -169,15 +168,12 @@ void CpuSolver<Real>::find_pairs() {
 }
 
 template <class Real>
-physics::Body<Real> CpuSolver<Real>::body(std::int32_t i) const {
-  physics::Body<Real> b;
-  for (int k = 0; k < 3; ++k) b.tri.v[k] = {vert_x_[k][i], vert_y_[k][i]};
-  b.c = {x_[i], y_[i]};
-  b.v = {vx_[i], vy_[i]};
-  b.w = w_[i];
-  b.area = area_[i];
-  b.mass = mass_[i];
-  return b;
+physics::Body<Real> CpuSolver<Real>::body(std::int32_t i, Vec2d origin) const {
+  const Vec2<Real> rel[3] = {{rel_x_[0][i], rel_y_[0][i]},
+                             {rel_x_[1][i], rel_y_[1][i]},
+                             {rel_x_[2][i], rel_y_[2][i]}};
+  return physics::body_at(physics::offset_from<Real>(origin, Vec2d{x_[i], y_[i]}), rel,
+                          Vec2d{vx_[i], vy_[i]}, w_[i], area_[i], mass_[i]);
 }
 
 template <class Real>
@@ -191,7 +187,10 @@ void CpuSolver<Real>::compute_pair_forces() {
     const auto emitter = static_cast<std::int32_t>(e);
     std::int64_t old = old_pairs_.offset[e];
     const std::int64_t old_end = old_pairs_.offset[e + 1];
-    const physics::Body<Real> a = body(emitter);
+    // The pair's frame: origin at the emitter's centroid (physics/local_frame.hpp).
+    const Vec2d origin{x_[e], y_[e]};
+    const physics::Body<Real> a = body(emitter, origin);
+    const auto dt = static_cast<Real>(dt_);
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
       // Both rows are sorted by partner: walk the old one to find this pair's history.
@@ -199,7 +198,7 @@ void CpuSolver<Real>::compute_pair_forces() {
       physics::PairSlip<Real> slip{};
       if (old < old_end && old_pairs_.partner[old] == j) slip = old_slip_[old];
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
-      result_[s] = physics::pair_force(a, body(j), law, dt_, slip);
+      result_[s] = physics::pair_force(a, body(j, origin), law, dt, slip);
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
     }
@@ -239,10 +238,12 @@ void CpuSolver<Real>::accumulate() {
 }
 
 template <class Real>
-physics::Pose<Real> CpuSolver<Real>::advanced_pose(std::size_t i) const {
-  physics::Pose<Real> p{{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
-  physics::advance_body(p, motion_[i] == Motion::Free, {fx_[i], fy_[i]}, torque_[i],
-                        inv_mass_[i], inv_inertia_[i], gravity_, local_damping_, dt_);
+physics::Pose<double> CpuSolver<Real>::advanced_pose(std::size_t i) const {
+  physics::Pose<double> p{{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
+  physics::advance_body(p, motion_[i] == Motion::Free,
+                        Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])},
+                        static_cast<double>(torque_[i]), inv_mass_[i], inv_inertia_[i],
+                        gravity_, local_damping_, dt_);
   return p;
 }
 
@@ -254,19 +255,17 @@ void CpuSolver<Real>::integrate() {
 #pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
   for (std::int64_t i = 0; i < n; ++i) {
     if (motion_[i] != Motion::Free) continue;
-    const physics::Pose<Real> p = advanced_pose(static_cast<std::size_t>(i));
-    if (physics::runaway_step(p, half_size_[i], dt_)) bad = std::min(bad, i);
+    const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
+    if (physics::runaway_step(p, static_cast<double>(half_size_[i]), dt_)) bad = std::min(bad, i);
   }
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);
-    const physics::Pose<Real> p = advanced_pose(i);
-    throw RunError(runaway_message(step_ + 1, bad, static_cast<double>(x_[i]),
-                                   static_cast<double>(y_[i]), static_cast<double>(norm(p.v)),
-                                   static_cast<double>(dt_), limit_));
+    const physics::Pose<double> p = advanced_pose(i);
+    throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
   }
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
-    const physics::Pose<Real> p = advanced_pose(static_cast<std::size_t>(i));
+    const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
@@ -291,10 +290,10 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
     out.fx[i] = fx_[i];
     out.fy[i] = fy_[i];
     out.torque[i] = torque_[i];
-    const Vec2<Real> off[3] = {{offset_x_[0][i], offset_y_[0][i]},
-                               {offset_x_[1][i], offset_y_[1][i]},
-                               {offset_x_[2][i], offset_y_[2][i]}};
-    set_vertices(out, i, physics::place(Vec2<Real>{x_[i], y_[i]}, theta_[i], off));
+    const Vec2d off[3] = {{offset_x_[0][i], offset_y_[0][i]},
+                          {offset_x_[1][i], offset_y_[1][i]},
+                          {offset_x_[2][i], offset_y_[2][i]}};
+    set_vertices(out, i, physics::place(Vec2d{x_[i], y_[i]}, theta_[i], off));
     out.mass[i] = inv_mass_[i] > 0 ? 1.0 / inv_mass_[i] : 0.0;
     out.inertia[i] = inv_inertia_[i] > 0 ? 1.0 / inv_inertia_[i] : 0.0;
     out.material[i] = material_[i];
@@ -303,7 +302,8 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
-  append_contacts(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), result_.data());
+  append_contacts(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), result_.data(),
+                  x_.data(), y_.data());
 }
 
 template class CpuSolver<float>;

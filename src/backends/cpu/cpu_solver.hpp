@@ -29,7 +29,7 @@ class CpuSolver final : public Solver {
   void load_state(const SolverState& in) override;
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
-  double dt() const override { return static_cast<double>(dt_); }
+  double dt() const override { return dt_; }
   std::size_t size() const override { return n_; }
   std::string description() const override;
   std::string statistics() const override;
@@ -42,32 +42,36 @@ class CpuSolver final : public Solver {
   void accumulate();
   void integrate();
 
-  physics::Body<Real> body(std::int32_t i) const;
-  physics::Pose<Real> advanced_pose(std::size_t i) const;
+  /// Body i as pair_force sees it, in the frame whose origin is at `origin`.
+  physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
+  physics::Pose<double> advanced_pose(std::size_t i) const;
 
   std::size_t n_;
   bool parallel_;
   Method method_;
-  Real dt_;
-  Vec2<Real> gravity_;
-  Real local_damping_;
+  // Mixed precision (docs/model.md, "Precision"): the state and its integration are
+  // double in every precision; Real is what pairs and their forces are computed in.
+  double dt_;
+  Vec2d gravity_;
+  double local_damping_;
   Real penetration_limit_;  ///< largest PairForce::depth accepted
   TimeStep limit_;          ///< dt_crit and what sets it, for the blow-up messages
   std::int64_t step_ = 0;
   double time_ = 0;
 
-  // Fixed per particle.
+  // Fixed per particle: body-frame vertex offsets, mass terms.
   std::vector<Real> offset_x_[3], offset_y_[3];
-  std::vector<Real> mass_, inv_mass_, inv_inertia_, area_, half_size_;
+  std::vector<Real> mass_, area_, half_size_;
+  std::vector<double> inv_mass_, inv_inertia_;
   std::vector<int> material_;
   std::vector<Motion> motion_;
   std::vector<physics::ContactLaw<Real>> laws_;
   int n_materials_;
   // State.
-  std::vector<Real> x_, y_, theta_, vx_, vy_, w_;
+  std::vector<double> x_, y_, theta_, vx_, vy_, w_;
   std::vector<Real> fx_, fy_, torque_;
-  // Geometry of the current step.
-  std::vector<Real> vert_x_[3], vert_y_[3];
+  // Geometry of the current step: vertices relative to the centroid, absolute boxes.
+  std::vector<Real> rel_x_[3], rel_y_[3];
   std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   // Pairs of this step and the last, with their contact history. The method picks the
   // finder: the cell grid and all-pairs list box-overlapping pairs, single-domain only

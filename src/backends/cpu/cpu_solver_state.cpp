@@ -26,14 +26,13 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, description());
   step_ = in.step;
   time_ = in.time;
-  for (std::size_t i = 0; i < n_; ++i) {
-    x_[i] = static_cast<Real>(in.x[i]);
-    y_[i] = static_cast<Real>(in.y[i]);
-    theta_[i] = static_cast<Real>(in.theta[i]);
-    vx_[i] = static_cast<Real>(in.vx[i]);
-    vy_[i] = static_cast<Real>(in.vy[i]);
-    w_[i] = static_cast<Real>(in.omega[i]);
-  }
+  // The state is double in every precision: copied exactly.
+  x_ = in.x;
+  y_ = in.y;
+  theta_ = in.theta;
+  vx_ = in.vx;
+  vy_ = in.vy;
+  w_ = in.omega;
   // Forces are recomputed by the next step; until then nothing stale is shown.
   std::fill(fx_.begin(), fx_.end(), Real(0));
   std::fill(fy_.begin(), fy_.end(), Real(0));

@@ -20,13 +20,14 @@ struct AssignmentView {
   int domains;
   DomainMap map;  ///< device pointers
   const std::uint8_t* small;
-  const Real *x, *y, *lo_x, *lo_y, *hi_x, *hi_y;
+  const double *x, *y;  ///< centroids: double in every precision
+  const Real *lo_x, *lo_y, *hi_x, *hi_y;
 
   __device__ std::int64_t cell_row(int i) const {
-    return decomposition_cell(static_cast<double>(y[i]), map.origin_y, map.cell);
+    return decomposition_cell(y[i], map.origin_y, map.cell);
   }
   __device__ std::int64_t cell_column(int i) const {
-    return decomposition_cell(static_cast<double>(x[i]), map.origin_x, map.cell);
+    return decomposition_cell(x[i], map.origin_x, map.cell);
   }
 };
 

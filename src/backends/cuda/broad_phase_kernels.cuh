@@ -20,7 +20,7 @@ template <class Real>
 __global__ void init_bounds_kernel(CornerBounds<Real>* b) {
   using B = OrderedBits<Real>;
   b->min_x = b->min_y = ~typename B::Bits(0);
-  b->max_x = b->max_y = 0;
+  b->max_x = b->max_y = b->widest = 0;
 }
 
 /// Build boxes from the current ones, and the extent of the small particles' corners.
@@ -30,15 +30,17 @@ __global__ void grow_boxes_kernel(ParticleArrays<Real> p, const std::uint8_t* is
   using B = OrderedBits<Real>;
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   bool small = false;
-  Real x = 0, y = 0;
+  Real x = 0, y = 0, wide = 0;
   if (i < p.n) {
     x = p.lo_x[i] - margin;
     y = p.lo_y[i] - margin;
+    const Real hx = p.hi_x[i] + margin, hy = p.hi_y[i] + margin;
     p.build_lo_x[i] = x;
     p.build_lo_y[i] = y;
-    p.build_hi_x[i] = p.hi_x[i] + margin;
-    p.build_hi_y[i] = p.hi_y[i] + margin;
+    p.build_hi_x[i] = hx;
+    p.build_hi_y[i] = hy;
     small = is_small[i] != 0;
+    wide = static_cast<Real>(box_width(x, y, hx, hy));
   }
   // Warp-level extent first, then one atomic per warp and bound.
   const unsigned mask = __ballot_sync(0xffffffffu, small);
@@ -47,7 +49,10 @@ __global__ void grow_boxes_kernel(ParticleArrays<Real> p, const std::uint8_t* is
   typename B::Bits lo_y = small ? B::encode(y) : ~typename B::Bits(0);
   typename B::Bits hi_x = small ? B::encode(x) : 0;
   typename B::Bits hi_y = small ? B::encode(y) : 0;
+  typename B::Bits widest = small ? B::encode(wide) : 0;
   for (int d = 16; d > 0; d /= 2) {
+    const auto ow = __shfl_down_sync(0xffffffffu, widest, d);
+    widest = ow > widest ? ow : widest;
     const auto ox = __shfl_down_sync(0xffffffffu, lo_x, d);
     const auto oy = __shfl_down_sync(0xffffffffu, lo_y, d);
     const auto px = __shfl_down_sync(0xffffffffu, hi_x, d);
@@ -62,11 +67,12 @@ __global__ void grow_boxes_kernel(ParticleArrays<Real> p, const std::uint8_t* is
     atomicMin(&b->min_y, lo_y);
     atomicMax(&b->max_x, hi_x);
     atomicMax(&b->max_y, hi_y);
+    atomicMax(&b->widest, widest);
   }
 }
 
-/// The grid over the corners, by the CPU's rule (fit_grid). Resets the bounds for the next
-/// build.
+/// The grid over the corners, by the CPU's rule (fit_grid, cells no narrower than the widest
+/// build box). Resets the bounds for the next build.
 template <class Real>
 __global__ void grid_kernel(CornerBounds<Real>* b, Real base_cell, long long max_cells,
                             GridParams<Real>* grid) {
@@ -75,11 +81,13 @@ __global__ void grid_kernel(CornerBounds<Real>* b, Real base_cell, long long max
   const Real max_x = B::decode(b->max_x), max_y = B::decode(b->max_y);
   const GridFit fit = fit_grid(static_cast<double>(max_x) - static_cast<double>(min_x),
                                static_cast<double>(max_y) - static_cast<double>(min_y),
-                               static_cast<double>(base_cell), static_cast<double>(max_cells));
+                               grid_cell_for(static_cast<double>(base_cell),
+                                             static_cast<double>(B::decode(b->widest))),
+                               static_cast<double>(max_cells));
   *grid = {min_x, min_y, static_cast<Real>(fit.cell), static_cast<int>(fit.nx),
            static_cast<int>(fit.ny)};
   b->min_x = b->min_y = ~typename B::Bits(0);
-  b->max_x = b->max_y = 0;
+  b->max_x = b->max_y = b->widest = 0;
 }
 
 /// Cell of each particle (large ones get `beyond`, after every cell) and its index.

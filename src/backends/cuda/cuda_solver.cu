@@ -60,11 +60,10 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
                    ": use precision = \"float\", fewer particles, or backend = \"openmp\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
 
-  params_.dt = static_cast<Real>(ts.chosen);
+  params_.dt = ts.chosen;
   limit_ = ts;
-  params_.gravity = {static_cast<Real>(scene.simulation.gravity.x),
-                     static_cast<Real>(scene.simulation.gravity.y)};
-  params_.local_damping = static_cast<Real>(scene.simulation.local_damping);
+  params_.gravity = scene.simulation.gravity;
+  params_.local_damping = scene.simulation.local_damping;
   params_.n_materials = static_cast<int>(scene.materials.size());
   params_.max_depth = static_cast<Real>(scene.simulation.max_penetration);
   std::vector<physics::ContactLaw<Real>> laws;
@@ -86,6 +85,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   status_.allocate(1);
   host_status_.allocate(1);
   staging_.allocate(kStateArrays * n_);
+  force_staging_.allocate(kForceArrays * n_);
   update_geometry();
 }
 
@@ -96,7 +96,8 @@ CudaSolver<Real>::~CudaSolver() {
 
 template <class Real>
 void CudaSolver<Real>::upload_model(const ParticleModel& model) {
-  std::vector<Real> ox[3], oy[3], inv_mass(n_), inv_inertia(n_), mass(n_), half(n_);
+  std::vector<Real> ox[3], oy[3], mass(n_), half(n_);
+  std::vector<double> inv_mass(n_), inv_inertia(n_);
   std::vector<std::uint8_t> free(n_);
   host_offsets_.resize(3 * n_);
   host_mass_.resize(n_);
@@ -113,12 +114,12 @@ void CudaSolver<Real>::upload_model(const ParticleModel& model) {
     }
     free[i] = model.motion[i] == Motion::Free;
     mass[i] = free[i] ? static_cast<Real>(model.mass[i]) : Real(0);
-    inv_mass[i] = free[i] ? static_cast<Real>(1.0 / model.mass[i]) : Real(0);
-    inv_inertia[i] = free[i] ? static_cast<Real>(1.0 / model.inertia[i]) : Real(0);
+    inv_mass[i] = free[i] ? 1.0 / model.mass[i] : 0.0;
+    inv_inertia[i] = free[i] ? 1.0 / model.inertia[i] : 0.0;
     half[i] = static_cast<Real>(0.5 * model.longest_edge[i]);
-    // What a snapshot reports, as the CPU solver does: 1/(1/m) in the solver's precision.
-    host_mass_[i] = inv_mass[i] > 0 ? 1.0 / static_cast<double>(inv_mass[i]) : 0.0;
-    host_inertia_[i] = inv_inertia[i] > 0 ? 1.0 / static_cast<double>(inv_inertia[i]) : 0.0;
+    // What a snapshot reports, as the CPU solver does: 1/(1/m).
+    host_mass_[i] = inv_mass[i] > 0 ? 1.0 / inv_mass[i] : 0.0;
+    host_inertia_[i] = inv_inertia[i] > 0 ? 1.0 / inv_inertia[i] : 0.0;
   }
   for (int k = 0; k < 3; ++k) {
     offset_x_[k].upload(ox[k]);
@@ -134,24 +135,25 @@ void CudaSolver<Real>::upload_model(const ParticleModel& model) {
   host_material_ = model.material;
   host_motion_ = model.motion;
 
-  std::vector<Real> x(n_), y(n_), vx(n_), vy(n_), w(n_);
+  std::vector<double> x(n_), y(n_), vx(n_), vy(n_), w(n_);
   for (std::size_t i = 0; i < n_; ++i) {
-    x[i] = static_cast<Real>(model.centroid[i].x);
-    y[i] = static_cast<Real>(model.centroid[i].y);
-    vx[i] = static_cast<Real>(model.velocity[i].x);
-    vy[i] = static_cast<Real>(model.velocity[i].y);
-    w[i] = static_cast<Real>(model.angular_velocity[i]);
+    x[i] = model.centroid[i].x;
+    y[i] = model.centroid[i].y;
+    vx[i] = model.velocity[i].x;
+    vy[i] = model.velocity[i].y;
+    w[i] = model.angular_velocity[i];
   }
   x_.upload(x);
   y_.upload(y);
   vx_.upload(vx);
   vy_.upload(vy);
   w_.upload(w);
+  theta_.upload(std::vector<double>(n_, 0.0));
   const std::vector<Real> zeros(n_, Real(0));
-  for (auto* b : {&theta_, &fx_, &fy_, &torque_}) b->upload(zeros);
+  for (auto* b : {&fx_, &fy_, &torque_}) b->upload(zeros);
   for (int k = 0; k < 3; ++k) {
-    vert_x_[k].allocate(n_);
-    vert_y_[k].allocate(n_);
+    rel_x_[k].allocate(n_);
+    rel_y_[k].allocate(n_);
   }
   for (auto* b : {&lo_x_, &lo_y_, &hi_x_, &hi_y_}) b->allocate(n_);
   // Until a grid build sets them, the build boxes are the whole plane. A single-domain
@@ -171,8 +173,8 @@ ParticleArrays<Real> CudaSolver<Real>::arrays() const {
   for (int k = 0; k < 3; ++k) {
     p.offset_x[k] = offset_x_[k].data();
     p.offset_y[k] = offset_y_[k].data();
-    p.vert_x[k] = vert_x_[k].data();
-    p.vert_y[k] = vert_y_[k].data();
+    p.rel_x[k] = rel_x_[k].data();
+    p.rel_y[k] = rel_y_[k].data();
   }
   p.inv_mass = inv_mass_.data();
   p.inv_inertia = inv_inertia_.data();
@@ -247,7 +249,7 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
     if (host->bad != INT_MAX) report_runaway(host->bad);
     rebuild_ = host->rebuild != 0;
     ++step_;
-    time_ += static_cast<double>(params_.dt);
+    time_ += params_.dt;
   }
 }
 
@@ -255,19 +257,22 @@ template <class Real>
 void CudaSolver<Real>::report_runaway(int i) const {
   // The state on the GPU is still the last good one; redo the failed step of particle i on
   // the host, with the same physics, to say how fast it would have gone.
-  Real v[kStateArrays];
+  double v[kStateArrays];
+  Real f[kForceArrays];
   const auto arrays = state_buffers();
+  const auto forces = force_buffers();
   for (int k = 0; k < kStateArrays; ++k)
-    TRIDEM_CUDA_CHECK(cudaMemcpy(&v[k], arrays[k]->data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
-  Real inv_mass, inv_inertia;
-  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_mass, inv_mass_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
-  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_inertia, inv_inertia_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
-  physics::Pose<Real> pose{{v[0], v[1]}, v[2], {v[3], v[4]}, v[5]};
-  physics::advance_body(pose, true, Vec2<Real>{v[6], v[7]}, v[8], inv_mass, inv_inertia,
-                        params_.gravity, params_.local_damping, params_.dt);
-  throw RunError(runaway_message(step_ + 1, i, static_cast<double>(v[0]),
-                                 static_cast<double>(v[1]), static_cast<double>(norm(pose.v)),
-                                 static_cast<double>(params_.dt), limit_));
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&v[k], arrays[k]->data() + i, sizeof(double), cudaMemcpyDeviceToHost));
+  for (int k = 0; k < kForceArrays; ++k)
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&f[k], forces[k]->data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
+  double inv_mass, inv_inertia;
+  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_mass, inv_mass_.data() + i, sizeof(double), cudaMemcpyDeviceToHost));
+  TRIDEM_CUDA_CHECK(cudaMemcpy(&inv_inertia, inv_inertia_.data() + i, sizeof(double), cudaMemcpyDeviceToHost));
+  physics::Pose<double> pose{{v[0], v[1]}, v[2], {v[3], v[4]}, v[5]};
+  physics::advance_body(pose, true, Vec2d{static_cast<double>(f[0]), static_cast<double>(f[1])},
+                        static_cast<double>(f[2]), inv_mass, inv_inertia, params_.gravity,
+                        params_.local_damping, params_.dt);
+  throw RunError(runaway_message(step_ + 1, i, v[0], v[1], norm(pose.v), params_.dt, limit_));
 }
 
 template <class Real>
@@ -280,10 +285,10 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
   while (!(result[s].depth > params_.max_depth)) ++s;
   const int j = partner[s];
   auto position = [this](int i) {
-    Real xy[2];
-    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy[0], x_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
-    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy[1], y_.data() + i, sizeof(Real), cudaMemcpyDeviceToHost));
-    return Vec2d{static_cast<double>(xy[0]), static_cast<double>(xy[1])};
+    Vec2d xy;
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy.x, x_.data() + i, sizeof(double), cudaMemcpyDeviceToHost));
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&xy.y, y_.data() + i, sizeof(double), cudaMemcpyDeviceToHost));
+    return xy;
   };
   const Vec2d a = position(emitter), b = position(j);
   const DeepPair pair{emitter, j, a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
@@ -302,24 +307,31 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   }
   const auto arrays = state_buffers();
   for (int k = 0; k < kStateArrays; ++k)
-    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(staging_.data() + k * n, arrays[k]->data(), n * sizeof(Real),
-                                      cudaMemcpyDeviceToHost, stream_));
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(staging_.data() + k * n, arrays[k]->data(),
+                                      n * sizeof(double), cudaMemcpyDeviceToHost, stream_));
+  const auto forces = force_buffers();
+  for (int k = 0; k < kForceArrays; ++k)
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(force_staging_.data() + k * n, forces[k]->data(),
+                                      n * sizeof(Real), cudaMemcpyDeviceToHost, stream_));
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   out.step = step_;
   out.time = time_;
   out.resize(n);
-  std::vector<double>* fields[kStateArrays] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy,
-                                    &out.omega, &out.fx, &out.fy, &out.torque};
-  for (int k = 0; k < kStateArrays; ++k) {
-    const Real* from = staging_.data() + k * n;
-    std::vector<double>& to = *fields[k];
+  std::vector<double>* fields[kStateArrays] = {&out.x, &out.y, &out.theta,
+                                               &out.vx, &out.vy, &out.omega};
+  for (int k = 0; k < kStateArrays; ++k)
+    fields[k]->assign(staging_.data() + k * n, staging_.data() + (k + 1) * n);
+  std::vector<double>* force_fields[kForceArrays] = {&out.fx, &out.fy, &out.torque};
+  for (int k = 0; k < kForceArrays; ++k) {
+    const Real* from = force_staging_.data() + k * n;
+    std::vector<double>& to = *force_fields[k];
     for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<double>(from[i]);
   }
-  const Real* x = staging_.data();
-  const Real* y = x + n;
-  const Real* theta = y + n;
   for (std::size_t i = 0; i < n; ++i) {
-    set_vertices(out, i, physics::place(Vec2<Real>{x[i], y[i]}, theta[i], &host_offsets_[3 * i]));
+    const Vec2d off[3] = {{host_offsets_[3 * i].x, host_offsets_[3 * i].y},
+                          {host_offsets_[3 * i + 1].x, host_offsets_[3 * i + 1].y},
+                          {host_offsets_[3 * i + 2].x, host_offsets_[3 * i + 2].y}};
+    set_vertices(out, i, physics::place(Vec2d{out.x[i], out.y[i]}, out.theta[i], off));
   }
   out.mass = host_mass_;
   out.inertia = host_inertia_;
@@ -330,14 +342,16 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   std::vector<int> offset, partner;
   std::vector<physics::PairForce<Real>> result;
   pairs_->download(offset, partner, nullptr, &result);
-  append_contacts(out, n, offset.data(), partner.data(), result.data());
+  append_contacts(out, n, offset.data(), partner.data(), result.data(), out.x.data(),
+                  out.y.data());
 }
 
 template <class Real>
 std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
-  return "cuda (" + device_name_ + "), " + (sizeof(Real) == 8 ? "double" : "float") + ", " +
+  return "cuda (" + device_name_ + "), " +
+         (sizeof(Real) == 8 ? "double" : "float (double state)") + ", " +
          method_description(method_, filter_.test, filter_.bbox_prefilter) +
          (pairs_->single_step() || decomposed_ ? std::string(", list rebuilt every step")
                                                : std::string(skin));
@@ -399,10 +413,11 @@ namespace {
 
 template <class Real>
 std::size_t bytes_for(std::size_t n, std::size_t pairs) {
-  // Per particle: 34 reals (offsets, mass terms, state, forces, vertices, two boxes), flags
-  // and material, the grid (keys, indices, 4 cells of start and end), the row offsets
-  // (new, old, reverse, counts); 9 reals of pinned host staging are not GPU memory.
-  const std::size_t per_particle = 34 * sizeof(Real) + 4 + 2 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
+  // Per particle: 26 reals (offsets, mass terms, forces, vertices, two boxes) and 8
+  // doubles (state, inverse mass and inertia), flags and material, the grid (keys,
+  // indices, 4 cells of start and end), the row offsets (new, old, reverse, counts);
+  // pinned host staging is not GPU memory.
+  const std::size_t per_particle = 26 * sizeof(Real) + 8 * 8 + 4 + 2 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
   // Per pair: partner and slip twice (new and old list), emitter, slot id, result,
   // reverse sort keys and slots, and CUB's sort scratch (keys and values).
   const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +

@@ -32,7 +32,7 @@ class CudaSolver final : public Solver {
   void snapshot(Snapshot& out, bool with_contacts) const override;
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
-  double dt() const override { return static_cast<double>(params_.dt); }
+  double dt() const override { return params_.dt; }
   std::size_t size() const override { return n_; }
   std::string description() const override;
   std::string statistics() const override;
@@ -45,10 +45,14 @@ class CudaSolver final : public Solver {
   void update_geometry();
   [[noreturn]] void report_runaway(int particle) const;
   [[noreturn]] void report_penetration(int emitter) const;
-  /// What a snapshot copies back, in Snapshot's order: position, angle, velocities, forces.
-  static constexpr int kStateArrays = 9;
-  std::array<const DeviceBuffer<Real>*, kStateArrays> state_buffers() const {
-    return {&x_, &y_, &theta_, &vx_, &vy_, &w_, &fx_, &fy_, &torque_};
+  /// What a snapshot copies back, in Snapshot's order: position, angle, velocities (the
+  /// state, double in every precision), then forces (Real).
+  static constexpr int kStateArrays = 6, kForceArrays = 3;
+  std::array<const DeviceBuffer<double>*, kStateArrays> state_buffers() const {
+    return {&x_, &y_, &theta_, &vx_, &vy_, &w_};
+  }
+  std::array<const DeviceBuffer<Real>*, kForceArrays> force_buffers() const {
+    return {&fx_, &fy_, &torque_};
   }
 
   std::size_t n_;
@@ -65,7 +69,8 @@ class CudaSolver final : public Solver {
 
   // Fixed per particle: device and the host copies a snapshot needs.
   DeviceBuffer<Real> offset_x_[3], offset_y_[3];
-  DeviceBuffer<Real> inv_mass_, inv_inertia_, mass_, area_, half_size_;
+  DeviceBuffer<Real> mass_, area_, half_size_;
+  DeviceBuffer<double> inv_mass_, inv_inertia_;
   DeviceBuffer<int> material_;
   DeviceBuffer<std::uint8_t> free_;
   DeviceBuffer<physics::ContactLaw<Real>> laws_;
@@ -73,9 +78,10 @@ class CudaSolver final : public Solver {
   std::vector<double> host_mass_, host_inertia_;
   std::vector<int> host_material_;
   std::vector<Motion> host_motion_;
-  // State, forces, geometry.
-  DeviceBuffer<Real> x_, y_, theta_, vx_, vy_, w_, fx_, fy_, torque_;
-  DeviceBuffer<Real> vert_x_[3], vert_y_[3];
+  // State (double in every precision), forces, geometry (vertices about the centroid).
+  DeviceBuffer<double> x_, y_, theta_, vx_, vy_, w_;
+  DeviceBuffer<Real> fx_, fy_, torque_;
+  DeviceBuffer<Real> rel_x_[3], rel_y_[3];
   DeviceBuffer<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   DeviceBuffer<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
   std::unique_ptr<PairListBuilder<Real>> pairs_;
@@ -83,7 +89,8 @@ class CudaSolver final : public Solver {
   std::unique_ptr<DecomposedRows<Real>> decomposed_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
-  mutable PinnedBuffer<Real> staging_;  ///< the state_buffers() a snapshot copies
+  mutable PinnedBuffer<double> staging_;       ///< the state_buffers() a snapshot copies
+  mutable PinnedBuffer<Real> force_staging_;   ///< and its force_buffers()
 };
 
 }  // namespace tridem::cuda

@@ -13,12 +13,11 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   out.step = step_;
   out.time = time_;
-  std::vector<Real> values(n_);
   std::vector<double>* fields[] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy, &out.omega};
   const auto buffers = state_buffers();
-  for (int k = 0; k < 6; ++k) {
-    buffers[k]->download(values);
-    fields[k]->assign(values.begin(), values.end());
+  for (int k = 0; k < kStateArrays; ++k) {
+    fields[k]->resize(n_);  // download() copies as many values as the host vector holds
+    buffers[k]->download(*fields[k]);
   }
   std::vector<int> offset, partner;
   std::vector<physics::PairSlip<Real>> slip;
@@ -31,9 +30,8 @@ void CudaSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, description());
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   const std::vector<double>* fields[] = {&in.x, &in.y, &in.theta, &in.vx, &in.vy, &in.omega};
-  DeviceBuffer<Real>* buffers[] = {&x_, &y_, &theta_, &vx_, &vy_, &w_};
-  for (int k = 0; k < 6; ++k)
-    buffers[k]->upload(std::vector<Real>(fields[k]->begin(), fields[k]->end()));
+  DeviceBuffer<double>* buffers[] = {&x_, &y_, &theta_, &vx_, &vy_, &w_};
+  for (int k = 0; k < kStateArrays; ++k) buffers[k]->upload(*fields[k]);
   // Forces are recomputed by the next step; until then nothing stale is shown.
   const std::vector<Real> zeros(n_, Real(0));
   for (auto* b : {&fx_, &fy_, &torque_}) b->upload(zeros);

@@ -37,23 +37,32 @@ DecomposedRows<Real>::DecomposedRows(const SimulationSettings& settings,
   for (auto kernel : {domain_rows_kernel<Real, false>, domain_rows_kernel<Real, true>})
     TRIDEM_CUDA_CHECK(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                            static_cast<int>(shared_bytes_)));
-  state_.allocate(6 * n_);
+  centroids_.allocate(2 * n_);
+  boxes_.allocate(4 * n_);
   large_.upload(decomposition_.large());
 }
 
 template <class Real>
 void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p) {
-  const Real* from[6] = {p.x, p.y, p.lo_x, p.lo_y, p.hi_x, p.hi_y};
-  Real* host[6];
-  for (int a = 0; a < 6; ++a) {
-    host[a] = state_.data() + static_cast<std::size_t>(a) * n_;
+  const double* centroid[2] = {p.x, p.y};
+  double* host_c[2];
+  for (int a = 0; a < 2; ++a) {
+    host_c[a] = centroids_.data() + static_cast<std::size_t>(a) * n_;
     if (n_ > 0)
-      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host[a], from[a], n_ * sizeof(Real),
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_c[a], centroid[a], n_ * sizeof(double),
+                                        cudaMemcpyDeviceToHost, stream_));
+  }
+  const Real* box[4] = {p.lo_x, p.lo_y, p.hi_x, p.hi_y};
+  Real* host[4];
+  for (int a = 0; a < 4; ++a) {
+    host[a] = boxes_.data() + static_cast<std::size_t>(a) * n_;
+    if (n_ > 0)
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host[a], box[a], n_ * sizeof(Real),
                                         cudaMemcpyDeviceToHost, stream_));
   }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   // OpenMP on the host; the result does not depend on it.
-  decomposition_.update({host[0], host[1], host[2], host[3], host[4], host[5]}, true);
+  decomposition_.update({host_c[0], host_c[1], host[0], host[1], host[2], host[3]}, true);
   assignment_.take_from_host(decomposition_);
 }
 

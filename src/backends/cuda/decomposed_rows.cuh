@@ -42,7 +42,8 @@ class DecomposedRows {
   std::size_t n_;
   std::size_t shared_bytes_;
   std::int64_t builds_ = 0;
-  PinnedBuffer<Real> state_;  ///< centroids and boxes for the host, 6 arrays of n
+  PinnedBuffer<double> centroids_;  ///< for the host, 2 arrays of n
+  PinnedBuffer<Real> boxes_;        ///< for the host, 4 arrays of n
   DeviceBuffer<int> large_;
 };
 

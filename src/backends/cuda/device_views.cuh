@@ -14,19 +14,19 @@ struct ParticleArrays {
   // Fixed per particle.
   const Real* offset_x[3];
   const Real* offset_y[3];
-  const Real* inv_mass;
-  const Real* inv_inertia;
+  const double* inv_mass;     ///< the integration is double in every precision
+  const double* inv_inertia;
   const Real* mass;  ///< 0 for bodies moved by prescription
   const Real* area;
   const Real* half_size;
   const int* material;
   const std::uint8_t* free;   ///< 1 for bodies moved by forces
-  // State.
-  Real *x, *y, *theta, *vx, *vy, *w;
+  // State: double in every precision (docs/model.md, "Precision").
+  double *x, *y, *theta, *vx, *vy, *w;
   Real *fx, *fy, *torque;
-  // Geometry of the current state: vertices and bounding box.
-  Real* vert_x[3];
-  Real* vert_y[3];
+  // Geometry of the current state: vertices relative to the centroid, bounding box.
+  Real* rel_x[3];
+  Real* rel_y[3];
   Real *lo_x, *lo_y, *hi_x, *hi_y;
   // The boxes of the last pair-list build, grown by the skin: while every current box lies
   // inside its build box, the list holds every pair whose boxes overlap.
@@ -50,9 +50,9 @@ struct PairArrays {
 
 template <class Real>
 struct StepParams {
-  Real dt;
-  Vec2<Real> gravity;
-  Real local_damping;
+  double dt;              ///< the integration's; pairs take it rounded to Real
+  Vec2d gravity;
+  double local_damping;
   const physics::ContactLaw<Real>* laws;  ///< row-major by material pair
   int n_materials;
   Real max_depth;  ///< deepest PairForce::depth accepted ([simulation] max_penetration)

@@ -29,9 +29,11 @@ struct DomainLists {
 
 constexpr int kDomainThreads = 128;
 
-/// A block's shared memory: vertices, boxes, index and flag of each staged particle.
+/// A block's shared memory: centroid (double), vertices about it, box, index and flag of
+/// each staged particle.
 template <class Real>
 struct StagedParticles {
+  double *cx, *cy;
   Real* x[3];
   Real* y[3];
   Real *lo_x, *lo_y, *hi_x, *hi_y;
@@ -39,12 +41,15 @@ struct StagedParticles {
   std::uint8_t* free;
 
   static std::size_t bytes(int capacity) {
-    return static_cast<std::size_t>(capacity) * (10 * sizeof(Real) + sizeof(int) + 1);
+    return static_cast<std::size_t>(capacity) *
+           (2 * sizeof(double) + 10 * sizeof(Real) + sizeof(int) + 1);
   }
-  /// Reals first, then ints, then flags: each array aligned for its type.
+  /// Doubles first, then reals, then ints, then flags: each array aligned for its type.
   __device__ static StagedParticles carve(unsigned char* raw, int capacity) {
     StagedParticles s;
-    Real* r = reinterpret_cast<Real*>(raw);
+    s.cx = reinterpret_cast<double*>(raw);
+    s.cy = s.cx + capacity;
+    Real* r = reinterpret_cast<Real*>(s.cy + capacity);
     for (int k = 0; k < 3; ++k) {
       s.x[k] = r + k * capacity;
       s.y[k] = r + (3 + k) * capacity;
@@ -59,16 +64,16 @@ struct StagedParticles {
   }
   /// The staged particles read as the global arrays are, slot for particle index.
   __device__ TriangleArrays<Real> view() const {
-    return {{x[0], x[1], x[2]}, {y[0], y[1], y[2]}, lo_x, lo_y, hi_x, hi_y};
+    return {{x[0], x[1], x[2]}, {y[0], y[1], y[2]}, lo_x, lo_y, hi_x, hi_y, cx, cy};
   }
 };
 
 /// The current geometry of every particle.
 template <class Real>
 __device__ inline TriangleArrays<Real> geometry_of(const ParticleArrays<Real>& p) {
-  return {{p.vert_x[0], p.vert_x[1], p.vert_x[2]},
-          {p.vert_y[0], p.vert_y[1], p.vert_y[2]},
-          p.lo_x, p.lo_y, p.hi_x, p.hi_y};
+  return {{p.rel_x[0], p.rel_x[1], p.rel_x[2]},
+          {p.rel_y[0], p.rel_y[1], p.rel_y[2]},
+          p.lo_x, p.lo_y, p.hi_x, p.hi_y, p.x, p.y};
 }
 
 /// kFill = false: row_count[i] for every owned emitter i; true: its row, sorted, with its
@@ -86,9 +91,11 @@ __global__ void __launch_bounds__(kDomainThreads)
   for (int m = threadIdx.x; m < staged; m += blockDim.x) {
     const int j = d.members[first + m];
     s.index[m] = j;
+    s.cx[m] = p.x[j];
+    s.cy[m] = p.y[j];
     for (int v = 0; v < 3; ++v) {
-      s.x[v][m] = p.vert_x[v][j];
-      s.y[v][m] = p.vert_y[v][j];
+      s.x[v][m] = p.rel_x[v][j];
+      s.y[v][m] = p.rel_y[v][j];
     }
     s.lo_x[m] = p.lo_x[j];
     s.lo_y[m] = p.lo_y[j];
@@ -99,7 +106,8 @@ __global__ void __launch_bounds__(kDomainThreads)
   __syncthreads();
   for (int o = d.owned_offset[k] + threadIdx.x; o < d.owned_offset[k + 1]; o += blockDim.x) {
     const int i = d.owned[o];
-    const physics::Triangle<Real> a = g.triangle(i);
+    const Vec2d origin = g.centroid(i);  // the pair's frame, as pair_force takes it
+    const physics::Triangle<Real> a = g.triangle(i, origin);
     const physics::Aabb<Real> box_a = g.box(i);
     const bool free_i = p.free[i] != 0;
     // Fill: the next free slot of i's row; count: how many partners so far.
@@ -121,10 +129,10 @@ __global__ void __launch_bounds__(kDomainThreads)
       else hi = mid;
     }
     for (int m = lo; m < staged; ++m)
-      consider(s.index[m], staged_g.triangle(m), staged_g.box(m), true, s.free[m] != 0);
+      consider(s.index[m], staged_g.triangle(m, origin), staged_g.box(m), true, s.free[m] != 0);
     for (int w = 0; w < d.n_large; ++w) {
       const int j = d.large[w];
-      consider(j, g.triangle(j), g.box(j), false, p.free[j] != 0);
+      consider(j, g.triangle(j, origin), g.box(j), false, p.free[j] != 0);
     }
     if constexpr (kFill) {
       insertion_sort(t.partner, t.offset[i], at);  // the walls come after the staged

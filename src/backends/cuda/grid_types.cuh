@@ -35,10 +35,11 @@ struct OrderedBits<double> {
   }
 };
 
-/// Extent of the build-box corners of the small particles, as ordered bits.
+/// Extent of the build-box corners of the small particles and their widest build box, as
+/// ordered bits.
 template <class Real>
 struct CornerBounds {
-  typename OrderedBits<Real>::Bits min_x, min_y, max_x, max_y;
+  typename OrderedBits<Real>::Bits min_x, min_y, max_x, max_y, widest;
 };
 
 /// The cell grid of one build.

@@ -30,9 +30,11 @@ struct SingleDomainSearch {
   ContactFilter filter;
 };
 
-/// One tile of particles in shared memory, structure of arrays.
+/// One tile of particles in shared memory, structure of arrays: centroids (double) and
+/// vertices about them, as the contact test's local frame reads them.
 template <class Real>
 struct SharedTile {
+  double cx[kSingleDomainBlock], cy[kSingleDomainBlock];
   Real x[3][kSingleDomainBlock], y[3][kSingleDomainBlock];
   Real lo_x[kSingleDomainBlock], lo_y[kSingleDomainBlock];
   Real hi_x[kSingleDomainBlock], hi_y[kSingleDomainBlock];
@@ -44,6 +46,8 @@ struct SharedTile {
       x[v][k] = g.x[v][j];
       y[v][k] = g.y[v][j];
     }
+    cx[k] = g.cx[j];
+    cy[k] = g.cy[j];
     lo_x[k] = g.lo_x[j];
     lo_y[k] = g.lo_y[j];
     hi_x[k] = g.hi_x[j];
@@ -53,7 +57,7 @@ struct SharedTile {
   }
   /// The tile read as the global arrays are, tile index for particle index.
   __device__ TriangleArrays<Real> view() const {
-    return {{x[0], x[1], x[2]}, {y[0], y[1], y[2]}, lo_x, lo_y, hi_x, hi_y};
+    return {{x[0], x[1], x[2]}, {y[0], y[1], y[2]}, lo_x, lo_y, hi_x, hi_y, cx, cy};
   }
 };
 
@@ -69,15 +73,18 @@ __device__ inline void visit_contacts(const SingleDomainSearch<Real>& c, Visit&&
   const bool emitter = i < c.n && c.small[i] != 0;
   physics::Triangle<Real> a{};
   physics::Aabb<Real> box_a{};
+  Vec2d origin{};  // the pair's frame: i's centroid, as pair_force takes it
   bool free_i = false;
   if (emitter) {
-    a = c.geometry.triangle(i);
+    origin = c.geometry.centroid(i);
+    a = c.geometry.triangle(i, origin);
     box_a = c.geometry.box(i);
     free_i = c.free[i] != 0;
     for (int k = 0; k < c.n_large && c.large[k] < first; ++k) {
       const int j = c.large[k];
       if (emits_pair(i, j, true, false, free_i, c.free[j] != 0) &&
-          passes_contact_test(a, box_a, c.geometry.triangle(j), c.geometry.box(j), c.filter))
+          passes_contact_test(a, box_a, c.geometry.triangle(j, origin), c.geometry.box(j),
+                              c.filter))
         visit(j);
     }
   }
@@ -91,7 +98,7 @@ __device__ inline void visit_contacts(const SingleDomainSearch<Real>& c, Visit&&
       for (int k = 0; k < staged; ++k) {
         const int j = base + k;
         if (emits_pair(i, j, true, tile.small[k] != 0, free_i, tile.free[k] != 0) &&
-            passes_contact_test(a, box_a, staged_geometry.triangle(k), staged_geometry.box(k),
+            passes_contact_test(a, box_a, staged_geometry.triangle(k, origin), staged_geometry.box(k),
                                 c.filter))
           visit(j);
       }

@@ -7,21 +7,22 @@
 #include "broadphase/pair_sums.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
+#include "physics/local_frame.hpp"
 
 #include <climits>
 
 namespace tridem::cuda {
 
+/// Body i in the frame whose origin is at `origin` (the pair's emitter's centroid): the
+/// CPU's gather, physics/local_frame.hpp.
 template <class Real>
-__device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, int i) {
-  physics::Body<Real> b;
-  for (int k = 0; k < 3; ++k) b.tri.v[k] = {p.vert_x[k][i], p.vert_y[k][i]};
-  b.c = {p.x[i], p.y[i]};
-  b.v = {p.vx[i], p.vy[i]};
-  b.w = p.w[i];
-  b.area = p.area[i];
-  b.mass = p.mass[i];
-  return b;
+__device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, int i,
+                                                Vec2d origin) {
+  const Vec2<Real> rel[3] = {{p.rel_x[0][i], p.rel_y[0][i]},
+                             {p.rel_x[1][i], p.rel_y[1][i]},
+                             {p.rel_x[2][i], p.rel_y[2][i]}};
+  return physics::body_at(physics::offset_from<Real>(origin, Vec2d{p.x[i], p.y[i]}), rel,
+                          Vec2d{p.vx[i], p.vy[i]}, p.w[i], p.area[i], p.mass[i]);
 }
 
 /// Launch shape of the pair-force kernel: 128-thread blocks with a register cap, measured
@@ -47,8 +48,9 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   const int e = q.emitter[s], j = q.partner[s];
   physics::PairSlip<Real> slip = q.slip[s];
   const physics::ContactLaw<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
-  const physics::PairForce<Real> result =
-      physics::pair_force(load_body(p, e), load_body(p, j), law, sp.dt, slip);
+  const Vec2d origin{p.x[e], p.y[e]};
+  const physics::PairForce<Real> result = physics::pair_force(
+      load_body(p, e, origin), load_body(p, j, origin), law, static_cast<Real>(sp.dt), slip);
   q.result[s] = result;
   q.slip[s] = slip;
   // The lowest emitter, as the CPU reports it, whatever order the threads run in.
@@ -56,11 +58,13 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
 }
 
 template <class Real>
-__device__ inline physics::Pose<Real> advanced_pose(const ParticleArrays<Real>& p,
-                                                    const StepParams<Real>& sp, int i) {
-  physics::Pose<Real> pose{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
-  physics::advance_body(pose, p.free[i] != 0, {p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
-                        p.inv_inertia[i], sp.gravity, sp.local_damping, sp.dt);
+__device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>& p,
+                                                      const StepParams<Real>& sp, int i) {
+  physics::Pose<double> pose{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
+  physics::advance_body(pose, p.free[i] != 0,
+                        Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])},
+                        static_cast<double>(p.torque[i]), p.inv_mass[i], p.inv_inertia[i],
+                        sp.gravity, sp.local_damping, sp.dt);
   return pose;
 }
 
@@ -79,23 +83,25 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
   p.fy[i] = f.y;
   p.torque[i] = t;
   if (prescribed) return;
-  if (physics::runaway_step(advanced_pose(p, sp, i), p.half_size[i], sp.dt))
+  if (physics::runaway_step(advanced_pose(p, sp, i), static_cast<double>(p.half_size[i]), sp.dt))
     atomicMin(&status->bad, i);
 }
 
-/// Vertices and box of particle i at its current pose; flags a rebuild of the pair list
-/// when the box has left its build box.
+/// Vertices (about the centroid) and box of particle i at its current pose, by the CPU's
+/// rules (physics/local_frame.hpp); flags a rebuild of the pair list when the box has left
+/// its build box.
 template <class Real>
 __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
                                        StepStatus* status) {
   const Vec2<Real> offsets[3] = {{p.offset_x[0][i], p.offset_y[0][i]},
                                  {p.offset_x[1][i], p.offset_y[1][i]},
                                  {p.offset_x[2][i], p.offset_y[2][i]}};
-  const physics::Triangle<Real> t = physics::place(Vec2<Real>{p.x[i], p.y[i]}, p.theta[i], offsets);
-  const physics::Aabb<Real> box = physics::bounding_box(t);
+  Vec2<Real> rel[3];
+  physics::rotated_offsets(p.theta[i], offsets, rel);
+  const physics::Aabb<Real> box = physics::outward_box(Vec2d{p.x[i], p.y[i]}, rel, p.half_size[i]);
   for (int k = 0; k < 3; ++k) {
-    p.vert_x[k][i] = t.v[k].x;
-    p.vert_y[k][i] = t.v[k].y;
+    p.rel_x[k][i] = rel[k].x;
+    p.rel_y[k][i] = rel[k].y;
   }
   p.lo_x[i] = box.lo.x;
   p.lo_y[i] = box.lo.y;
@@ -116,7 +122,7 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, StepParams<Real> sp,
   if (i >= p.n) return;
   if (advance) {
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
-    const physics::Pose<Real> pose = advanced_pose(p, sp, i);
+    const physics::Pose<double> pose = advanced_pose(p, sp, i);
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;
     p.theta[i] = pose.theta;
