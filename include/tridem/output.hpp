@@ -2,6 +2,7 @@
 // Everything a run writes to disk. Every writer takes the double-precision Snapshot, so
 // none of this depends on the solver's real type or backend. docs/output-format.md is
 // the users' description of the files; keep the two in step.
+#include "tridem/energy_budget.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
 
@@ -13,8 +14,9 @@
 
 namespace tridem {
 
-/// Conserved quantities of the free particles at one step. Fixed and prescribed particles
-/// are excluded: their motion is imposed, so they would only hide what the solver does.
+/// Conserved quantities of the free particles at one step, and the energy budget. Fixed
+/// and prescribed particles are excluded: their motion is imposed, so they would only hide
+/// what the solver does (what moving walls put in is `wall_work`).
 struct EnergyRow {
   std::int64_t step = 0;
   double time = 0;
@@ -22,9 +24,15 @@ struct EnergyRow {
   double momentum_x = 0;        ///< kg/s (per unit thickness)
   double momentum_y = 0;
   double angular_momentum = 0;  ///< about the origin, kg·m/s
+  double potential = 0;         ///< gravitational, −Σ m g·c (zero at the origin), J/m
+  EnergyBudget budget;          ///< from Solver::energy()
+  /// kinetic + potential + elastic + the three dissipations − wall_work: constant up to
+  /// the time discretisation.
+  double total() const;
 };
 
-EnergyRow compute_energy(const Snapshot&);
+/// The row of a snapshot under gravity `g`, with the solver's budget.
+EnergyRow compute_energy(const Snapshot&, Vec2d gravity = {}, const EnergyBudget& budget = {});
 
 /// Frame and contact file names carry the step padded to 9 digits so that they sort.
 std::string frame_file_name(std::int64_t step);     ///< frame_000000042.vtu
@@ -70,7 +78,8 @@ class OutputSet {
   OutputSet& operator=(OutputSet&&) noexcept;
 
   void write_frame(const Snapshot&);
-  void log(const Snapshot&);
+  /// One row of energy.csv (with the solver's budget under gravity g) and walls.csv.
+  void log(const Snapshot&, Vec2d gravity = {}, const EnergyBudget& budget = {});
   void write_final(const Snapshot&);
 
   const std::filesystem::path& dir() const;

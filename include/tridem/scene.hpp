@@ -76,6 +76,9 @@ struct SimulationSettings {
   /// Deepest overlap accepted, as φ of the deepest boundary point (0 at the edge, 1 at
   /// the centroid); deeper stops the run as a blow-up. 1 = off.
   double max_penetration = 0.8;
+  /// Overlapping triangles in the scene are refused; true pushes them apart before the run
+  /// instead, moving positions only (core/overlap_relaxation.hpp).
+  bool relax_overlaps = false;
 };
 
 /// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
@@ -87,6 +90,11 @@ struct OutputSettings {
   bool contacts = true;                ///< write the contact network with each frame
   Encoding encoding = Encoding::Binary; ///< of the .vtu/.vtp frames
   std::int64_t checkpoint_every = 0;   ///< steps between checkpoints; 0 = none
+  /// Steps between rows of energy.csv and walls.csv (besides step 0 and the last step);
+  /// unset = `every`, 0 = only those two.
+  std::optional<std::int64_t> energy_every;
+
+  std::int64_t log_every() const { return energy_every.value_or(every); }
 };
 
 struct Scene {

@@ -1,6 +1,7 @@
 #pragma once
 // The solver interface: one object per run, holding the state on its backend. The step is
 // a fixed sequence of stages (see Stage); backends differ only in how they schedule it.
+#include "tridem/energy_budget.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
 #include "tridem/solver_state.hpp"
@@ -44,6 +45,10 @@ class Solver {
   /// and precision), so that the next advance() continues that run exactly. Throws
   /// tridem::Error (via validate_solver_state) on a state that does not fit this solver.
   virtual void load_state(const SolverState& in) = 0;
+  /// The energy budget at the current step (energy.csv): the elastic energy of the
+  /// contacts of the last step (0 before the first) and the cumulative dissipations and
+  /// wall work since step 0. Reduces per-particle sums: call it at logging steps.
+  virtual EnergyBudget energy() const = 0;
   virtual std::int64_t step() const = 0;
   virtual double time() const = 0;
   virtual double dt() const = 0;

@@ -13,8 +13,14 @@
 //    (emitter, partner)); the emitter of a pair is the one that computes it (see
 //    ARCHITECTURE.md). Only pairs with a slip other than +0.0 need to be listed: a pair
 //    that is absent starts from zero slip, exactly as a new contact does.
+//  - The energy budget's cumulative sums (dissipations, wall work) are kept per particle,
+//    as the solver accumulates them, so that a restarted run sums them in the same order
+//    and writes the same energy.csv: energy[k] has one entry per particle, or is empty
+//    for zeros (k indexes EnergyAccumulator).
 //  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
 //    would have given without the round trip.
+#include "tridem/energy_budget.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -31,6 +37,7 @@ struct SolverState {
   std::vector<double> vx, vy, omega;  ///< velocities
   std::vector<std::int32_t> pair_emitter, pair_partner;
   std::vector<std::array<double, kSlipsPerPair>> pair_slip;
+  std::array<std::vector<double>, kEnergyAccumulators> energy;  ///< cumulative, per particle
 
   std::size_t size() const { return x.size(); }
   std::size_t pairs() const { return pair_emitter.size(); }

@@ -1,5 +1,6 @@
 #include "tridem/run.hpp"
 
+#include "core/initial_overlaps.hpp"
 #include "core/solver_factory.hpp"
 #include "core/time_loop.hpp"
 #include "tridem/checkpoint.hpp"
@@ -44,6 +45,19 @@ void print_start(std::FILE* log, const Solver& solver, const TimeStep& ts, std::
     fmt::print(log, "dt_crit set by {}\n", by);
 }
 
+void print_relaxation(std::FILE* log, const RelaxReport& r) {
+  if (r.pairs == 0) {
+    fmt::print(log, "relax_overlaps: no overlapping triangles\n");
+    return;
+  }
+  fmt::print(log, "relax_overlaps: {} overlapping pair{} (deepest {:.6g} m) pushed apart in {} "
+             "iteration{}: {} particle{} moved (first id {}), by at most {:.6g} m; velocities "
+             "unchanged\n",
+             r.pairs, r.pairs == 1 ? "" : "s", r.deepest, r.iterations,
+             r.iterations == 1 ? "" : "s", r.moved, r.moved == 1 ? "" : "s", r.first_moved,
+             r.largest_move);
+}
+
 }  // namespace
 
 RunSummary run_scene(const Scene& input, const RunOptions& options) {
@@ -54,6 +68,10 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   if (options.method) scene.simulation.method = *options.method;
   if (options.contact_test) scene.simulation.contact_test = *options.contact_test;
   if (options.bbox_prefilter) scene.simulation.bbox_prefilter = *options.bbox_prefilter;
+  // Before anything is derived from the positions (a restart relaxes the same way, so its
+  // scene fingerprint matches).
+  std::optional<RelaxReport> relaxed;
+  if (scene.simulation.relax_overlaps) relaxed = relax_initial_overlaps(scene);
 
   SolverConfig config;
   config.backend = scene.simulation.backend;
@@ -76,6 +94,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   std::FILE* log = options.log;
   if (log) {
     print_start(log, *solver, ts, free, config, last);
+    if (relaxed) print_relaxation(log, *relaxed);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
                  resume->step, resume->time);

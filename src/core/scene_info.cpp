@@ -18,9 +18,10 @@ template <class Real>
 std::size_t run_bytes(std::size_t n) {
   // Per particle: offsets and vertices (12), mass, area and size (3), forces (3), boxes
   // (4) reals; state (6) and inverse mass and inertia (2) in double in every precision;
-  // material, motion, cell bookkeeping and the pair-row offsets.
+  // material, motion, cell bookkeeping, the pair-row offsets and the energy budget's
+  // four sums.
   const std::size_t per_particle = 22 * sizeof(Real) + 8 * 8 + sizeof(int) + 1 + 2 * 4 * 8 +
-                                   8 + 4 + 8 + 3 * 8 + 2 * 8;
+                                   8 + 4 + 8 + 3 * 8 + 2 * 8 + 4 * 8;
   // Per pair, two buffers of partner and slip, one of results and the reverse slot. A
   // dense packing has 6.6 candidate pairs per particle (bench/), and the lists keep 20%
   // headroom: 8 pairs per particle.

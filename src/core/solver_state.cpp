@@ -39,6 +39,14 @@ void validate_solver_state(const SolverState& s, std::size_t particles,
     check_size(v->size(), particles, what, source);
     check_finite(*v, what, source);
   }
+  static constexpr const char* kEnergyNames[kEnergyAccumulators] = {
+      "dissipated damping energy", "dissipated friction energy",
+      "dissipated local-damping energy", "wall work"};
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    if (s.energy[k].empty()) continue;  // zeros
+    check_size(s.energy[k].size(), particles, kEnergyNames[k], source);
+    check_finite(s.energy[k], kEnergyNames[k], source);
+  }
   const std::size_t m = s.pair_emitter.size();
   if (s.pair_partner.size() != m || s.pair_slip.size() != m)
     throw Error(fmt::format("{}: contact history arrays differ in length ({} emitters, {} "

@@ -32,11 +32,13 @@ TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, Checkpoin
       bar_(scene.simulation.steps, progress && is_terminal(stderr)),
       last_(scene.simulation.steps),
       every_(scene.output.every),
+      log_every_(scene.output.log_every()),
       checkpoint_every_(scene.output.checkpoint_every) {}
 
 void TimeLoop::start(bool resumed) {
   if (!resumed) {
-    emit(solver_.step());
+    const std::int64_t step = solver_.step();
+    emit(step, every_ > 0 && (is_due(step, every_) || step == last_), true);
   } else if (solver_.step() == last_) {  // nothing left to run
     solver_.snapshot(snap_, false);
     out_.write_final(snap_);
@@ -47,8 +49,9 @@ int TimeLoop::run() {
   int signal = 0;
   while (solver_.step() < last_ && signal == 0) {
     const std::int64_t step = solver_.step();
-    signal = advance_to(std::min(next_multiple(step, every_, last_),
-                                 next_multiple(step, checkpoint_every_, last_)));
+    signal = advance_to(std::min({next_multiple(step, every_, last_),
+                                  next_multiple(step, log_every_, last_),
+                                  next_multiple(step, checkpoint_every_, last_)}));
     if (signal == 0) write_due(solver_.step());
   }
   bar_.finish();
@@ -86,16 +89,17 @@ void TimeLoop::advance_chunk(std::int64_t target) {
 }
 
 void TimeLoop::write_due(std::int64_t step) {
-  if (is_due(step, every_) || step == last_) emit(step);
+  const bool frame = every_ > 0 && (is_due(step, every_) || step == last_);
+  const bool log = is_due(step, log_every_) || step == last_;
+  if (frame || log) emit(step, frame, log);
   if (is_due(step, checkpoint_every_) || (checkpoint_every_ > 0 && step == last_))
     save_checkpoint(files_.checkpoint);
 }
 
-void TimeLoop::emit(std::int64_t step) {
-  const bool frame = every_ > 0 && (step % every_ == 0 || step == last_);
+void TimeLoop::emit(std::int64_t step, bool frame, bool log) {
   solver_.snapshot(snap_, frame && scene_.output.contacts);
   if (frame) out_.write_frame(snap_);
-  out_.log(snap_);
+  if (log) out_.log(snap_, scene_.simulation.gravity, solver_.energy());
   if (step == last_) out_.write_final(snap_);
 }
 

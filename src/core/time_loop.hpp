@@ -1,7 +1,7 @@
 #pragma once
 // The time loop of a run: advances the solver from its current step to the last one in
-// chunks, and at each event writes what is due (frames and log rows every [output] every
-// steps, checkpoints every checkpoint_every). It also owns the two ways a run stops early:
+// chunks, and at each event writes what is due (frames every [output] every steps, log
+// rows every energy_every, checkpoints every checkpoint_every). It also owns the two ways a run stops early:
 // an interruption (the flag of RunOptions) and a blow-up (RunError from the solver).
 #include "core/progress.hpp"
 #include "tridem/checkpoint.hpp"
@@ -43,7 +43,7 @@ class TimeLoop {
   int advance_to(std::int64_t target);
   void advance_chunk(std::int64_t target);
   void write_due(std::int64_t step);
-  void emit(std::int64_t step);
+  void emit(std::int64_t step, bool frame, bool log);
   /// A checkpoint to `file` and final.csv of the state the solver holds now (no log row
   /// or frame, which an uninterrupted run would not have at this step).
   void keep_state(const std::filesystem::path& file);
@@ -56,7 +56,7 @@ class TimeLoop {
   const std::atomic<int>* interrupt_;
   StateFiles files_;
   ProgressBar bar_;
-  std::int64_t last_, every_, checkpoint_every_;
+  std::int64_t last_, every_, log_every_, checkpoint_every_;
   std::int64_t chunk_ = 1;
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints

@@ -33,6 +33,12 @@ struct PairForce {
   /// triangle, 0 at its edge and 1 at its centroid (the blow-up check reads it).
   Real depth = 0;
   bool touching = false;
+  // The pair's share of the energy budget (energy.csv). A minimal version, isolated in
+  // OverlapSums below and a few marked lines of pair_force: normal energy p∫_Ω(φ_a + φ_b)dA at the positions of this step plus
+  // the tangential springs' ½p_t·s² at the new slips; dashpots and sliding over this step.
+  Real elastic_energy = 0;        ///< J/m stored in the pair
+  Real damping_dissipation = 0;   ///< J/m removed by the dashpots over this step (>= 0)
+  Real friction_dissipation = 0;  ///< J/m removed by Coulomb sliding over this step (>= 0)
 };
 
 /// The load of one contactor edge inside a target triangle.
@@ -42,6 +48,7 @@ struct EdgeLoad {
   Vec2<Real> point{};   ///< its centroid (valid when integral > 0)
   Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
   Real peak = 0;        ///< the largest φ_T on the pieces (φ is linear: at an end)
+  Real inside = 0;      ///< fraction of the edge inside the target (for the overlap area)
 };
 
 /// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
@@ -124,6 +131,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     fd[k] = edge_area(target.tri, k, p1) - f0[k];
     if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
   }
+  load.inside = t_hi - t_lo;
   // Where the edge crosses each ray: each ray bounds two sub-triangles.
   Real r0[3], rd[3], crossing[3];
   TRIDEM_UNROLL
@@ -200,6 +208,29 @@ TRIDEM_HD inline Vec2<Real> vertex(const Triangle<Real>& t, int k) {
   return k == 0 ? t.v[0] : (k == 1 ? t.v[1] : t.v[2]);
 }
 
+/// The overlap Ω of a pair, gathered edge contact by edge contact, for the elastic energy
+/// p∫_Ω(φ_a + φ_b)dA. In each sub-triangle φ_T = 1 + ∇φ·(P − c_T), so div(φ_T(P − c_T)) =
+/// 3φ_T − 1 and, φ_T being 0 on ∂T, ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] over the
+/// contactor edges in T (I their load integral, n their outward normal, point their load
+/// centroid). |Ω| = ½∮cross(P − R, dP) over the clipped edges of both roles; a clipped
+/// piece of edge (p0, d) gives cross(p0 − R, d)·inside.
+template <class Real>
+struct OverlapSums {
+  Real moment = 0;      ///< Σ I·n·(point − c_T)
+  Real twice_area = 0;  ///< 2|Ω|
+
+  TRIDEM_HD void add(const EdgeLoad<Real>& load, Vec2<Real> p0, Vec2<Real> d, Vec2<Real> normal,
+                     Vec2<Real> target_centroid, Vec2<Real> reference) {
+    moment += load.integral * dot(normal, load.point - target_centroid);
+    twice_area += cross(p0 - reference, d) * load.inside;
+  }
+  /// p∫_Ω(φ_a + φ_b)dA = (p/3)(Σ + 2|Ω|); never negative (rounding aside).
+  TRIDEM_HD Real normal_energy(Real penalty) const {
+    const Real e = penalty * (moment + twice_area) / Real(3);
+    return e > Real(0) ? e : Real(0);
+  }
+};
+
 /// Force, torques and new slips of the pair (a, b) over a step dt. `slip` holds the
 /// slips of the previous step on entry (zeros for a new contact) and the new ones on exit;
 /// an edge contact that has opened gets slip 0.
@@ -251,6 +282,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   const Real k_total = law.penalty * total_stiffness;
   const Real c_total = Real(2) * law.damping * math::sqrt(effective_mass(a.mass, b.mass) * k_total);
   Vec2<Real> point_moment{};
+  OverlapSums<Real> overlap;
   Real new_slip[kEdgeContacts] = {};
   TRIDEM_UNROLL
   for (int role = 0; role < 2; ++role) {
@@ -261,22 +293,29 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       const int i = 3 * role + e;
       const EdgeLoad<Real> load = pick(loads, i);
       out.depth = load.peak > out.depth ? load.peak : out.depth;
-      if (!(load.integral > Real(0))) continue;
       const Vec2<Real> d = vertex(c.tri, (e + 1) % 3) - vertex(c.tri, e);
       const Vec2<Real> tangent = d / norm(d);
       const Vec2<Real> normal{tangent.y, -tangent.x};  // outward for a CCW contactor
+      overlap.add(load, vertex(c.tri, e), d, normal, t.c, a.c);
+      if (!(load.integral > Real(0))) continue;
       const Vec2<Real> r = load.point;
       const Vec2<Real> v_rel = velocity_at(c, r) - velocity_at(t, r);
       const Real damping = c_total * load.stiffness / total_stiffness;
-      const Real f_normal = law.penalty * load.integral + damping * dot(v_rel, normal);
+      const Real v_normal = dot(v_rel, normal);
+      const Real f_normal = law.penalty * load.integral + damping * v_normal;
+      out.damping_dissipation += damping * v_normal * v_normal * dt;
       // Elastic–perfectly-plastic tangential spring (Coulomb friction, contact-model.md).
       Real s = pick(slip.s, i) + dot(v_rel, tangent) * dt;
       Real f_tangent = -law.tangential_penalty * s;
       const Real cap = law.friction * (f_normal > Real(0) ? f_normal : Real(0));
       if (f_tangent > cap || f_tangent < -cap) {
         f_tangent = f_tangent > Real(0) ? cap : -cap;
-        s = -f_tangent / law.tangential_penalty;
+        const Real s_capped = -f_tangent / law.tangential_penalty;
+        // The slider's work: the capped force over the slip it let go.
+        out.friction_dissipation += cap * (s > s_capped ? s - s_capped : s_capped - s);
+        s = s_capped;
       }
+      out.elastic_energy += Real(0.5) * law.tangential_penalty * s * s;
       put(new_slip, i, s);
       const Vec2<Real> f_on_c = normal * (-f_normal) + tangent * f_tangent;
       const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;
@@ -290,6 +329,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   TRIDEM_UNROLL
   for (int i = 0; i < kEdgeContacts; ++i) slip.s[i] = new_slip[i];
   out.point = point_moment / total_integral;
+  out.elastic_energy += overlap.normal_energy(law.penalty);
   return out;
 }
 

@@ -84,6 +84,43 @@ TRIDEM_HD inline bool triangles_overlap(const Triangle<Real>& a, const Triangle<
   return !edge_of_a_separates(a, b) && !edge_of_a_separates(b, a);
 }
 
+/// The separating-axis test as a distance: over the six edge normals, the shortest push
+/// along one of them that separates the two triangles (how far the other triangle reaches
+/// past that edge). <= 0 exactly when triangles_overlap is false (apart or touching).
+/// `push` receives the unit direction in which b must move (or a the opposite way).
+template <class Real>
+TRIDEM_HD inline Real overlap_depth(const Triangle<Real>& a, const Triangle<Real>& b,
+                                    Vec2<Real>& push) {
+  Real best = Real(0);
+  bool first = true;
+  TRIDEM_UNROLL
+  for (int role = 0; role < 2; ++role) {
+    const Triangle<Real>& own = role == 0 ? a : b;
+    const Triangle<Real>& other = role == 0 ? b : a;
+    TRIDEM_UNROLL
+    for (int e = 0; e < 3; ++e) {
+      const Vec2<Real> p = own.v[e];
+      const Vec2<Real> d = own.v[(e + 1) % 3] - p;
+      Real reach = cross(d, other.v[0] - p);
+      TRIDEM_UNROLL
+      for (int k = 1; k < 3; ++k) {
+        const Real r = cross(d, other.v[k] - p);
+        reach = r > reach ? r : reach;
+      }
+      const Real length = norm(d);
+      const Real depth = reach / length;
+      if (first || depth < best) {
+        best = depth;
+        // Outward normal of a CCW edge; b leaves a along a's, and a leaves b along b's.
+        const Vec2<Real> out{d.y / length, -d.x / length};
+        push = role == 0 ? out : -out;
+        first = false;
+      }
+    }
+  }
+  return best;
+}
+
 /// Point strictly inside a CCW triangle (the paper's Eq. (1) signs).
 template <class Real>
 TRIDEM_HD inline bool point_inside(const Triangle<Real>& t, Vec2<Real> p) {

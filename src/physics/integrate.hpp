@@ -37,6 +37,24 @@ TRIDEM_HD inline void integrate_free(Pose<Real>& p, Vec2<Real> f, Real m, Real i
   p.theta += p.w * dt;
 }
 
+/// Energy that Cundall's local damping removed from a free body over the step that took
+/// it from `before` to `after` (energy.csv). Each damped component loses α|F|·sign(v) with
+/// F the undamped force (contact plus gravity), and symplectic Euler changes the kinetic
+/// energy by exactly F·(v_before + v_after)/2·dt, so that velocity is the one used here.
+template <class Real>
+TRIDEM_HD inline Real local_damping_dissipation(const Pose<Real>& before, const Pose<Real>& after,
+                                                Vec2<Real> f, Real m, Real inv_mass,
+                                                Vec2<Real> g, Real alpha, Real dt) {
+  if (!(alpha > Real(0))) return Real(0);
+  const Vec2<Real> total = f + g * (Real(1) / inv_mass);
+  const Real fx = total.x - local_damping(total.x, before.v.x, alpha);
+  const Real fy = total.y - local_damping(total.y, before.v.y, alpha);
+  const Real mz = m - local_damping(m, before.w, alpha);
+  const Real half_dt = Real(0.5) * dt;
+  return (fx * (before.v.x + after.v.x) + fy * (before.v.y + after.v.y) +
+          mz * (before.w + after.w)) * half_dt;
+}
+
 /// A fixed or prescribed body keeps its velocity and moves with it.
 template <class Real>
 TRIDEM_HD inline void integrate_prescribed(Pose<Real>& p, Real dt) {

@@ -55,6 +55,11 @@ void expect_bit_identical(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.pair_emitter, b.pair_emitter);
   EXPECT_EQ(a.pair_partner, b.pair_partner);
   EXPECT_EQ(a.pair_slip, b.pair_slip);
+  // The energy budget's cumulative sums, per particle, so that energy.csv continues exactly.
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    ASSERT_EQ(a.energy[k].size(), a.x.size()) << "energy sums " << k;
+    EXPECT_EQ(a.energy[k], b.energy[k]) << "energy sums " << k;
+  }
 }
 
 void expect_restart_exact(Backend backend, Precision precision, Method method = Method::Grid,
@@ -64,6 +69,9 @@ void expect_restart_exact(Backend backend, Precision precision, Method method = 
 
   const SolverState half = halfway_state(s, backend, precision, method);
   ASSERT_GT(half.pairs(), 10u) << "the pile must carry contact history at the restart";
+  double damping = 0;
+  for (double e : half.energy[kDissipatedDamping]) damping += e;
+  ASSERT_GT(damping, 0) << "the pile must carry dissipated energy at the restart";
   auto restarted = solver_for(s, backend, precision, method);
   restarted->load_state(half);
   expect_bit_identical(final_state(*restarted), expected);

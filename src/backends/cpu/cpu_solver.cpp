@@ -1,6 +1,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 
 #include "broadphase/pair_sums.hpp"
+#include "broadphase/row_energy.hpp"
 #include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 
@@ -75,7 +76,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     vx_[i] = model.velocity[i].x;
     vy_[i] = model.velocity[i].y;
     w_[i] = model.angular_velocity[i];
+    walls_move_ = walls_move_ || (!free && (vx_[i] != 0 || vy_[i] != 0 || w_[i] != 0));
   }
+  for (auto& sums : energy_) sums.assign(n_, 0.0);
   area_ = cast<Real>(model.area);
   material_ = model.material;
   motion_ = model.motion;
@@ -266,13 +269,55 @@ void CpuSolver<Real>::integrate() {
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
     const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
+    add_step_energy(static_cast<std::size_t>(i),
+                    {{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]}, p);
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
+    // A wall's velocity never changes, and add_step_energy reads it from other threads.
+    if (motion_[i] != Motion::Free) continue;
     vx_[i] = p.v.x;
     vy_[i] = p.v.y;
     w_[i] = p.w;
   }
+}
+
+// Called for every particle as its step is written: the pairs of its own row (each pair is
+// in one row) and, for a free particle, what local damping took from it.
+template <class Real>
+void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>& before,
+                                      const physics::Pose<double>& after) {
+  auto wall_velocity = [this](std::int64_t j, Vec2d& v, double& w) {
+    if (!walls_move_ || motion_[j] == Motion::Free) return false;
+    v = {vx_[j], vy_[j]};
+    w = w_[j];
+    return true;
+  };
+  const RowEnergy row = row_energy(static_cast<std::int64_t>(i), pairs_.offset.data(),
+                                   pairs_.partner.data(), result_.data(), wall_velocity, dt_);
+  energy_[kDissipatedDamping][i] += row.damping;
+  energy_[kDissipatedFriction][i] += row.friction;
+  energy_[kWallWork][i] += row.wall_work;
+  if (motion_[i] == Motion::Free && local_damping_ > 0)
+    energy_[kDissipatedLocal][i] += physics::local_damping_dissipation(
+        before, after, Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])},
+        static_cast<double>(torque_[i]), inv_mass_[i], gravity_, local_damping_, dt_);
+}
+
+template <class Real>
+EnergyBudget CpuSolver<Real>::energy() const {
+  EnergyBudget b;
+  // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
+  if (step_ > 0)
+    for (std::int64_t s = 0; s < old_pairs_.count(); ++s)
+      b.elastic += static_cast<double>(result_[s].elastic_energy);
+  for (std::size_t i = 0; i < n_; ++i) {
+    b.dissipated_damping += energy_[kDissipatedDamping][i];
+    b.dissipated_friction += energy_[kDissipatedFriction][i];
+    b.dissipated_local += energy_[kDissipatedLocal][i];
+    b.wall_work += energy_[kWallWork][i];
+  }
+  return b;
 }
 
 template <class Real>

@@ -12,6 +12,7 @@
 #include "physics/integrate.hpp"
 #include "tridem/solver.hpp"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,7 @@ class CpuSolver final : public Solver {
   void snapshot(Snapshot& out, bool with_contacts) const override;
   void save_state(SolverState& out) const override;     // cpu_solver_state.cpp
   void load_state(const SolverState& in) override;
+  EnergyBudget energy() const override;
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
   double dt() const override { return dt_; }
@@ -41,6 +43,8 @@ class CpuSolver final : public Solver {
   [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
   void integrate();
+  void add_step_energy(std::size_t i, const physics::Pose<double>& before,
+                       const physics::Pose<double>& after);
 
   /// Body i as pair_force sees it, in the frame whose origin is at `origin`.
   physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
@@ -70,6 +74,10 @@ class CpuSolver final : public Solver {
   // State.
   std::vector<double> x_, y_, theta_, vx_, vy_, w_;
   std::vector<Real> fx_, fy_, torque_;
+  // The energy budget's cumulative sums, per particle (EnergyAccumulator order): each
+  // particle adds its own row of pairs and its local damping when its step is written.
+  std::array<std::vector<double>, kEnergyAccumulators> energy_;
+  bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
   // Geometry of the current step: vertices relative to the centroid, absolute boxes.
   std::vector<Real> rel_x_[3], rel_y_[3];
   std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;

@@ -19,6 +19,7 @@ void CpuSolver<Real>::save_state(SolverState& out) const {
   out.vy.assign(vy_.begin(), vy_.end());
   out.omega.assign(w_.begin(), w_.end());
   append_history(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), old_slip_.data());
+  out.energy = energy_;
 }
 
 template <class Real>
@@ -33,6 +34,10 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   vx_ = in.vx;
   vy_ = in.vy;
   w_ = in.omega;
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    if (in.energy[k].empty()) energy_[k].assign(n_, 0.0);
+    else energy_[k] = in.energy[k];
+  }
   // Forces are recomputed by the next step; until then nothing stale is shown.
   std::fill(fx_.begin(), fx_.end(), Real(0));
   std::fill(fy_.begin(), fy_.end(), Real(0));

@@ -66,6 +66,12 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   params_.local_damping = scene.simulation.local_damping;
   params_.n_materials = static_cast<int>(scene.materials.size());
   params_.max_depth = static_cast<Real>(scene.simulation.max_penetration);
+  params_.walls_move = false;
+  for (std::size_t i = 0; i < n_; ++i)
+    params_.walls_move = params_.walls_move ||
+                         (model.motion[i] != Motion::Free &&
+                          (model.velocity[i].x != 0 || model.velocity[i].y != 0 ||
+                           model.angular_velocity[i] != 0));
   std::vector<physics::ContactLaw<Real>> laws;
   for (const auto& law : contact_law_table(scene.materials))
     laws.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
@@ -164,6 +170,9 @@ void CudaSolver<Real>::upload_model(const ParticleModel& model) {
   const std::vector<Real> highest(n_, std::numeric_limits<Real>::max());
   for (auto* b : {&build_lo_x_, &build_lo_y_}) b->upload(lowest);
   for (auto* b : {&build_hi_x_, &build_hi_y_}) b->upload(highest);
+  const std::vector<double> no_energy(n_, 0.0);
+  for (auto& b : energy_) b.upload(no_energy);
+  row_elastic_.allocate(n_);
 }
 
 template <class Real>
@@ -200,6 +209,7 @@ ParticleArrays<Real> CudaSolver<Real>::arrays() const {
   p.build_lo_y = build_lo_y_.data();
   p.build_hi_x = build_hi_x_.data();
   p.build_hi_y = build_hi_y_.data();
+  for (int k = 0; k < kEnergyAccumulators; ++k) p.energy[k] = energy_[k].data();
   return p;
 }
 
@@ -208,8 +218,8 @@ void CudaSolver<Real>::update_geometry() {
   const StepStatus fresh{0, INT_MAX, INT_MAX};
   TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
                                     cudaMemcpyHostToDevice, stream_));
-  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), params_, status_.data(),
-                                                             false);
+  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{},
+                                                             params_, status_.data(), false);
   TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   rebuild_ = true;
@@ -240,7 +250,7 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
     }
     gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, false);
     TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
-    integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, params_, status, true);
+    integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, true);
     TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host, status, sizeof *host, cudaMemcpyDeviceToHost, stream_));
     TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
@@ -248,6 +258,7 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
     if (host->deep != INT_MAX) report_penetration(host->deep);
     if (host->bad != INT_MAX) report_runaway(host->bad);
     rebuild_ = host->rebuild != 0;
+    results_ = true;
     ++step_;
     time_ += params_.dt;
   }
@@ -346,6 +357,35 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
                   out.y.data());
 }
 
+// The sums are reduced on the host in index order: n doubles per accumulator cross the bus
+// at logging steps only, and the result does not depend on the thread schedule.
+template <class Real>
+EnergyBudget CudaSolver<Real>::energy() const {
+  std::vector<double> sums(n_);
+  double totals[kEnergyAccumulators + 1] = {};
+  if (results_) {
+    row_elastic_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(static_cast<int>(n_),
+                                                                  pairs_->arrays(),
+                                                                  row_elastic_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("row_elastic_kernel");
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    row_elastic_.download(sums);
+    for (double v : sums) totals[kEnergyAccumulators] += v;
+  }
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    energy_[k].download(sums);
+    for (double v : sums) totals[k] += v;
+  }
+  EnergyBudget b;
+  b.elastic = totals[kEnergyAccumulators];
+  b.dissipated_damping = totals[kDissipatedDamping];
+  b.dissipated_friction = totals[kDissipatedFriction];
+  b.dissipated_local = totals[kDissipatedLocal];
+  b.wall_work = totals[kWallWork];
+  return b;
+}
+
 template <class Real>
 std::string CudaSolver<Real>::description() const {
   char skin[64];
@@ -414,10 +454,11 @@ namespace {
 template <class Real>
 std::size_t bytes_for(std::size_t n, std::size_t pairs) {
   // Per particle: 26 reals (offsets, mass terms, forces, vertices, two boxes) and 8
-  // doubles (state, inverse mass and inertia), flags and material, the grid (keys,
-  // indices, 4 cells of start and end), the row offsets (new, old, reverse, counts);
-  // pinned host staging is not GPU memory.
-  const std::size_t per_particle = 26 * sizeof(Real) + 8 * 8 + 4 + 2 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
+  // doubles (state, inverse mass and inertia), 5 doubles of energy sums, flags and
+  // material, the grid (keys, indices, 4 cells of start and end), the row offsets (new,
+  // old, reverse, counts); pinned host staging is not GPU memory.
+  const std::size_t per_particle =
+      26 * sizeof(Real) + 8 * 8 + 5 * 8 + 4 + 2 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
   // Per pair: partner and slip twice (new and old list), emitter, slot id, result,
   // reverse sort keys and slots, and CUB's sort scratch (keys and values).
   const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +

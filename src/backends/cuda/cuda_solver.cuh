@@ -38,6 +38,7 @@ class CudaSolver final : public Solver {
   std::string statistics() const override;
   void save_state(SolverState& out) const override;  // cuda_solver_state.cu
   void load_state(const SolverState& in) override;
+  EnergyBudget energy() const override;
 
  private:
   void upload_model(const ParticleModel& model);
@@ -64,6 +65,7 @@ class CudaSolver final : public Solver {
   std::int64_t step_ = 0;
   double time_ = 0;
   bool rebuild_ = true;
+  bool results_ = false;  ///< the pair list holds the results of a step (not after load_state)
   std::string device_name_;
   cudaStream_t stream_ = nullptr;
 
@@ -84,6 +86,10 @@ class CudaSolver final : public Solver {
   DeviceBuffer<Real> rel_x_[3], rel_y_[3];
   DeviceBuffer<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   DeviceBuffer<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
+  /// The energy budget's cumulative per-particle sums, and room for the elastic energy of
+  /// each row when energy() asks for it.
+  DeviceBuffer<double> energy_[kEnergyAccumulators];
+  mutable DeviceBuffer<double> row_elastic_;
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   /// method = decomposition: the pair list is built by sub-domain, every step.
   std::unique_ptr<DecomposedRows<Real>> decomposed_;

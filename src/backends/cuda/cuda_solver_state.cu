@@ -23,6 +23,10 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
   std::vector<physics::PairSlip<Real>> slip;
   pairs_->download(offset, partner, &slip, nullptr);
   append_history(out, n_, offset.data(), partner.data(), slip.data());
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    out.energy[k].resize(n_);
+    energy_[k].download(out.energy[k]);
+  }
 }
 
 template <class Real>
@@ -35,12 +39,15 @@ void CudaSolver<Real>::load_state(const SolverState& in) {
   // Forces are recomputed by the next step; until then nothing stale is shown.
   const std::vector<Real> zeros(n_, Real(0));
   for (auto* b : {&fx_, &fy_, &torque_}) b->upload(zeros);
+  for (int k = 0; k < kEnergyAccumulators; ++k)
+    energy_[k].upload(in.energy[k].empty() ? std::vector<double>(n_, 0.0) : in.energy[k]);
   step_ = in.step;
   time_ = in.time;
   std::vector<int> offset, partner;
   std::vector<physics::PairSlip<Real>> slip;
   history_rows(in, n_, offset, partner, slip);
   pairs_->load(offset, partner, slip);
+  results_ = false;  // the loaded list has slips but no forces
   // New geometry and a forced rebuild, which carries the loaded slips into the new list.
   update_geometry();
 }

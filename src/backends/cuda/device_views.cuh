@@ -3,6 +3,7 @@
 // data is a structure of arrays, so that the threads of a warp, handling consecutive
 // particles, read consecutive addresses.
 #include "physics/contact_force.hpp"
+#include "tridem/energy_budget.hpp"
 
 #include <cstdint>
 
@@ -31,6 +32,9 @@ struct ParticleArrays {
   // The boxes of the last pair-list build, grown by the skin: while every current box lies
   // inside its build box, the list holds every pair whose boxes overlap.
   Real *build_lo_x, *build_lo_y, *build_hi_x, *build_hi_y;
+  // The energy budget's cumulative sums, per particle (EnergyAccumulator order), in double
+  // whatever Real is: they add small amounts to a growing total for the whole run.
+  double* energy[kEnergyAccumulators];
 };
 
 /// Candidate pairs in compressed rows by emitter (partners ascending), as on the CPU
@@ -56,6 +60,7 @@ struct StepParams {
   const physics::ContactLaw<Real>* laws;  ///< row-major by material pair
   int n_materials;
   Real max_depth;  ///< deepest PairForce::depth accepted ([simulation] max_penetration)
+  bool walls_move;  ///< some fixed or prescribed particle has a velocity (does work)
 };
 
 /// What the host reads back after every step.

@@ -5,6 +5,7 @@
 // scheduling), and the integration fused with the geometry of the new state.
 #include "backends/cuda/device_views.cuh"
 #include "broadphase/pair_sums.hpp"
+#include "broadphase/row_energy.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/local_frame.hpp"
@@ -112,25 +113,64 @@ __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
   if (!inside) atomicOr(&status->rebuild, 1);
 }
 
-/// Writes the advanced state (unless some particle ran away or some pair overlaps too
-/// deep: then the last good state stays, as on the CPU) and the geometry of the state it
-/// leaves.
+/// The energy of particle i's step as the CPU adds it (CpuSolver::add_step_energy): its
+/// own row of pairs and, if free, what local damping took from it.
 template <class Real>
-__global__ void integrate_kernel(ParticleArrays<Real> p, StepParams<Real> sp,
+__device__ inline void add_step_energy(const ParticleArrays<Real>& p, const PairArrays<Real>& q,
+                                       const StepParams<Real>& sp, int i,
+                                       const physics::Pose<double>& before,
+                                       const physics::Pose<double>& after) {
+  auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
+    if (!sp.walls_move || p.free[j] != 0) return false;
+    v = {p.vx[j], p.vy[j]};
+    w = p.w[j];
+    return true;
+  };
+  const RowEnergy row = row_energy(i, q.offset, q.partner, q.result, wall_velocity, sp.dt);
+  p.energy[kDissipatedDamping][i] += row.damping;
+  p.energy[kDissipatedFriction][i] += row.friction;
+  p.energy[kWallWork][i] += row.wall_work;
+  if (p.free[i] != 0 && sp.local_damping > 0)
+    p.energy[kDissipatedLocal][i] += physics::local_damping_dissipation(
+        before, after, Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])},
+        static_cast<double>(p.torque[i]), p.inv_mass[i], sp.gravity, sp.local_damping, sp.dt);
+}
+
+/// Writes the advanced state (unless some particle ran away or some pair overlaps too
+/// deep: then the last good state stays, as on the CPU), adds the step's energy and
+/// computes the geometry of the state it leaves. `q` is read only when advancing.
+template <class Real>
+__global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                                  StepStatus* status, bool advance) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n) return;
   if (advance) {
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+    const physics::Pose<double> before{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
     const physics::Pose<double> pose = advanced_pose(p, sp, i);
+    add_step_energy(p, q, sp, i, before, pose);
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;
     p.theta[i] = pose.theta;
-    p.vx[i] = pose.v.x;
-    p.vy[i] = pose.v.y;
-    p.w[i] = pose.w;
+    // A wall's velocity never changes, and add_step_energy reads it from other threads.
+    if (p.free[i] != 0) {
+      p.vx[i] = pose.v.x;
+      p.vy[i] = pose.v.y;
+      p.w[i] = pose.w;
+    }
   }
   update_geometry(p, i, status);
+}
+
+/// The elastic energy of particle i's own row of pairs (the last step's), for energy().
+template <class Real>
+__global__ void row_elastic_kernel(int n, PairArrays<Real> q, double* out) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  double sum = 0;
+  for (int s = q.offset[i]; s < q.offset[i + 1]; ++s)
+    sum += static_cast<double>(q.result[s].elastic_energy);
+  out[i] = sum;
 }
 
 }  // namespace tridem::cuda

@@ -21,6 +21,8 @@ auto state_arrays(State& s) {
 }
 
 constexpr const char* kArrayNames[6] = {"x", "y", "theta", "vx", "vy", "omega"};
+constexpr const char* kEnergyArrayNames[kEnergyAccumulators] = {
+    "dissipated damping", "dissipated friction", "dissipated local damping", "wall work"};
 
 void put_u32_at(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
@@ -73,7 +75,8 @@ void check_sizes(const Header& h, std::size_t file_size, const std::string& sour
   if (h.payload_size < actual)
     throw RunError(fmt::format("{}: corrupt: {} bytes after the announced end of the state",
                                source, actual - h.payload_size));
-  if (h.particles > (h.payload_size / 48) || fmt_::fixed_payload_size(h.particles) > h.payload_size)
+  if (h.particles > (h.payload_size / fmt_::kBytesPerParticle) ||
+      fmt_::fixed_payload_size(h.particles) > h.payload_size)
     throw RunError(fmt::format("{}: corrupt: {} particles do not fit in {} bytes of state",
                                source, h.particles, h.payload_size));
 }
@@ -96,7 +99,7 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& so
   s.step = r.i64("step");
   s.time = r.f64("time");
   settings = read_settings(r);
-  if (r.remaining() < 48 * n + 8)
+  if (r.remaining() < fmt_::kBytesPerParticle * n + 8)
     throw RunError(fmt::format("{}: corrupt: {} particles do not fit in the {} bytes of state "
                                "left after the settings",
                                source, n, r.remaining()));
@@ -104,6 +107,10 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& so
     std::vector<double>& v = *state_arrays(s)[k];
     v.resize(n);
     for (double& value : v) value = r.f64(kArrayNames[k]);
+  }
+  for (int k = 0; k < kEnergyAccumulators; ++k) {
+    s.energy[k].resize(n);
+    for (double& value : s.energy[k]) value = r.f64(kEnergyArrayNames[k]);
   }
   const std::uint64_t m = r.u64("pair count");
   if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
@@ -137,6 +144,10 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   }
   for (const std::vector<double>* array : state_arrays(s))
     for (double v : *array) p.f64(v);
+  for (const std::vector<double>& sums : s.energy) {  // empty: zeros
+    for (double v : sums) p.f64(v);
+    for (std::size_t i = sums.size(); i < n; ++i) p.f64(0.0);
+  }
   p.u64(m);
   for (std::int32_t e : s.pair_emitter) p.i32(e);
   for (std::int32_t j : s.pair_partner) p.i32(j);

@@ -1,9 +1,9 @@
 #pragma once
-// The checkpoint file, version 2. All numbers little-endian; reals are IEEE doubles.
+// The checkpoint file, version 3. All numbers little-endian; reals are IEEE doubles.
 //
 //   header (48 bytes)
 //     0  char[8]  magic "TRIDEMCK"
-//     8  u32      version (2)
+//     8  u32      version (3)
 //    12  u32      precision of the solver: 0 double, 1 float
 //    16  u64      particle count n
 //    24  u64      scene fingerprint (scene_fingerprint)
@@ -15,25 +15,33 @@
 //     u32 k, then k physics settings (physics_settings()), each as two texts, key and
 //       value; a text is a u32 byte count and that many bytes of UTF-8
 //     f64[n] x, y, theta, vx, vy, omega (six arrays, in this order)
+//     f64[n] dissipated damping, friction, local damping, wall work (four arrays: the
+//            energy budget's cumulative per-particle sums, SolverState::energy)
 //     u64 m, the number of pairs with contact history
 //     i32[m] emitters, i32[m] partners, f64[6m] slips (six per pair, pair-major)
 //
 // The header has its own checksum so that a damaged count is caught before it is used
 // to size anything; the payload size is checked against the file size for the same
-// reason. Bump the version on any change to this layout.
+// reason. Bump the version on any change to this layout (version 1 had no physics
+// settings, version 2 no energy arrays).
 #include <cstddef>
 #include <cstdint>
 
 namespace tridem::checkpoint_format {
 
 inline constexpr char kMagic[8] = {'T', 'R', 'I', 'D', 'E', 'M', 'C', 'K'};
-inline constexpr std::uint32_t kVersion = 2;
+inline constexpr std::uint32_t kVersion = 3;
 inline constexpr std::size_t kHeaderSize = 48;
 inline constexpr std::size_t kHeaderCrcOffset = 44;
 inline constexpr std::size_t kPayloadCrcOffset = 40;
-/// The least bytes of a payload of n particles: step, time, the settings count, six
-/// arrays, m.
-inline constexpr std::size_t fixed_payload_size(std::uint64_t n) { return 8 + 8 + 4 + 48 * n + 8; }
+/// Per-particle arrays: six of state, four of energy.
+inline constexpr std::size_t kArraysPerParticle = 10;
+inline constexpr std::size_t kBytesPerParticle = 8 * kArraysPerParticle;
+/// The least bytes of a payload of n particles: step, time, the settings count, the
+/// per-particle arrays, m.
+inline constexpr std::size_t fixed_payload_size(std::uint64_t n) {
+  return 8 + 8 + 4 + kBytesPerParticle * n + 8;
+}
 inline constexpr std::size_t kBytesPerPair = 4 + 4 + 6 * 8;
 
 }  // namespace tridem::checkpoint_format

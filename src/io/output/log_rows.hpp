@@ -9,7 +9,8 @@
 namespace tridem::io {
 
 inline constexpr std::string_view kEnergyHeader =
-    "step,time,kinetic,momentum_x,momentum_y,angular_momentum\n";
+    "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
+    "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total\n";
 inline constexpr std::string_view kWallsHeader = "step,time,id,fx,fy,torque\n";
 
 void write_energy_row(OutFile&, const EnergyRow&);

@@ -123,9 +123,9 @@ void OutputSet::write_frame(const Snapshot& s) {
   }
 }
 
-void OutputSet::log(const Snapshot& s) {
+void OutputSet::log(const Snapshot& s, Vec2d gravity, const EnergyBudget& budget) {
   Impl& o = *impl_;
-  io::write_energy_row(o.energy, compute_energy(s));
+  io::write_energy_row(o.energy, compute_energy(s, gravity, budget));
   io::write_wall_rows(o.walls, s);
   // Flushed every time so that a long run can be watched, and survives a crash.
   o.energy.flush();

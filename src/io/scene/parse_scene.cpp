@@ -96,19 +96,28 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   const auto triangles = blocks(root, "triangle", source);
   const auto generators = blocks(root, "generate", source);
   scene.triangles.reserve(triangles.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i)
+  scene_detail::Provenance provenance;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
     scene.triangles.push_back(scene_detail::parse_triangle(*triangles[i], source, i + 1,
                                                            scene.triangles.size(),
                                                            scene.materials));
-  for (std::size_t i = 0; i < generators.size(); ++i)
+    provenance.triangle_where.push_back(where(source, triangles[i]->source()));
+  }
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const std::size_t first = scene.triangles.size();
     scene_detail::parse_generate(*generators[i], source, i + 1, scene.materials,
                                  scene.triangles);
+    provenance.generators.push_back({first, scene.triangles.size() - first, i + 1,
+                                     where(source, generators[i]->source())});
+  }
   if (scene.triangles.empty())
     throw SceneError(fmt::format(
         "{}: the scene has no triangles; add [[triangle]] or [[generate]] blocks", source));
 
   scene.source = std::move(source_name);
-  validate_scene(scene);  // a backstop: the checks above should already have caught everything
+  // A backstop for what the checks above should already have caught, and the one check
+  // that needs every triangle: initial overlaps.
+  scene_detail::validate_scene(scene, &provenance);
   return scene;
 }
 

@@ -82,6 +82,7 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
   if (!(s.max_penetration > 0 && s.max_penetration <= 1))
     r.fail("max_penetration",
            fmt::format("must be in (0, 1] (1 = no check), got {}", s.max_penetration));
+  s.relax_overlaps = r.boolean("relax_overlaps").value_or(s.relax_overlaps);
   r.reject_unknown_keys();
   return s;
 }
@@ -98,6 +99,12 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
   if (o.checkpoint_every < 0)
     r.fail("checkpoint_every",
            fmt::format("must be >= 0 (0 = no periodic checkpoints), got {}", o.checkpoint_every));
+  if (auto e = r.integer("energy_every")) {
+    if (*e < 0)
+      r.fail("energy_every",
+             fmt::format("must be >= 0 (0 = only step 0 and the last step), got {}", *e));
+    o.energy_every = *e;
+  }
   o.encoding = r.choice<Encoding>("vtk_encoding",
                                   {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}})
                    .value_or(o.encoding);

@@ -30,4 +30,22 @@ TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
 void parse_generate(const toml::table& table, const std::string& source, std::size_t number,
                     const std::vector<Material>& materials, std::vector<TriangleSpec>& out);
 
+/// Where each particle id of a scene file came from, so that a refusal about a pair of
+/// particles (an initial overlap) says which blocks to edit.
+struct Provenance {
+  std::vector<std::string> triangle_where;  ///< per [[triangle]], its "file:line:col"
+  struct Generated {
+    std::size_t first = 0, count = 0;  ///< ids [first, first + count)
+    std::size_t number = 0;            ///< 1-based among the [[generate]] blocks
+    std::string where;
+  };
+  std::vector<Generated> generators;
+
+  /// "particle id 12 ([[generate]] #1 at scene.toml:30:1, its triangle 3 of 200)"
+  std::string describe(std::size_t id) const;
+};
+
+/// validate_scene, naming where the particles of an overlapping pair come from.
+void validate_scene(const Scene& scene, const Provenance* provenance);
+
 }  // namespace tridem::scene_detail

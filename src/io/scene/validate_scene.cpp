@@ -1,5 +1,7 @@
 // Checks for scenes however they were made. A scene built in code has no line numbers, so
 // messages name the scene's source (if any), the material or the particle id instead.
+#include "core/initial_overlaps.hpp"
+#include "io/scene/scene_sections.hpp"
 #include "io/scene/triangle_shape.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
@@ -54,6 +56,8 @@ void check_settings(const Scene& scene, const Refuser& refuse) {
     refuse(fmt::format("[simulation.decomposition] capacity must be >= 2, got {}", d.capacity));
   if (scene.output.every < 0)
     refuse(fmt::format("[output] every must be >= 0, got {}", scene.output.every));
+  if (scene.output.energy_every && *scene.output.energy_every < 0)
+    refuse(fmt::format("[output] energy_every must be >= 0, got {}", *scene.output.energy_every));
   if (scene.output.dir.empty()) refuse("[output] dir must not be empty");
 }
 
@@ -108,13 +112,48 @@ void check_triangles(const Scene& scene, const Refuser& refuse) {
   }
 }
 
+/// Overlapping triangles hold contact energy the scene did not mean to give them; refused
+/// unless the scene asks for them to be pushed apart before the run (run_scene does it).
+void check_overlaps(const Scene& scene, const Refuser& refuse,
+                    const scene_detail::Provenance* provenance) {
+  if (scene.simulation.relax_overlaps) return;
+  const auto o = first_initial_overlap(scene.triangles);
+  if (!o) return;
+  auto describe = [&](std::size_t id) {
+    return provenance ? provenance->describe(id) : fmt::format("particle id {}", id);
+  };
+  refuse(fmt::format("{} and {} overlap by {:.6g} m (the shortest push along an edge normal "
+                     "that separates them; touching is allowed): their contact would start "
+                     "with energy that the scene does not hold. Move them apart, or set "
+                     "[simulation] relax_overlaps = true to push overlapping triangles apart "
+                     "before the run",
+                     describe(o->a), describe(o->b), o->depth));
+}
+
 }  // namespace
 
-void validate_scene(const Scene& scene) {
+namespace scene_detail {
+
+std::string Provenance::describe(std::size_t id) const {
+  if (id < triangle_where.size())
+    return fmt::format("particle id {} ([[triangle]] #{} at {})", id, id + 1, triangle_where[id]);
+  for (const Generated& g : generators)
+    if (id >= g.first && id < g.first + g.count)
+      return fmt::format("particle id {} ([[generate]] #{} at {}, its triangle {} of {})", id,
+                         g.number, g.where, id - g.first + 1, g.count);
+  return fmt::format("particle id {}", id);
+}
+
+void validate_scene(const Scene& scene, const Provenance* provenance) {
   const Refuser refuse(scene);
   check_settings(scene, refuse);
   check_materials(scene, refuse);
   check_triangles(scene, refuse);
+  check_overlaps(scene, refuse, provenance);
 }
+
+}  // namespace scene_detail
+
+void validate_scene(const Scene& scene) { scene_detail::validate_scene(scene, nullptr); }
 
 }  // namespace tridem

@@ -30,6 +30,9 @@ Checkpoint sample_checkpoint() {
   s.pair_emitter = {0, 0, 1};
   s.pair_partner = {1, 2, 2};
   s.pair_slip = {{1e-9, -0.0, 0, 0, 0, 2e-7}, {0, 0, 0, 1, 0, 0}, {-3e-8, 0, 0, 0, 0, 0}};
+  s.energy[kDissipatedDamping] = {0.25, 1e-300, 3};
+  s.energy[kDissipatedFriction] = {-0.0, 0, 7.5};
+  s.energy[kWallWork] = {-2, 0, 1.0 / 3};  // local damping left empty: zeros
   return c;
 }
 
@@ -59,6 +62,11 @@ TEST(CheckpointFile, RoundTripIsExact) {
   EXPECT_EQ(back.state.pair_partner, c.state.pair_partner);
   EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
   EXPECT_TRUE(std::signbit(back.state.pair_slip[0][1]));
+  EXPECT_EQ(back.state.energy[kDissipatedDamping], c.state.energy[kDissipatedDamping]);
+  EXPECT_EQ(back.state.energy[kDissipatedFriction], c.state.energy[kDissipatedFriction]);
+  EXPECT_TRUE(std::signbit(back.state.energy[kDissipatedFriction][0]));
+  EXPECT_EQ(back.state.energy[kDissipatedLocal], (std::vector<double>{0, 0, 0}));
+  EXPECT_EQ(back.state.energy[kWallWork], c.state.energy[kWallWork]);
 }
 
 TEST(CheckpointFile, WriteAndReadThroughDisk) {
@@ -97,14 +105,17 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 }
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
-  // Version 1 (before the physics settings) with a consistent header checksum: refused for
-  // the version, not as damage.
+  // Versions 1 (before the physics settings) and 2 (before the energy sums), and the next
+  // one (4), with a consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  bytes[8] = 1;
-  const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
-  for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
-  expect_refused(bytes, "version 1");
+  for (const int version : {1, 2, 4}) {
+    bytes[8] = static_cast<std::uint8_t>(version);
+    const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
+    for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
+    expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
+                              "; this tridem reads version 3");
+  }
 }
 
 TEST(CheckpointFile, ValidFileOfAnotherSceneOrPrecisionIsRefused) {

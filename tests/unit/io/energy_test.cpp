@@ -36,6 +36,13 @@ TEST(ComputeEnergy, HandComputedFreeParticlesOnly) {
   EXPECT_DOUBLE_EQ(e.momentum_x, 6);
   EXPECT_DOUBLE_EQ(e.momentum_y, 0);
   EXPECT_DOUBLE_EQ(e.angular_momentum, -14.5);
+  EXPECT_EQ(e.potential, 0) << "no gravity given";
+
+  // P = −Σ m g·c over free particles: 2·(−(1·1 + 2·(−10))) + 1·(−(−1·1 + 0.5·(−10))) = 38 + 6.
+  const EnergyRow g = compute_energy(s, {1, -10}, EnergyBudget{3, 1, 0.5, 0.25, 2});
+  EXPECT_DOUBLE_EQ(g.potential, 44);
+  EXPECT_DOUBLE_EQ(g.kinetic, 16.5);
+  EXPECT_DOUBLE_EQ(g.total(), 16.5 + 44 + 3 + 1 + 0.5 + 0.25 - 2);
 }
 
 TEST(ComputeEnergy, EmptyAndAllFixedGiveZero) {

@@ -18,12 +18,37 @@ TEST(LogFiles, EnergyCsvHasOneRowPerLog) {
   // Rows are flushed by log() itself: readable while the OutputSet is still open.
   const auto lines = test::read_lines(tmp.path() / "energy.csv");
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "step,time,kinetic,momentum_x,momentum_y,angular_momentum");
+  // The first six columns are the contract of the first versions; the budget follows.
+  EXPECT_EQ(lines[0],
+            "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
+            "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total");
   const EnergyRow e = compute_energy(s);
   EXPECT_EQ(test::numbers(lines[2]),
             (std::vector<double>{double(s.step), s.time, e.kinetic, e.momentum_x, e.momentum_y,
-                                 e.angular_momentum}));
+                                 e.angular_momentum, 0, 0, 0, 0, 0, 0, e.kinetic}));
   EXPECT_EQ(test::numbers(lines[1])[0], 1200);
+}
+
+TEST(LogFiles, EnergyCsvWritesTheBudgetAfterTheOldColumns) {
+  test::TempDir tmp;
+  const Snapshot s = test::sample_snapshot();
+  OutputSet out(OutputSettings{}, tmp.path());
+  const EnergyBudget b{1.5, 0.25, 0.125, 0.0625, 2.0};
+  const Vec2d g{0.5, -9.81};
+  out.log(s, g, b);
+  const auto lines = test::read_lines(tmp.path() / "energy.csv");
+  ASSERT_EQ(lines.size(), 2u);
+  const EnergyRow e = compute_energy(s, g, b);
+  double potential = 0;
+  for (std::size_t k = 0; k < s.size(); ++k)
+    if (s.motion[k] == Motion::Free) potential -= s.mass[k] * (g.x * s.x[k] + g.y * s.y[k]);
+  EXPECT_DOUBLE_EQ(e.potential, potential);
+  EXPECT_NE(potential, 0);
+  EXPECT_EQ(e.total(), e.kinetic + potential + 1.5 + 0.25 + 0.125 + 0.0625 - 2.0);
+  EXPECT_EQ(test::numbers(lines[1]),
+            (std::vector<double>{double(s.step), s.time, e.kinetic, e.momentum_x, e.momentum_y,
+                                 e.angular_momentum, e.potential, 1.5, 0.25, 0.125, 0.0625, 2.0,
+                                 e.total()}));
 }
 
 TEST(LogFiles, WallsCsvHasRowsOnlyForNonFreeParticles) {

@@ -40,12 +40,14 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
   EXPECT_EQ(s.simulation.decomposition.capacity, 128);
   EXPECT_DOUBLE_EQ(s.simulation.local_damping, 0.2);
   EXPECT_DOUBLE_EQ(s.simulation.max_penetration, 0.6);
+  EXPECT_TRUE(s.simulation.relax_overlaps);
 
   EXPECT_EQ(s.output.dir, "results");
   EXPECT_EQ(s.output.every, 100);
   EXPECT_FALSE(s.output.contacts);
   EXPECT_EQ(s.output.encoding, Encoding::Ascii);
   EXPECT_EQ(s.output.checkpoint_every, 500);
+  EXPECT_EQ(s.output.energy_every, 20);
 
   ASSERT_EQ(s.materials.size(), 2u);
   EXPECT_EQ(s.materials[0].name, "rock");
@@ -175,7 +177,7 @@ material = "m"
 vertices = [[0, 0], [0, 1], [1, 0]]
 [[triangle]]
 material = "m"
-vertices = [[0, 0], [1, 0], [0, 1]]
+vertices = [[2, 0], [3, 0], [2, 1]]
 )",
                               "cw.toml");
   for (const TriangleSpec& t : s.triangles)
@@ -185,7 +187,7 @@ vertices = [[0, 0], [1, 0], [0, 1]]
   EXPECT_DOUBLE_EQ(s.triangles[0].vertices[1].x, 1);
   EXPECT_DOUBLE_EQ(s.triangles[0].vertices[2].y, 1);
   // An already counter-clockwise one is left exactly as written.
-  EXPECT_DOUBLE_EQ(s.triangles[1].vertices[1].x, 1);
+  EXPECT_DOUBLE_EQ(s.triangles[1].vertices[1].x, 3);
 }
 
 TEST(SceneParse, IdsAreExplicitTrianglesThenGeneratedInFileOrder) {

@@ -1,0 +1,30 @@
+#pragma once
+// The solver's side of the energy budget in energy.csv (docs/output-format.md): what the
+// state alone does not show. Kinetic and gravitational energy come from the snapshot.
+//
+// The balance users can check:
+//   kinetic + potential + elastic + dissipated_damping + dissipated_friction
+//     + dissipated_local − wall_work = its value at step 0
+// up to the time discretisation (docs/model.md, "Energy").
+
+namespace tridem {
+
+struct EnergyBudget {
+  double elastic = 0;              ///< J/m stored in the contacts of the last step
+  double dissipated_damping = 0;   ///< J/m removed by the normal dashpots since step 0
+  double dissipated_friction = 0;  ///< J/m removed by Coulomb sliding since step 0
+  double dissipated_local = 0;     ///< J/m removed by Cundall's local damping since step 0
+  double wall_work = 0;            ///< J/m done on the grains by moving walls since step 0
+};
+
+/// Indices of the four cumulative per-particle accumulators a solver keeps (the state
+/// a restart needs, SolverState::energy).
+enum EnergyAccumulator : int {
+  kDissipatedDamping = 0,
+  kDissipatedFriction = 1,
+  kDissipatedLocal = 2,
+  kWallWork = 3,
+  kEnergyAccumulators = 4
+};
+
+}  // namespace tridem

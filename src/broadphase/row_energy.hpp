@@ -1,0 +1,45 @@
+#pragma once
+// The energy of one emitter's row of pairs over a step: what its dashpots and sliders
+// dissipated and the work the moving walls among them did on the grains. Each pair is in
+// exactly one row, so the per-particle sums add up to the whole without atomics; every
+// backend adds them when it writes the step's state (a step stopped by a blow-up adds
+// nothing).
+#include "physics/contact_force.hpp"
+
+namespace tridem {
+
+struct RowEnergy {
+  double damping = 0, friction = 0, wall_work = 0;
+};
+
+/// `wall_velocity(j, v, w)` is true only for a wall (non-free particle) that moves, and
+/// then gives its velocity and angular velocity (double, as the state); a wall at rest
+/// does no work. Work of a wall W over the step: −(F_W·v_W + τ_W·ω_W)·dt, F_W and τ_W the
+/// contact force and torque on it. A pair of two walls is never listed, so the partner of
+/// a wall is free.
+template <class Real, class Offset, class Index, class WallVelocity>
+TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, const Index* partner,
+                                      const physics::PairForce<Real>* result,
+                                      WallVelocity&& wall_velocity, double dt) {
+  RowEnergy sum;
+  Vec2d v_e{};
+  double w_e = 0;
+  const bool e_moves = wall_velocity(e, v_e, w_e);
+  for (auto s = offset[e]; s < offset[e + 1]; ++s) {
+    const physics::PairForce<Real>& r = result[s];
+    sum.damping += static_cast<double>(r.damping_dissipation);
+    sum.friction += static_cast<double>(r.friction_dissipation);
+    const Vec2d f{static_cast<double>(r.force_a.x), static_cast<double>(r.force_a.y)};
+    if (e_moves) {
+      sum.wall_work -= (dot(f, v_e) + static_cast<double>(r.torque_a) * w_e) * dt;
+    } else {
+      Vec2d v_j{};
+      double w_j = 0;
+      if (wall_velocity(partner[s], v_j, w_j))
+        sum.wall_work += (dot(f, v_j) - static_cast<double>(r.torque_b) * w_j) * dt;
+    }
+  }
+  return sum;
+}
+
+}  // namespace tridem
