@@ -79,7 +79,8 @@ int info(const std::string& path) {
   fmt::print("bounding box [{:g}, {:g}] x [{:g}, {:g}] m\n", info.box_lo.x, info.box_hi.x,
              info.box_lo.y, info.box_hi.y);
   fmt::print("longest edge {:g} m (free particles; the cell size)\n", info.longest_edge);
-  fmt::print("dt critical  {:.6g} s\n", info.dt_critical);
+  fmt::print("dt critical  {:.6g} s{}\n", info.dt_critical,
+             info.dt_limit.empty() ? "" : ", set by " + info.dt_limit);
   fmt::print("dt chosen    {:.6g} s ({}, {:.3g} x critical)\n", info.dt_chosen,
              info.dt_automatic ? fmt::format("automatic, safety {:g}", sim.safety) : "given",
              info.dt_chosen / info.dt_critical);

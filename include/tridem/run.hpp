@@ -56,6 +56,7 @@ struct SceneInfo {
   double longest_edge = 0;
   double dt_critical = 0, dt_chosen = 0;
   bool dt_automatic = true;
+  std::string dt_limit;                   ///< what sets dt_critical ("particle 3 pressed ...")
   std::size_t memory_bytes = 0;           ///< estimated memory of a run (solver and host)
   std::size_t gpu_memory_bytes = 0;       ///< GPU memory the cuda backend reserves at start
                                           ///< (0 in a build without CUDA)

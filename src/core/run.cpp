@@ -40,6 +40,9 @@ void print_start(std::FILE* log, const Solver& solver, const TimeStep& ts, std::
   fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
              solver.dt(), solver.dt() / ts.critical, ts.critical,
              ts.automatic ? ", automatic" : "", last, static_cast<double>(last) * solver.dt());
+  // What sets dt_crit, so that a user sees which contact (a thin wall?) costs the steps.
+  if (const std::string by = ts.limit.describe(); !by.empty())
+    fmt::print(log, "dt_crit set by {}\n", by);
 }
 
 void print_relaxation(std::FILE* log, const RelaxReport& r) {

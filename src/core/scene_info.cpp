@@ -57,6 +57,7 @@ SceneInfo describe_scene(const Scene& scene) {
       info.longest_edge = std::max(info.longest_edge, model.longest_edge[i]);
   }
   info.dt_critical = ts.critical;
+  info.dt_limit = ts.limit.describe();
   info.dt_chosen = ts.chosen;
   info.dt_automatic = ts.automatic;
   info.memory_bytes = scene.simulation.precision == Precision::Float

@@ -1,17 +1,44 @@
 #pragma once
-// The stable time step (contact-model.md, "Time integration"): the stiffest contact,
-// k = 3·p_max·L_max/h_min (p_max: the stiffest material pair a free particle can meet), on the lightest body gives dt_crit = 2·√(m_min/k). m_min takes
-// rotation into account: a load at distance r from the centroid of a body of inertia I
-// meets an effective mass I/r², smaller than m for slender triangles.
+// The stable time step (docs/model.md, "The time step"): for every free particle, the
+// stiffest set of contacts it can meet in this scene (each edge pressed along its whole
+// length, by the thinnest partner of each kind and both roles of the contact; walls and
+// prescribed triangles included), with the tangential springs and dashpots of the contact
+// law (physics/stability.hpp), gives the limit of symplectic Euler; dt_crit is the
+// smallest over the particles.
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
 
+#include <string>
+
 namespace tridem {
+
+/// Where dt_crit comes from, for messages.
+struct StepLimit {
+  std::int64_t particle = -1;  ///< the free particle with the smallest limit
+  std::int64_t partner = -1;   ///< the thinnest partner of the kind that sets it
+  bool partner_free = true;    ///< false: a fixed or prescribed triangle
+  double partner_height = 0;   ///< its smallest height, m
+  double particle_height = 0;  ///< the particle's smallest height, m
+  double damping_ratio = 0;    ///< the largest ζ it meets
+
+  /// "particle 3 pressed on every edge by fixed or prescribed particle 0 (0.0001 m
+  /// thick: a thin wall ...)", or "" when no particle is free.
+  std::string describe() const;
+  /// True when the partner is a wall much thinner than the particle: its contact is stiff.
+  bool thin_wall() const { return !partner_free && partner_height < 0.5 * particle_height; }
+};
 
 struct TimeStep {
   double critical = 0;   ///< dt_crit, s (infinite when nothing moves by forces)
   double chosen = 0;     ///< the dt the run uses
   bool automatic = true; ///< dt was left out of the scene
+  StepLimit limit;       ///< what sets dt_crit
+
+  /// "dt_crit = 1.2e-05 s, set by particle 3 pressed on every edge by ..." for messages.
+  std::string describe() const;
+  /// "lower dt or [simulation] safety", and ", or make the thin wall (particle 0) thicker"
+  /// when a thin wall sets dt_crit. Never a larger penalty: it would stiffen the contact.
+  std::string cure() const;
 };
 
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model);

@@ -45,6 +45,7 @@ TOML
 # A run writes every output, with the contract headers.
 expect_ok "$tridem" run pile.toml --quiet
 grep -q "^dt = .* x dt_crit" out.txt || fail "run does not print dt and its ratio"
+grep -q "^dt_crit set by particle" out.txt || fail "run does not say what sets dt_crit"
 grep -q "triangle-steps/s" out.txt || fail "run does not print the summary"
 [ "$(head -1 pile_out/final.csv)" = "id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3" ] || fail "final.csv header"
 [ "$(head -1 pile_out/energy.csv)" = "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,dissipated_damping,dissipated_friction,dissipated_local,wall_work,total" ] || fail "energy.csv header"
@@ -93,6 +94,7 @@ expect_ok timeout 60 "$tridem" run every1.toml --quiet --out every1_out
 # info describes the scene.
 expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"
+grep -q "dt critical .* set by particle" out.txt || fail "info does not say what sets dt critical"
 grep -q "memory" out.txt || fail "info lacks memory"
 if [ "$have_cuda" = 1 ]; then
   grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"

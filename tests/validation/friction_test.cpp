@@ -23,6 +23,9 @@ using Friction = test::BackendTest;
 double vertex_drop_rebound(double mu, const test::SolverChoice& choice) {
   Scene s = test::empty_scene(1e8, 2000, mu, 0.0);
   s.materials[0].restitution = 0.6;
+  // The same step with and without friction (the automatic one counts the tangential
+  // springs only where μ > 0, and a different step would change the rebound by 2e-5).
+  s.simulation.dt = 1e-6;
   s.triangles.push_back(test::floor_triangle(-1, 1));
   const double side = 0.2, h = side * std::sqrt(3.0) / 2;
   s.triangles.push_back(

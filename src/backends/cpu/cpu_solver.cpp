@@ -36,6 +36,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       gravity_(scene.simulation.gravity),
       local_damping_(scene.simulation.local_damping),
       penetration_limit_(static_cast<Real>(scene.simulation.max_penetration)),
+      limit_(ts),
       n_materials_(static_cast<int>(scene.materials.size())),
       finder_(model.longest_edge, model.motion),
       filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
@@ -219,7 +220,8 @@ void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
                       static_cast<double>(x_[j]),
                       static_cast<double>(y_[j]),
                       static_cast<double>(result_[s].depth)};
-  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(penetration_limit_)));
+  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(penetration_limit_),
+                                     static_cast<double>(dt_), limit_));
 }
 
 template <class Real>
@@ -261,7 +263,7 @@ void CpuSolver<Real>::integrate() {
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);
     const physics::Pose<double> p = advanced_pose(i);
-    throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_));
+    throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
   }
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {

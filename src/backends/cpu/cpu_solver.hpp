@@ -59,6 +59,7 @@ class CpuSolver final : public Solver {
   Vec2d gravity_;
   double local_damping_;
   Real penetration_limit_;  ///< largest PairForce::depth accepted
+  TimeStep limit_;          ///< dt_crit and what sets it, for the blow-up messages
   std::int64_t step_ = 0;
   double time_ = 0;
 

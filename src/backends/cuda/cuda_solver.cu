@@ -61,6 +61,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
 
   params_.dt = ts.chosen;
+  limit_ = ts;
   params_.gravity = scene.simulation.gravity;
   params_.local_damping = scene.simulation.local_damping;
   params_.n_materials = static_cast<int>(scene.materials.size());
@@ -281,7 +282,7 @@ void CudaSolver<Real>::report_runaway(int i) const {
   physics::advance_body(pose, true, Vec2d{static_cast<double>(f[0]), static_cast<double>(f[1])},
                         static_cast<double>(f[2]), inv_mass, inv_inertia, params_.gravity,
                         params_.local_damping, params_.dt);
-  throw RunError(runaway_message(step_ + 1, i, v[0], v[1], norm(pose.v), params_.dt));
+  throw RunError(runaway_message(step_ + 1, i, v[0], v[1], norm(pose.v), params_.dt, limit_));
 }
 
 template <class Real>
@@ -301,7 +302,8 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
   };
   const Vec2d a = position(emitter), b = position(j);
   const DeepPair pair{emitter, j, a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
-  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth)));
+  throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth),
+                                     static_cast<double>(params_.dt), limit_));
 }
 
 template <class Real>

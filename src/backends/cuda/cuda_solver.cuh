@@ -61,6 +61,7 @@ class CudaSolver final : public Solver {
   ContactFilter filter_;  ///< single-domain's contact test
   Real margin_;  ///< skin on each side of a build box
   StepParams<Real> params_{};
+  TimeStep limit_;         ///< dt_crit and what sets it, for the blow-up messages
   std::int64_t step_ = 0;
   double time_ = 0;
   bool rebuild_ = true;

@@ -1,4 +1,5 @@
 // The stable time step on a case computed by hand, and the refusal of an unstable dt.
+// (docs/model.md, "The time step")
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
 #include "support/scene_builder.hpp"
@@ -17,20 +18,39 @@ Scene right_triangle_scene() {
   return s;
 }
 
-TEST(TimeStep, CriticalStepOfRightTriangleByHand) {
-  const Scene s = right_triangle_scene();
+// An equilateral triangle of side a alone meets, at worst, copies of itself on all three
+// edges: per metre of edge k = 2·3p(1/h + 1/h) (both roles; 2 for two free bodies), h =
+// a√3/2. Translation: k·a·Σ n nᵀ = 1.5·k·a; rotation: 3·k·a³/12 over I = m·a²/12, i.e.
+// 3·k·a/m, the larger. Undamped: dt_crit = 2/ω.
+TEST(TimeStep, CriticalStepOfEquilateralTriangleByHand) {
+  Scene s = test::empty_scene(1e6, 1000);
+  const double a = 0.2, h = a * std::sqrt(3.0) / 2;
+  s.triangles.push_back(test::triangle({0, 0}, {a, 0}, {a / 2, h}));
   const ParticleModel m = build_particle_model(s);
-  // Area 6, m = 6000; offsets from the centroid (1, 4/3): Σ|r|² = 50/3, I = m·Σ/12.
-  EXPECT_DOUBLE_EQ(m.mass[0], 6000.0);
-  EXPECT_NEAR(m.inertia[0], 6000.0 * (50.0 / 3.0) / 12.0, 1e-9);
-  // k = 3·p·L/h = 3e6·5/2.4 (L = 5, h = 2·6/5); m_min = min(m, I/r_max²), the farthest
-  // vertex being (0, 4) with |r|² = 1 + (8/3)² = 73/9.
-  const double k = 3e6 * 5.0 / 2.4;
-  const double m_min = std::min(6000.0, m.inertia[0] / (73.0 / 9.0));
+  const double k = 2 * 3e6 * (2 / h), omega2 = 3 * k * a / m.mass[0];
   const TimeStep ts = estimate_time_step(s, m);
-  EXPECT_NEAR(ts.critical, 2 * std::sqrt(m_min / k), 1e-12);
+  EXPECT_NEAR(ts.critical, 2 / std::sqrt(omega2), 1e-12 * ts.critical);
   EXPECT_TRUE(ts.automatic);
   EXPECT_NEAR(ts.chosen, 0.1 * ts.critical, 1e-15);
+  EXPECT_EQ(ts.limit.particle, 0);
+  EXPECT_TRUE(ts.limit.partner_free);
+
+  // Damping: each edge's dashpot 2ζ√(m_eff·k_pair) (one partner per edge: the scene has
+  // one particle; m_eff = m/2 against a copy) is 2ζ√(m_eff/k_pair) times its springs,
+  // k_pair = k·a/2, so λ_C is that times λ_K.
+  s.materials[0].damping = 0.3;
+  const double lambda_c = 2 * 0.3 * std::sqrt(0.5 * m.mass[0] / (k * a / 2)) * omega2;
+  EXPECT_NEAR(estimate_time_step(s, m).critical,
+              4 / (lambda_c + std::sqrt(lambda_c * lambda_c + 4 * omega2)), 1e-9 * ts.critical);
+  EXPECT_LT(estimate_time_step(s, m).critical, ts.critical);
+
+  // A fixed wall thinner than the grain stiffens its contact and shortens the step.
+  s.materials[0].damping = 0;
+  s.triangles.push_back(test::triangle({-1, -0.01}, {1, -0.01}, {0, -0.001}, {}, Motion::Fixed));
+  const TimeStep walled = estimate_time_step(s, build_particle_model(s));
+  EXPECT_LT(walled.critical, 0.5 * ts.critical);
+  EXPECT_FALSE(walled.limit.partner_free);
+  EXPECT_EQ(walled.limit.partner, 1);
 }
 
 TEST(TimeStep, GivenStepAboveCriticalIsRefusedUnlessForced) {
