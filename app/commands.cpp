@@ -72,8 +72,10 @@ int info(const std::string& path) {
   fmt::print("materials    {}\n", scene.materials.size());
   for (const Material& m : scene.materials)
     fmt::print("  {:<12} density {:g} kg/m3, penalty {:g} Pa, tangential {:g} Pa, "
-               "friction {:g}, damping {:g}\n",
-               m.name, m.density, m.penalty, m.tangential_penalty, m.friction, m.damping);
+               "friction {:g}, {}\n",
+               m.name, m.density, m.penalty, m.tangential_penalty, m.friction,
+               m.restitution ? fmt::format("restitution {:g}", *m.restitution)
+                             : fmt::format("damping {:g} (legacy)", m.damping));
   fmt::print("bounding box [{:g}, {:g}] x [{:g}, {:g}] m\n", info.box_lo.x, info.box_hi.x,
              info.box_lo.y, info.box_hi.y);
   fmt::print("longest edge {:g} m (free particles; the cell size)\n", info.longest_edge);

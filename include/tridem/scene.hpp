@@ -41,7 +41,10 @@ struct Material {
   double penalty = 0;             ///< normal penalty p, Pa
   double tangential_penalty = 0;  ///< friction spring p_t, Pa (reader default 0.1·p)
   double friction = 0;            ///< Coulomb μ
-  double damping = 0;             ///< normal damping ratio ζ in [0, 1)
+  /// Coefficient of restitution e in (0, 1] of an impact of two grains of this material,
+  /// whatever the contact's shape; absent: set by `damping`.
+  std::optional<double> restitution;
+  double damping = 0;  ///< legacy: the face-contact damping ratio ζ in [0, 1) (e = exp(−πζ/√(1−ζ²)))
 };
 
 /// How a triangle moves: by forces, not at all, or at a prescribed constant velocity.

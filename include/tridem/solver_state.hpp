@@ -8,11 +8,12 @@
 //    restarted from its state is bit-identical too.
 //  - Per-particle arrays (x, y, theta, vx, vy, omega) have one entry per particle, in id
 //    order. Forces are not state: each step recomputes them before integrating.
-//  - The contact history is the friction slip of the pairs of the last completed step, as
-//    three parallel arrays in emitter-major, partner-ascending order (strictly increasing
-//    (emitter, partner)); the emitter of a pair is the one that computes it (see
-//    ARCHITECTURE.md). Only pairs with a slip other than +0.0 need to be listed: a pair
-//    that is absent starts from zero slip, exactly as a new contact does.
+//  - The contact history is the tangential spring state u = √k_t·ξ of the pairs of the
+//    last completed step (physics::PairSlip), as three parallel arrays in emitter-major,
+//    partner-ascending order (strictly increasing (emitter, partner)); the emitter of a
+//    pair is the one that computes it (see ARCHITECTURE.md). Only pairs with a history
+//    other than +0.0 need to be listed: a pair that is absent starts from zero, exactly as
+//    a new contact does.
 //  - The energy budget's cumulative sums (dissipations, wall work) are kept per particle,
 //    as the solver accumulates them, so that a restarted run sums them in the same order
 //    and writes the same energy.csv: energy[k] has one entry per particle, or is empty
@@ -28,7 +29,7 @@
 
 namespace tridem {
 
-inline constexpr int kSlipsPerPair = 6;  ///< physics::kEdgeContacts: 2 roles x 3 edges
+inline constexpr int kSlipsPerPair = 2;  ///< physics::kHistoryValues: u = √k_t·ξ (x, y)
 
 struct SolverState {
   std::int64_t step = 0;

@@ -11,7 +11,7 @@
 
 namespace tridem {
 
-static_assert(kSlipsPerPair == physics::kEdgeContacts);
+static_assert(kSlipsPerPair == physics::kHistoryValues);
 
 /// +0.0 is the slip of a pair without history; anything else, -0.0 included, must be kept
 /// for the restarted run to be bit-identical.

@@ -27,6 +27,10 @@ struct ParticleModel {
 /// particle for a degenerate triangle, a non-finite value or a bad material index.
 ParticleModel build_particle_model(const Scene& scene);
 
+/// The material's coefficient of restitution: `restitution`, or the one its legacy damping
+/// ratio ζ stands for, exp(−πζ/√(1−ζ²)) (docs/scene-format.md).
+double material_restitution(const Material& m);
+
 /// Contact law for every ordered pair of materials, row-major (a·n + b).
 std::vector<physics::ContactLaw<double>> contact_law_table(const std::vector<Material>& m);
 

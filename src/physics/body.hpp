@@ -20,13 +20,28 @@ TRIDEM_HD inline Vec2<Real> velocity_at(const Body<Real>& b, Vec2<Real> point) {
   return b.v + cross(b.w, point - b.c);
 }
 
-/// Contact law of a pair of materials (mixing rules in docs/model.md).
+/// Damping ratios are tabulated at these load exponents n_eff (docs/model.md, "Damping").
+constexpr int kDampingNodes = 3;  ///< n_eff = 1, 1.5, 2
+
+/// Contact law of a pair of materials (mixing rules in docs/model.md). Built on the host by
+/// physics::contact_law (restitution.hpp), which calibrates the damping ratios.
 template <class Real>
 struct ContactLaw {
   Real penalty;             ///< p, Pa
   Real tangential_penalty;  ///< p_t, Pa
   Real friction;            ///< μ
-  Real damping;             ///< ζ
+  /// ζ of the dashpot c = 2ζ√(m_eff·k) at n_eff = 1, 1.5, 2 (face … vertex contacts):
+  /// the values that give the pair's restitution whatever the contact's shape.
+  Real damping[kDampingNodes];
 };
+
+/// The law in another precision (solvers convert the double table once).
+template <class To, class From>
+inline ContactLaw<To> law_cast(const ContactLaw<From>& l) {
+  ContactLaw<To> r{static_cast<To>(l.penalty), static_cast<To>(l.tangential_penalty),
+                   static_cast<To>(l.friction), {}};
+  for (int i = 0; i < kDampingNodes; ++i) r.damping[i] = static_cast<To>(l.damping[i]);
+  return r;
+}
 
 }  // namespace tridem::physics

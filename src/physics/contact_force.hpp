@@ -1,25 +1,32 @@
 #pragma once
-// The potential contact force of one pair of rigid triangles, with friction and normal
-// damping: the single definition every backend calls (contact-model.md).
+// The potential contact force of one pair of rigid triangles, with friction and damping:
+// the single definition every backend calls (docs/model.md, "The potential contact force").
 //
-// For each ordered role (contactor C, target T) — (a, b) then (b, a) — every edge of C is
-// clipped to the three sub-triangles of T, where φ_T is linear. The pieces of one edge
-// share its outward normal n, so their loads p∫φ_T dΓ add to one force −p·I·n acting at
-// the load-weighted centroid of the pieces: this gives the exact resultant and moment of
-// the distributed force. Friction and damping act per such edge contact at that point:
-// the edge contact is what carries the stored tangential slip, so the slip of a pair is
-// six numbers (2 roles × 3 edges).
+// For each ordered role (contactor C, target T) — (a, b) then (b, a) — the potential of T
+// along each edge of C is the minimum of three linear functions clipped at zero; its
+// integral and first moment are exact between the breakpoints. The loads of one edge share
+// its outward normal, so they add to one force −p·I·n at their centroid: the exact
+// resultant and moment of the distributed force.
+//
+// Friction and damping act at ONE contact per pair: the normal is the direction of the
+// pair's resultant potential force, the point the load-weighted centroid of all edges.
+// The tangential history of a pair is a 2D elastic displacement that turns with the
+// contact (PairSlip).
 #include "physics/body.hpp"
+#include "physics/damping.hpp"
 #include "physics/potential.hpp"
 
 namespace tridem::physics {
 
-constexpr int kEdgeContacts = 6;  ///< 2 roles × 3 contactor edges
+constexpr int kEdgeContacts = 6;  ///< 2 roles × 3 contactor edges carry the normal loads
+constexpr int kHistoryValues = 2;  ///< the tangential displacement, x and y
 
-/// Tangential slip of each edge contact of a pair, kept from step to step.
+/// Tangential history of a pair's contact, kept from step to step: u = √k_t·ξ with ξ the
+/// elastic tangential displacement (world frame; units √(N/m)·m = √(J/m)). The spring
+/// force on a is −√k_t·u and its energy ½|u|². Zero for a new contact.
 template <class Real>
 struct PairSlip {
-  Real s[kEdgeContacts];
+  Real s[kHistoryValues];
 };
 
 /// What a pair does to its two bodies during one step.
@@ -28,27 +35,38 @@ struct PairForce {
   Vec2<Real> force_a{};  ///< on a; b receives −force_a
   Real torque_a = 0;
   Real torque_b = 0;
-  Vec2<Real> point{};    ///< where the normal loads act on average (for output)
+  Vec2<Real> point{};    ///< where the normal loads act on average: the contact point
   /// Penetration depth: the largest φ reached by either boundary inside the other
   /// triangle, 0 at its edge and 1 at its centroid (the blow-up check reads it).
   Real depth = 0;
+  /// Energy stored in the pair (J/m) at the configuration the force is computed for:
+  /// the normal potential p·(∫_Ω φ_a dA + ∫_Ω φ_b dA) over the overlap Ω, plus the
+  /// tangential spring's ½·|u|² (= ½·k_t·|ξ|²) with the history written back by this step.
+  Real elastic_energy = 0;
+  /// Energy removed by the normal and tangential dashpots over this step (J/m):
+  /// c_n·v_n²·dt + the tangential dashpot's −f_d·v_t·dt. >= 0 except when the Coulomb cap
+  /// trims a sticking force that the dashpot had raised.
+  Real damping_dissipation = 0;
+  /// Energy removed by Coulomb sliding over this step (J/m): μ·f_n times the slip, the
+  /// part of the step's tangential displacement that the spring did not keep. >= 0.
+  Real friction_dissipation = 0;
   bool touching = false;
-  // The pair's share of the energy budget (energy.csv). A minimal version, isolated in
-  // OverlapSums below and a few marked lines of pair_force: normal energy p∫_Ω(φ_a + φ_b)dA at the positions of this step plus
-  // the tangential springs' ½p_t·s² at the new slips; dashpots and sliding over this step.
-  Real elastic_energy = 0;        ///< J/m stored in the pair
-  Real damping_dissipation = 0;   ///< J/m removed by the dashpots over this step (>= 0)
-  Real friction_dissipation = 0;  ///< J/m removed by Coulomb sliding over this step (>= 0)
 };
 
 /// The load of one contactor edge inside a target triangle.
 template <class Real>
 struct EdgeLoad {
-  Real integral = 0;    ///< ∫ φ_T dΓ over the edge's pieces inside T, metres
+  Real integral = 0;    ///< ∫ φ_T dΓ over the edge's part inside T, metres
   Vec2<Real> point{};   ///< its centroid (valid when integral > 0)
-  Real stiffness = 0;   ///< Σ 3ℓ/h over the pieces: contact stiffness over p
-  Real peak = 0;        ///< the largest φ_T on the pieces (φ is linear: at an end)
-  Real inside = 0;      ///< fraction of the edge inside the target (for the overlap area)
+  Real stiffness = 0;   ///< Σ 3ℓ/h_k over the linear pieces: contact stiffness over p
+  Real peak = 0;        ///< the largest φ_T on the edge (at a breakpoint or an end)
+  /// Σ ℓ·∇φ_T over the pieces (|∇φ_T| = 3/h_k): the stiffness matrix of the edge's load
+  /// is p·n ⊗ gradient, n the contactor edge's outward normal.
+  Vec2<Real> gradient{};
+  /// Σ ℓ·max(φ0, φ1) over the pieces: with the integral it gives the load exponent n_eff
+  /// (a uniform load has 1, a triangular one 2).
+  Real shape = 0;
+  Vec2<Real> q0{}, q1{};  ///< ends of the part inside T (equal when there is none)
 };
 
 /// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
@@ -97,93 +115,6 @@ TRIDEM_HD inline bool edge_may_enter(const EdgeAreas<Real>& r, int e) {
   return true;
 }
 
-/// What edge_load needs of the target, computed once per role.
-template <class Real>
-struct TargetShape {
-  Triangle<Real> tri;
-  Vec2<Real> centroid;
-  Real to_phi;          ///< 3/(2A): φ in sub-triangle k is to_phi times edge area k
-  Real edge_length[3];  ///< |v_k+1 − v_k|
-};
-
-template <class Real>
-TRIDEM_HD inline TargetShape<Real> target_shape(const Triangle<Real>& t, Real area,
-                                                Vec2<Real> centroid) {
-  TargetShape<Real> s{t, centroid, Real(3) / (Real(2) * area), {}};
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) s.edge_length[k] = norm(t.v[(k + 1) % 3] - t.v[k]);
-  return s;
-}
-
-/// The contactor edge p0 + t·(p1 − p0), t in [0, 1], is clipped to the target once; the
-/// three centroid rays then split the inside part among the sub-triangles S_k = {ray_k >=
-/// 0, ray_k+1 <= 0}, where φ is linear. Every clipping value is a signed area, linear
-/// along the edge, so the areas at the two ends give them all.
-template <class Real>
-TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
-                                          const TargetShape<Real>& target) {
-  EdgeLoad<Real> load;
-  Real f0[3], fd[3];
-  Real t_lo = Real(0), t_hi = Real(1);
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) {
-    f0[k] = edge_area(target.tri, k, p0);
-    fd[k] = edge_area(target.tri, k, p1) - f0[k];
-    if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
-  }
-  load.inside = t_hi - t_lo;
-  // Where the edge crosses each ray: each ray bounds two sub-triangles.
-  Real r0[3], rd[3], crossing[3];
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) {
-    const Vec2<Real> ray = target.tri.v[k] - target.centroid;
-    r0[k] = cross(ray, p0 - target.centroid);
-    rd[k] = cross(ray, p1 - target.centroid) - r0[k];
-    crossing[k] = rd[k] != Real(0) ? -r0[k] / rd[k] : Real(0);
-  }
-  const Vec2<Real> d = p1 - p0;
-  const Real edge_length = norm(d);
-  Vec2<Real> moment{};
-  TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) {
-    const int next = (k + 1) % 3;
-    Real t0 = t_lo, t1 = t_hi;
-    // ray_k >= 0 ...
-    if (!clip_at_crossing(r0[k], rd[k], crossing[k], t0, t1)) continue;
-    // ... and ray_k+1 <= 0.
-    if (!clip_at_crossing(-r0[next], -rd[next], crossing[next], t0, t1)) continue;
-    const Real phi0 = target.to_phi * (f0[k] + t0 * fd[k]);
-    const Real phi1 = target.to_phi * (f0[k] + t1 * fd[k]);
-    const Real length = edge_length * (t1 - t0);
-    const Vec2<Real> q0 = p0 + d * t0, q1 = p0 + d * t1;
-    const LinearLoad<Real> piece = linear_load(q0, q1, length, phi0, phi1);
-    load.peak = phi0 > load.peak ? phi0 : load.peak;
-    load.peak = phi1 > load.peak ? phi1 : load.peak;
-    load.integral += piece.integral;
-    moment += piece.point * piece.integral;
-    // Piece of length ℓ in S_k of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k.
-    load.stiffness += length * target.to_phi * target.edge_length[k];
-  }
-  if (load.integral > Real(0)) load.point = moment / load.integral;
-  return load;
-}
-
-/// The same for edge e of a whole contactor (tests and tools).
-template <class Real>
-TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
-                                          const Triangle<Real>& target, Real target_area,
-                                          Vec2<Real> target_centroid) {
-  return edge_load(contactor.v[e], contactor.v[(e + 1) % 3],
-                   target_shape(target, target_area, target_centroid));
-}
-
-/// Mass that sets the damping of a pair: the reduced mass, or the free body's mass when
-/// the other is moved by prescription (mass 0).
-template <class Real>
-TRIDEM_HD inline Real effective_mass(Real ma, Real mb) {
-  return (ma > Real(0) && mb > Real(0)) ? ma * mb / (ma + mb) : ma + mb;
-}
-
 /// Element i of a small array with a run-time index, without forcing the array out of
 /// registers on the device (the loop unrolls to predicated moves).
 template <class T, int N>
@@ -208,32 +139,111 @@ TRIDEM_HD inline Vec2<Real> vertex(const Triangle<Real>& t, int k) {
   return k == 0 ? t.v[0] : (k == 1 ? t.v[1] : t.v[2]);
 }
 
-/// The overlap Ω of a pair, gathered edge contact by edge contact, for the elastic energy
-/// p∫_Ω(φ_a + φ_b)dA. In each sub-triangle φ_T = 1 + ∇φ·(P − c_T), so div(φ_T(P − c_T)) =
-/// 3φ_T − 1 and, φ_T being 0 on ∂T, ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] over the
-/// contactor edges in T (I their load integral, n their outward normal, point their load
-/// centroid). |Ω| = ½∮cross(P − R, dP) over the clipped edges of both roles; a clipped
-/// piece of edge (p0, d) gives cross(p0 − R, d)·inside.
+/// What edge_load needs of the target, computed once per role.
 template <class Real>
-struct OverlapSums {
-  Real moment = 0;      ///< Σ I·n·(point − c_T)
-  Real twice_area = 0;  ///< 2|Ω|
-
-  TRIDEM_HD void add(const EdgeLoad<Real>& load, Vec2<Real> p0, Vec2<Real> d, Vec2<Real> normal,
-                     Vec2<Real> target_centroid, Vec2<Real> reference) {
-    moment += load.integral * dot(normal, load.point - target_centroid);
-    twice_area += cross(p0 - reference, d) * load.inside;
-  }
-  /// p∫_Ω(φ_a + φ_b)dA = (p/3)(Σ + 2|Ω|); never negative (rounding aside).
-  TRIDEM_HD Real normal_energy(Real penalty) const {
-    const Real e = penalty * (moment + twice_area) / Real(3);
-    return e > Real(0) ? e : Real(0);
-  }
+struct TargetShape {
+  Triangle<Real> tri;
+  Vec2<Real> centroid;
+  Real to_phi;          ///< 3/(2A): φ in sub-triangle k is to_phi times edge area k
+  Real edge_length[3];  ///< |v_k+1 − v_k|
 };
 
-/// Force, torques and new slips of the pair (a, b) over a step dt. `slip` holds the
-/// slips of the previous step on entry (zeros for a new contact) and the new ones on exit;
-/// an edge contact that has opened gets slip 0.
+template <class Real>
+TRIDEM_HD inline TargetShape<Real> target_shape(const Triangle<Real>& t, Real area,
+                                                Vec2<Real> centroid) {
+  TargetShape<Real> s{t, centroid, Real(3) / (Real(2) * area), {}};
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) s.edge_length[k] = norm(t.v[(k + 1) % 3] - t.v[k]);
+  return s;
+}
+
+/// The contactor edge p0 + t·(p1 − p0), t in [0, 1]. Along it φ_T(t) = max(0, min_k g_k(t))
+/// with g_k = to_phi·(edge area k), linear in t (inside T the minimum is Munjiza's φ,
+/// outside it is negative). The part where the minimum is positive is [t_lo, t_hi] (three
+/// half-plane clips); being concave, the minimum takes its lines in order of falling slope,
+/// so walking from t_lo each piece ends where the first line of smaller slope crosses the
+/// active one. Each piece is integrated once, whatever line a tie picks: an edge lying on a
+/// centroid ray (two lines equal along it) is no longer counted twice.
+template <class Real>
+TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
+                                          const TargetShape<Real>& target) {
+  EdgeLoad<Real> load;
+  Real f0[3], fd[3];
+  Real t_lo = Real(0), t_hi = Real(1);
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    f0[k] = edge_area(target.tri, k, p0);
+    fd[k] = edge_area(target.tri, k, p1) - f0[k];
+    if (!clip_to_half_plane(f0[k], fd[k], t_lo, t_hi)) return load;
+  }
+  const Vec2<Real> d = p1 - p0;
+  const Real edge_length = norm(d);
+  load.q0 = p0 + d * t_lo;
+  load.q1 = p0 + d * t_hi;
+  // The active line at t_lo: the smallest value there; on a tie, the one that falls faster.
+  int k = 0;
+  Real gk = f0[0] + t_lo * fd[0];
+  TRIDEM_UNROLL
+  for (int j = 1; j < 3; ++j) {
+    const Real gj = f0[j] + t_lo * fd[j];
+    if (gj < gk || (gj == gk && fd[j] < pick(fd, k))) {
+      k = j;
+      gk = gj;
+    }
+  }
+  Vec2<Real> moment{};
+  Real t = t_lo;
+  for (int piece = 0; piece < 3; ++piece) {
+    const Real f0k = pick(f0, k), fdk = pick(fd, k);
+    Real t_next = t_hi;
+    int next = -1;
+    TRIDEM_UNROLL
+    for (int j = 0; j < 3; ++j) {
+      if (j == k || !(fd[j] < fdk)) continue;
+      const Real crossing = (f0[j] - f0k) / (fdk - fd[j]);
+      if (crossing < t_next) {
+        t_next = crossing;
+        next = j;
+      }
+    }
+    t_next = t_next > t ? t_next : t;  // rounding: never step back
+    Real phi0 = target.to_phi * (f0k + t * fdk);
+    Real phi1 = target.to_phi * (f0k + t_next * fdk);
+    phi0 = phi0 > Real(0) ? phi0 : Real(0);  // zero at t_lo and t_hi up to rounding
+    phi1 = phi1 > Real(0) ? phi1 : Real(0);
+    const Real length = edge_length * (t_next - t);
+    const Vec2<Real> q0 = p0 + d * t, q1 = p0 + d * t_next;
+    const LinearLoad<Real> l = linear_load(q0, q1, length, phi0, phi1);
+    const Real high = phi0 > phi1 ? phi0 : phi1;
+    load.peak = high > load.peak ? high : load.peak;
+    load.integral += l.integral;
+    moment += l.point * l.integral;
+    // A piece of length ℓ in S_k, of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k, and
+    // ∇φ = to_phi·perp(e_k) (|∇φ| = 3/h_k).
+    load.stiffness += length * target.to_phi * pick(target.edge_length, k);
+    const Vec2<Real> e_k = vertex(target.tri, (k + 1) % 3) - vertex(target.tri, k);
+    load.gradient += Vec2<Real>{-e_k.y, e_k.x} * (length * target.to_phi);
+    load.shape += length * high;
+    if (next < 0) break;
+    t = t_next;
+    k = next;
+  }
+  if (load.integral > Real(0)) load.point = moment / load.integral;
+  return load;
+}
+
+/// The same for edge e of a whole contactor (tests and tools).
+template <class Real>
+TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e,
+                                          const Triangle<Real>& target, Real target_area,
+                                          Vec2<Real> target_centroid) {
+  return edge_load(contactor.v[e], contactor.v[(e + 1) % 3],
+                   target_shape(target, target_area, target_centroid));
+}
+
+/// Force, torques and new tangential history of the pair (a, b) over a step dt. `slip`
+/// holds the history of the previous step on entry (zeros for a new contact) and the new
+/// one on exit; a pair that has opened gets zeros.
 ///
 /// Edge contacts are numbered i = 3·role + e (role 0: a's edges in b, role 1: b's in a);
 /// only those that may carry a load are visited, in that order, so that the threads of a
@@ -251,85 +261,119 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
     for (int i = 0; i < kEdgeContacts; ++i)
       if (edge_may_enter(areas[i / 3], i % 3)) active |= 1u << i;
   }
-  EdgeLoad<Real> loads[kEdgeContacts];
-  Real total_integral = 0, total_stiffness = 0;
-  if (active != 0) {
-    const TargetShape<Real> b_shape = target_shape(b.tri, b.area, b.c);
-    const TargetShape<Real> a_shape = target_shape(a.tri, a.area, a.c);
-    TRIDEM_UNROLL
-    for (int role = 0; role < 2; ++role) {
-      const Triangle<Real>& contactor = role == 0 ? a.tri : b.tri;
-      const TargetShape<Real>& target = role == 0 ? b_shape : a_shape;
-      for (unsigned left = (active >> (3 * role)) & 7u; left != 0; left &= left - 1) {
-        const int e = lowest_bit(left);
-        const EdgeLoad<Real> load =
-            edge_load(vertex(contactor, e), vertex(contactor, (e + 1) % 3), target);
-        put(loads, 3 * role + e, load);
-        total_integral += load.integral;
-        total_stiffness += load.stiffness;
-      }
+  // Sums over the loaded edges of both roles.
+  Real total_integral = 0, total_stiffness = 0, total_shape = 0;
+  Real phi_moment = 0, twice_area = 0;  // for the stored energy (see elastic_energy)
+  Real kxx = 0, kxy = 0, kyx = 0, kyy = 0;  // Σ n ⊗ gradient: the normal stiffness over p
+  Vec2<Real> point_moment{};
+  TRIDEM_UNROLL
+  for (int role = 0; role < 2; ++role) {
+    if (((active >> (3 * role)) & 7u) == 0) continue;
+    const Body<Real>& c = role == 0 ? a : b;
+    const Body<Real>& t = role == 0 ? b : a;
+    const TargetShape<Real> target = target_shape(t.tri, t.area, t.c);
+    for (unsigned left = (active >> (3 * role)) & 7u; left != 0; left &= left - 1) {
+      const int e = lowest_bit(left);
+      const Vec2<Real> p0 = vertex(c.tri, e), p1 = vertex(c.tri, (e + 1) % 3);
+      const EdgeLoad<Real> load = edge_load(p0, p1, target);
+      out.depth = load.peak > out.depth ? load.peak : out.depth;
+      if (!(load.integral > Real(0))) continue;
+      const Vec2<Real> d = p1 - p0;
+      const Vec2<Real> normal = Vec2<Real>{d.y, -d.x} / norm(d);  // outward, CCW contactor
+      const Vec2<Real> f_on_c = normal * (-law.penalty * load.integral);
+      const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;
+      out.force_a += f_on_a;
+      out.torque_a += cross(load.point - a.c, f_on_a);
+      out.torque_b -= cross(load.point - b.c, f_on_a);
+      point_moment += load.point * load.integral;
+      total_integral += load.integral;
+      total_stiffness += load.stiffness;
+      total_shape += load.shape;
+      kxx += normal.x * load.gradient.x;
+      kxy += normal.x * load.gradient.y;
+      kyx += normal.y * load.gradient.x;
+      kyy += normal.y * load.gradient.y;
+      // ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] (divergence of φ·(x − c_T), which is
+      // 3φ − 1 inside T); |Ω| = ½ Σ cross over the boundary pieces of both roles, taken
+      // about a.c so that large coordinates cancel before the product.
+      phi_moment += load.integral * dot(normal, load.point - t.c);
+      twice_area += cross(load.q0 - a.c, load.q1 - a.c);
     }
   }
   if (!(total_integral > Real(0))) {
     TRIDEM_UNROLL
-    for (int i = 0; i < kEdgeContacts; ++i) slip.s[i] = Real(0);
+    for (int i = 0; i < kHistoryValues; ++i) slip.s[i] = Real(0);
+    out.force_a = {};
+    out.torque_a = out.torque_b = Real(0);
     return out;
   }
   out.touching = true;
-  // One dashpot for the whole pair, c = 2ζ√(m k), shared among the edge contacts in
-  // proportion to their stiffness: a face-to-face impact is then a linear spring-dashpot
-  // with restitution exp(−πζ/√(1−ζ²)) (docs/model.md).
-  const Real k_total = law.penalty * total_stiffness;
-  const Real c_total = Real(2) * law.damping * math::sqrt(effective_mass(a.mass, b.mass) * k_total);
-  Vec2<Real> point_moment{};
-  OverlapSums<Real> overlap;
-  Real new_slip[kEdgeContacts] = {};
-  TRIDEM_UNROLL
-  for (int role = 0; role < 2; ++role) {
-    const Body<Real>& c = role == 0 ? a : b;
-    const Body<Real>& t = role == 0 ? b : a;
-    for (unsigned left = (active >> (3 * role)) & 7u; left != 0; left &= left - 1) {
-      const int e = lowest_bit(left);
-      const int i = 3 * role + e;
-      const EdgeLoad<Real> load = pick(loads, i);
-      out.depth = load.peak > out.depth ? load.peak : out.depth;
-      const Vec2<Real> d = vertex(c.tri, (e + 1) % 3) - vertex(c.tri, e);
-      const Vec2<Real> tangent = d / norm(d);
-      const Vec2<Real> normal{tangent.y, -tangent.x};  // outward for a CCW contactor
-      overlap.add(load, vertex(c.tri, e), d, normal, t.c, a.c);
-      if (!(load.integral > Real(0))) continue;
-      const Vec2<Real> r = load.point;
-      const Vec2<Real> v_rel = velocity_at(c, r) - velocity_at(t, r);
-      const Real damping = c_total * load.stiffness / total_stiffness;
-      const Real v_normal = dot(v_rel, normal);
-      const Real f_normal = law.penalty * load.integral + damping * v_normal;
-      out.damping_dissipation += damping * v_normal * v_normal * dt;
-      // Elastic–perfectly-plastic tangential spring (Coulomb friction, contact-model.md).
-      Real s = pick(slip.s, i) + dot(v_rel, tangent) * dt;
-      Real f_tangent = -law.tangential_penalty * s;
-      const Real cap = law.friction * (f_normal > Real(0) ? f_normal : Real(0));
-      if (f_tangent > cap || f_tangent < -cap) {
-        f_tangent = f_tangent > Real(0) ? cap : -cap;
-        const Real s_capped = -f_tangent / law.tangential_penalty;
-        // The slider's work: the capped force over the slip it let go.
-        out.friction_dissipation += cap * (s > s_capped ? s - s_capped : s_capped - s);
-        s = s_capped;
-      }
-      out.elastic_energy += Real(0.5) * law.tangential_penalty * s * s;
-      put(new_slip, i, s);
-      const Vec2<Real> f_on_c = normal * (-f_normal) + tangent * f_tangent;
-      const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;
-      out.force_a += f_on_a;
-      out.torque_a += cross(r - a.c, f_on_a);
-      out.torque_b -= cross(r - b.c, f_on_a);
-      point_moment += r * load.integral;
-    }
+  const Vec2<Real> r = point_moment / total_integral;
+  out.point = r;
+
+  // The contact: normal N from a into b along the resultant potential force (the force on
+  // a is −|F|·N), tangent perpendicular to it.
+  const Real f_potential = norm(out.force_a);
+  Vec2<Real> n_ab = b.c - a.c;
+  if (f_potential > Real(0)) n_ab = out.force_a / (-f_potential);
+  else n_ab = n_ab / norm(n_ab);
+  // Stiffnesses: along N, N·K·N of the loads' stiffness matrix K = p·Σ n ⊗ ∇φ·ℓ (what a
+  // normal approach meets); tangential k_t = p_t·Σ 3ℓ/h (= (p_t/p)·k_n with k_n the bound
+  // p·Σ 3ℓ/h of any direction's stiffness).
+  const Real k_along = n_ab.x * (kxx * n_ab.x + kxy * n_ab.y) + n_ab.y * (kyx * n_ab.x + kyy * n_ab.y);
+  const Real k_normal = law.penalty * (k_along > Real(0) ? k_along : Real(0));
+  const Real k_tangent = law.tangential_penalty * total_stiffness;
+  // Load exponent n_eff = k·δ/F of the loads' shapes: 1 for a face, 2 for a vertex.
+  const Real zeta = damping_ratio(law, total_shape / total_integral);
+  const Real m_eff = effective_mass(a.mass, b.mass);
+  const Real c_normal = Real(2) * zeta * math::sqrt(m_eff * k_normal);
+  const Real c_tangent = Real(2) * zeta * math::sqrt(m_eff * k_tangent);
+
+  const Vec2<Real> v_rel = velocity_at(a, r) - velocity_at(b, r);
+  const Real v_n = dot(v_rel, n_ab);  // > 0 approaching
+  const Vec2<Real> v_t = v_rel - n_ab * v_n;
+  const Real f_normal = f_potential + c_normal * v_n;
+  Vec2<Real> extra = n_ab * (-c_normal * v_n);  // on a, at r: normal dashpot ...
+  out.damping_dissipation = c_normal * v_n * v_n * dt;
+
+  // ... and friction. The history u = √k_t·ξ (ξ the elastic tangential displacement) turns
+  // with the contact: projected onto the new tangent, keeping its length; then it grows by
+  // √k_t times the step's tangential motion. The spring force is −√k_t·u and its energy
+  // ½|u|²: a change of k_t (the contact growing or shrinking) scales the force and leaves
+  // the stored energy alone, so the energy budget closes (docs/model.md, "Friction").
+  const Real root_k = math::sqrt(k_tangent);
+  Vec2<Real> u{slip.s[0], slip.s[1]};
+  const Real u_length = norm(u);
+  u = u - n_ab * dot(u, n_ab);
+  const Real u_projected = norm(u);
+  u = u_projected > Real(0) ? u * (u_length / u_projected) : Vec2<Real>{};
+  u += v_t * (dt * root_k);
+  const Vec2<Real> f_spring = u * (-root_k);
+  const Real spring = norm(f_spring);
+  const Real cap = law.friction * (f_normal > Real(0) ? f_normal : Real(0));
+  Vec2<Real> f_tangent;
+  if (spring > cap) {
+    // Sliding: the force is the cap; the spring keeps what the cap allows, the rest of
+    // the displacement, (|u| − |u_kept|)/√k_t, is slip.
+    f_tangent = spring > Real(0) ? f_spring * (cap / spring) : Vec2<Real>{};
+    const Vec2<Real> kept = root_k > Real(0) ? f_tangent / (-root_k) : Vec2<Real>{};
+    if (root_k > Real(0)) out.friction_dissipation = cap * (norm(u) - norm(kept)) / root_k;
+    u = kept;
+  } else {
+    // Sticking: spring and dashpot, together no more than the cap.
+    f_tangent = f_spring - v_t * c_tangent;
+    const Real total = norm(f_tangent);
+    if (total > cap) f_tangent = f_tangent * (cap / total);
+    out.damping_dissipation -= dot(f_tangent - f_spring, v_t) * dt;
   }
-  // Edge contacts without a load (opened or never closed) forget their slip.
-  TRIDEM_UNROLL
-  for (int i = 0; i < kEdgeContacts; ++i) slip.s[i] = new_slip[i];
-  out.point = point_moment / total_integral;
-  out.elastic_energy += overlap.normal_energy(law.penalty);
+  extra += f_tangent;
+  slip.s[0] = u.x;
+  slip.s[1] = u.y;
+
+  out.force_a += extra;
+  out.torque_a += cross(r - a.c, extra);
+  out.torque_b -= cross(r - b.c, extra);
+  out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
   return out;
 }
 

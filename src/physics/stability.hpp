@@ -3,6 +3,7 @@
 // particle (docs/model.md, "The time step"). core/time_step builds the worst case a scene
 // allows from these pieces; they are TRIDEM_HD so that a run-time check can reuse them.
 #include "physics/body.hpp"
+#include "physics/damping.hpp"
 
 namespace tridem::physics {
 
@@ -15,16 +16,15 @@ struct ContactStiffnessInputs {
   Real damping_ratio;     ///< largest ζ of the normal and tangential dashpots, c = 2ζ√(m_eff·k)
 };
 
-/// Normal: k_n = p·Σ 3ℓ/h (pair_force's stiffness). Tangential: a spring on the contact's
-/// tangent with k_t = (p_t/p)·k_n, the law being built for issue 10; today's edge-wise
-/// spring (p_t per edge contact, at most 2 per face contact) is softer than that on any
-/// contact longer than a fifth of the target's height, and is inert without friction
-/// (its force is capped at μ·f_n). Damping: c = 2ζ√(m_eff·k) on both springs.
+/// Normal: k_n = p·Σ 3ℓ/h (pair_force's stiffness bound; its normal dashpot uses
+/// k_N = N·K·N <= k_n). Tangential: the spring on the contact's tangent, k_t = (p_t/p)·k_n
+/// (pair_force since issue 10), inert without friction (capped at μ·f_n = 0). Damping:
+/// c = 2ζ(n_eff)·√(m_eff·k) on both springs, ζ(n_eff) <= max_damping_ratio(law).
 template <class Real>
 TRIDEM_HD inline ContactStiffnessInputs<Real> contact_stiffness_inputs(
     const ContactLaw<Real>& law) {
   const Real ratio = law.friction > Real(0) ? law.tangential_penalty / law.penalty : Real(0);
-  return {law.penalty, ratio, law.damping};
+  return {law.penalty, ratio, max_damping_ratio(law)};
 }
 
 /// A symmetric 3×3 matrix over a body's (x, y, θ).

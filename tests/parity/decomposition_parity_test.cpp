@@ -43,10 +43,12 @@ void expect_same_as_grid(const Scene& s, std::int64_t steps, const char* what) {
 }
 
 TEST(DecompositionParity, StripsReproduceGridBitForBit) {
+  // 500 steps: with the contact model of issue 10 the grains of these thin piles meet a
+  // little later (29 and 27 contacts at 300 steps).
   expect_same_as_grid(test::with_decomposition(test::jostling_pile(40, 4), DecompositionLayout::Strips, 24),
-                      300, "1d, capacity 24");
+                      500, "1d, capacity 24");
   expect_same_as_grid(test::with_decomposition(test::jostling_pile(30, 5, 9), DecompositionLayout::Strips, 32),
-                      300, "1d, capacity 32");
+                      500, "1d, capacity 32");
 }
 
 TEST(DecompositionParity, RowsAndColumnsReproduceGridBitForBit) {

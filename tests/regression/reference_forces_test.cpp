@@ -31,12 +31,15 @@ TEST(Regression, PairForcesMatchReferenceData) {
     }
     ContactLaw<double> law{};
     double dt = 0;
-    row >> law.penalty >> law.tangential_penalty >> law.friction >> law.damping >> dt;
+    row >> law.penalty >> law.tangential_penalty >> law.friction;
+    for (double& z : law.damping) row >> z;
+    row >> dt;
     PairSlip<double> slip{};
     for (double& s : slip.s) row >> s;
-    double expect[6], expect_slip[6];
+    double expect[6], expect_slip[kHistoryValues], expect_energy[3];
     for (double& e : expect) row >> e;
     for (double& e : expect_slip) row >> e;
+    for (double& e : expect_energy) row >> e;
     ASSERT_FALSE(row.fail()) << "malformed row " << cases;
     const PairForce<double> f = pair_force(body[0], body[1], law, dt, slip);
     const double got[6] = {f.force_a.x, f.force_a.y, f.torque_a, f.torque_b, f.point.x, f.point.y};
@@ -45,8 +48,12 @@ TEST(Regression, PairForcesMatchReferenceData) {
       EXPECT_NEAR(got[k], expect[k], 1e-12 * scale * 10) << "case " << cases << " value " << k;
     for (int k = 4; k < 6; ++k)
       EXPECT_NEAR(got[k], expect[k], 1e-12) << "case " << cases << " point " << k;
-    for (int k = 0; k < 6; ++k)
+    for (int k = 0; k < kHistoryValues; ++k)
       EXPECT_NEAR(slip.s[k], expect_slip[k], 1e-15) << "case " << cases << " slip " << k;
+    const double energy[3] = {f.elastic_energy, f.damping_dissipation, f.friction_dissipation};
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(energy[k], expect_energy[k], 1e-12 * (std::abs(expect_energy[k]) + 1e-9))
+          << "case " << cases << " energy " << k;
     ++cases;
   }
   EXPECT_EQ(cases, 40);

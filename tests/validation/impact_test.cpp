@@ -1,6 +1,6 @@
 // Head-on impact of two triangles meeting face to face: without damping the restitution is
-// 1; with damping ratio ζ it is the linear spring-dashpot value exp(−πζ/√(1−ζ²))
-// (docs/model.md, "Normal damping").
+// 1; with the legacy damping ratio ζ it is the linear spring-dashpot value
+// exp(−πζ/√(1−ζ²)), the restitution ζ now stands for (docs/model.md, "Damping").
 #include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 

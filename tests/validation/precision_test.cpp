@@ -6,6 +6,7 @@
 #include "support/scene_builder.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 namespace tridem {
@@ -67,7 +68,11 @@ TEST_P(PrecisionTest, RestingContactFarFromOriginSettles) {
     const Snapshot snap = rest(far);
     const double speed = std::hypot(snap.vx[1], snap.vy[1]);
     EXPECT_LT(speed, 1e-3);
-    EXPECT_NEAR(speed, origin_speed, 0.1 * origin_speed + 1e-6);
+    // Since the one-contact friction of issue 10 the float residual is about 1e-6 m/s at
+    // the origin and 6e-6 m/s at these distances (the floor's float rounding in the pair's
+    // frame), no longer 4e-4: the absolute slack is 1e-5 m/s, still 40 times below that
+    // residual and 3000 times below the jitter this test was written against.
+    EXPECT_NEAR(speed, origin_speed, 0.1 * origin_speed + 1e-5);
     EXPECT_LT(std::abs(snap.omega[1]), 1e-2);
     EXPECT_NEAR(snap.y[1] - far.y, 0.1 / 3.0, 1e-3);
     EXPECT_NEAR(snap.fy[1], mass * g, test::tolerance(GetParam(), 1e-2, 3e-2) * mass * g);
@@ -111,16 +116,18 @@ Scene far_pile() {
 }
 
 // Long enough for gravity and contacts to matter: the 72 grains start apart with random
-// velocities, and in 6000 steps fall 0.107 m on average, lose 72% of their kinetic energy
-// and make 76 contacts. Float on the CPU ends 7e-5 m, 0.3% and one contact away from double
-// (measured); the tolerances (2e-3 m, 10%, 10%) leave room for the GPU's other rounding and
-// the pile's chaos. Without gravity the same run ends 0.124 m higher with 62% less kinetic
-// energy and 15 contacts: a float that ignored gravity, lost motion or dropped contacts
-// would fail every one of them.
+// velocities, and in 8000 steps fall 0.137 m on average, lose 81% of their kinetic energy
+// and make 80 contacts. Float on the CPU ends 4e-4 m, 4.4% and five contacts away from
+// double (measured with the contact model of issue 10, one friction contact per pair; it
+// was 6000 steps before, where that model leaves 57 contacts); the tolerances (2e-3 m,
+// 10%, 10%) leave room for the GPU's other rounding and the pile's chaos. Without gravity
+// the same run (6000 steps, former contact model) ended 0.124 m higher with 62% less
+// kinetic energy and 15 contacts: a float that ignored gravity, lost motion or dropped
+// contacts would fail every one of them.
 TEST_P(PrecisionTest, FloatFollowsDoubleInASettlingPile) {
   const Scene scene = far_pile();
   const double floor_y = 100 - 0.06;
-  const std::int64_t steps = 6000;
+  const std::int64_t steps = 8000;
   const Snapshot start = test::run_to(scene, Backend::Cpu, 0);
   const Snapshot reference = test::run_to(scene, Backend::Cpu, steps);
   const Snapshot tried = test::run_to(scene, GetParam().backend, steps, GetParam().precision,
@@ -133,6 +140,9 @@ TEST_P(PrecisionTest, FloatFollowsDoubleInASettlingPile) {
   ASSERT_LT(ref.mean_height, s0.mean_height - 0.02);
   ASSERT_LT(ref.kinetic, 0.5 * s0.kinetic);
   ASSERT_GT(ref.contacts, 60);
+  std::printf("settling pile: height %.4f -> %.4f (float %.4f) m, kinetic %.4g -> %.4g (float "
+              "%.4g), contacts %g (float %g)\n", s0.mean_height, ref.mean_height, got.mean_height,
+              s0.kinetic, ref.kinetic, got.kinetic, ref.contacts, got.contacts);
   EXPECT_NEAR(got.mean_height, ref.mean_height, 2e-3);
   EXPECT_NEAR(got.kinetic, ref.kinetic, 0.1 * ref.kinetic);
   EXPECT_NEAR(got.contacts, ref.contacts, 0.1 * ref.contacts);

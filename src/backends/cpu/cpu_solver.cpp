@@ -83,8 +83,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   material_ = model.material;
   motion_ = model.motion;
   for (const auto& law : contact_law_table(scene.materials))
-    laws_.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
-                     static_cast<Real>(law.friction), static_cast<Real>(law.damping)});
+    laws_.push_back(physics::law_cast<Real>(law));
   fx_.assign(n_, Real(0));
   fy_.assign(n_, Real(0));
   torque_.assign(n_, Real(0));

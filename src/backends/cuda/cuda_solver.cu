@@ -74,8 +74,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
                            model.angular_velocity[i] != 0));
   std::vector<physics::ContactLaw<Real>> laws;
   for (const auto& law : contact_law_table(scene.materials))
-    laws.push_back({static_cast<Real>(law.penalty), static_cast<Real>(law.tangential_penalty),
-                    static_cast<Real>(law.friction), static_cast<Real>(law.damping)});
+    laws.push_back(physics::law_cast<Real>(law));
   laws_.upload(laws);
   params_.laws = laws_.data();
   upload_model(model);

@@ -1,9 +1,10 @@
 #pragma once
-// The checkpoint file, version 3. All numbers little-endian; reals are IEEE doubles.
+// The checkpoint file, version 4. All numbers little-endian; reals are IEEE doubles.
 //
 //   header (48 bytes)
 //     0  char[8]  magic "TRIDEMCK"
-//     8  u32      version (3)
+//     8  u32      version (4; 3 stored six edge slips per pair, 2 also no energy sums,
+//                  1 also no settings)
 //    12  u32      precision of the solver: 0 double, 1 float
 //    16  u64      particle count n
 //    24  u64      scene fingerprint (scene_fingerprint)
@@ -18,19 +19,20 @@
 //     f64[n] dissipated damping, friction, local damping, wall work (four arrays: the
 //            energy budget's cumulative per-particle sums, SolverState::energy)
 //     u64 m, the number of pairs with contact history
-//     i32[m] emitters, i32[m] partners, f64[6m] slips (six per pair, pair-major)
+//     i32[m] emitters, i32[m] partners, f64[2m] tangential spring states u = √k_t·ξ
+//            (x, y per pair, pair-major)
 //
 // The header has its own checksum so that a damaged count is caught before it is used
 // to size anything; the payload size is checked against the file size for the same
 // reason. Bump the version on any change to this layout (version 1 had no physics
-// settings, version 2 no energy arrays).
+// settings, version 2 no energy arrays, version 3 six edge slips per pair).
 #include <cstddef>
 #include <cstdint>
 
 namespace tridem::checkpoint_format {
 
 inline constexpr char kMagic[8] = {'T', 'R', 'I', 'D', 'E', 'M', 'C', 'K'};
-inline constexpr std::uint32_t kVersion = 3;
+inline constexpr std::uint32_t kVersion = 4;
 inline constexpr std::size_t kHeaderSize = 48;
 inline constexpr std::size_t kHeaderCrcOffset = 44;
 inline constexpr std::size_t kPayloadCrcOffset = 40;
@@ -42,6 +44,6 @@ inline constexpr std::size_t kBytesPerParticle = 8 * kArraysPerParticle;
 inline constexpr std::size_t fixed_payload_size(std::uint64_t n) {
   return 8 + 8 + 4 + kBytesPerParticle * n + 8;
 }
-inline constexpr std::size_t kBytesPerPair = 4 + 4 + 6 * 8;
+inline constexpr std::size_t kBytesPerPair = 4 + 4 + 2 * 8;  // kSlipsPerPair doubles
 
 }  // namespace tridem::checkpoint_format

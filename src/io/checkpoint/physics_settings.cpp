@@ -2,6 +2,7 @@
 // with other physics. A setting belongs here when changing it changes the trajectory; the
 // ones that only change speed or bookkeeping (backend, skin, decomposition layout, output)
 // do not, so that a CPU checkpoint may continue on the GPU, for instance.
+#include "core/particle_model.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
@@ -28,7 +29,9 @@ std::vector<PhysicsSetting> physics_settings(const Scene& scene, double dt) {
     out.push_back({key + "penalty", fmt::format("{}", m.penalty)});
     out.push_back({key + "tangential_penalty", fmt::format("{}", m.tangential_penalty)});
     out.push_back({key + "friction", fmt::format("{}", m.friction)});
-    out.push_back({key + "damping", fmt::format("{}", m.damping)});
+    // The restitution the material gives, whether the scene says `restitution` or the
+    // legacy `damping` (the contact law is built from this value alone).
+    out.push_back({key + "restitution", fmt::format("{}", material_restitution(m))});
   }
   return out;
 }

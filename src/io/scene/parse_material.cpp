@@ -19,7 +19,16 @@ Material parse_material(const toml::table& table, const std::string& source, std
   if (!(m.penalty > 0)) r.fail("penalty", fmt::format("must be > 0 (Pa), got {}", m.penalty));
   m.friction = r.real("friction").value_or(0.0);
   if (!(m.friction >= 0)) r.fail("friction", fmt::format("must be >= 0, got {}", m.friction));
-  m.damping = r.real("damping").value_or(0.0);
+  // `restitution` is the input; `damping` (ζ) stays readable for older scenes. One of them.
+  const std::optional<double> restitution = r.real("restitution");
+  const std::optional<double> damping = r.real("damping");
+  if (restitution && damping)
+    r.fail("damping", "give either restitution or damping, not both (restitution replaces "
+                      "damping; see docs/scene-format.md)");
+  m.restitution = restitution;
+  if (m.restitution && !(*m.restitution > 0 && *m.restitution <= 1))
+    r.fail("restitution", fmt::format("must be in (0, 1], got {}", *m.restitution));
+  m.damping = damping.value_or(0.0);
   if (!(m.damping >= 0 && m.damping < 1))
     r.fail("damping", fmt::format("must be in [0, 1), got {}", m.damping));
   m.tangential_penalty = r.real("tangential_penalty").value_or(0.1 * m.penalty);

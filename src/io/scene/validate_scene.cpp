@@ -81,6 +81,10 @@ void check_materials(const Scene& scene, const Refuser& refuse) {
       refuse(fmt::format("{}: friction must be finite and >= 0, got {}", which, m.friction));
     if (!(m.damping >= 0 && m.damping < 1))
       refuse(fmt::format("{}: damping must be in [0, 1), got {}", which, m.damping));
+    if (m.restitution && !(*m.restitution > 0 && *m.restitution <= 1))
+      refuse(fmt::format("{}: restitution must be in (0, 1], got {}", which, *m.restitution));
+    if (m.restitution && m.damping != 0)
+      refuse(fmt::format("{}: give either restitution or damping, not both", which));
   }
 }
 

@@ -29,7 +29,7 @@ Checkpoint sample_checkpoint() {
   s.omega = {0.5, std::numeric_limits<double>::denorm_min(), 0};
   s.pair_emitter = {0, 0, 1};
   s.pair_partner = {1, 2, 2};
-  s.pair_slip = {{1e-9, -0.0, 0, 0, 0, 2e-7}, {0, 0, 0, 1, 0, 0}, {-3e-8, 0, 0, 0, 0, 0}};
+  s.pair_slip = {{1e-9, -0.0}, {0, 1}, {-3e-8, 0}};
   s.energy[kDissipatedDamping] = {0.25, 1e-300, 3};
   s.energy[kDissipatedFriction] = {-0.0, 0, 7.5};
   s.energy[kWallWork] = {-2, 0, 1.0 / 3};  // local damping left empty: zeros
@@ -105,16 +105,17 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 }
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
-  // Versions 1 (before the physics settings) and 2 (before the energy sums), and the next
-  // one (4), with a consistent header checksum: refused for the version, not as damage.
+  // Versions 1 (before the physics settings), 2 (before the energy sums) and 3 (six edge
+  // slips per pair, before the contact of issue 10), and the next one (5), with a
+  // consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  for (const int version : {1, 2, 4}) {
+  for (const int version : {1, 2, 3, 5}) {
     bytes[8] = static_cast<std::uint8_t>(version);
     const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
     for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
     expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
-                              "; this tridem reads version 3");
+                              "; this tridem reads version 4");
   }
 }
 

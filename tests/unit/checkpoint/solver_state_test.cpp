@@ -28,7 +28,7 @@ void expect_refused(const test::SolverChoice& choice,
   solver->save_state(s);
   s.pair_emitter = {0, 1};
   s.pair_partner = {2, 2};
-  s.pair_slip = {{1, 0, 0, 0, 0, 0}, {0, 1, 0, 0, 0, 0}};
+  s.pair_slip = {{1, 0}, {0, 1}};
   EXPECT_NO_THROW(solver->load_state(s));
   spoil(s);
   try {
@@ -55,7 +55,7 @@ TEST_P(SolverStateLoad, RefusesStatesThatDoNotFit) {
   expect_refused(b, [](SolverState& s) { s.pair_emitter[1] = 0; s.pair_partner[1] = 2; },
                  "out of order");
   expect_refused(b, [](SolverState& s) { s.pair_slip.pop_back(); }, "differ in length");
-  expect_refused(b, [](SolverState& s) { s.pair_slip[0][3] = INFINITY; }, "non-finite slip");
+  expect_refused(b, [](SolverState& s) { s.pair_slip[0][1] = INFINITY; }, "non-finite slip");
 }
 
 
@@ -70,7 +70,7 @@ TEST_P(SolverStateLoad, SaveGivesBackTheLoadedState) {
   in.omega[2] = -1.0;
   in.pair_emitter = {0, 1};
   in.pair_partner = {2, 2};
-  in.pair_slip = {{1, 0, 0, 0, 0, 0}, {0, -0.0, 0, 0, 0, 2}};
+  in.pair_slip = {{1, 0}, {-0.0, 2}};
   solver->load_state(in);
   SolverState out;
   solver->save_state(out);
@@ -81,7 +81,7 @@ TEST_P(SolverStateLoad, SaveGivesBackTheLoadedState) {
   EXPECT_EQ(out.pair_emitter, in.pair_emitter);
   EXPECT_EQ(out.pair_partner, in.pair_partner);
   ASSERT_EQ(out.pair_slip.size(), 2u);
-  EXPECT_TRUE(std::signbit(out.pair_slip[1][1])) << "-0.0 is history and must survive";
+  EXPECT_TRUE(std::signbit(out.pair_slip[1][0])) << "-0.0 is history and must survive";
   EXPECT_EQ(out.pair_slip, in.pair_slip);
 }
 

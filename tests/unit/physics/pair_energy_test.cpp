@@ -1,8 +1,10 @@
-// The pair's share of the energy budget (PairForce::elastic_energy and the dissipations):
-// the force is minus the gradient of the elastic energy, and the dashpots dissipate the
-// power of their own force.
+// The energy quantities of a pair (PairForce::elastic_energy, damping_dissipation,
+// friction_dissipation): the stored energy against the work of the force along a path, and
+// the dissipation of dashpots and of sliding against their definitions.
 #include "physics/contact_force.hpp"
+#include "physics/restitution.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -11,7 +13,115 @@ namespace {
 
 using V = Vec2<double>;
 
-Body<double> make_body(const V (&v)[3], V shift = {}, double turn = 0, V velocity = {}) {
+Body<double> make_body(Triangle<double> t, V v = {}, double w = 0, double mass = 1) {
+  Body<double> b;
+  b.tri = t;
+  if (signed_area(b.tri) < 0) std::swap(b.tri.v[1], b.tri.v[2]);
+  b.c = centroid(b.tri);
+  b.area = signed_area(b.tri);
+  b.v = v;
+  b.w = w;
+  b.mass = mass;
+  return b;
+}
+
+Body<double> moved(Body<double> b, V shift) {
+  for (V& v : b.tri.v) v += shift;
+  b.c += shift;
+  return b;
+}
+
+TEST(PairEnergy, FlatContactStoresTheNormalPotential) {
+  // A wide contactor face at depth d in a wide floor: Ω is (up to corners of order d²) a
+  // strip ℓ × d where φ_b = 3y/h_b and φ_a = 3(d − y)/h_a, so E = 1.5·p·ℓ·d²·(1/h_a + 1/h_b).
+  const double d = 1e-4, p = 1e6;
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1 - d}}});
+  PairSlip<double> slip{};
+  const PairForce<double> f = pair_force(c, floor, contact_law(p, 1e5, 0, 1), 1e-4, slip);
+  const double h_floor = 10, h_c = 1;
+  const double expect = 1.5 * p * 1.0 * d * d * (1 / h_floor + 1 / h_c);
+  EXPECT_NEAR(f.elastic_energy, expect, 2e-3 * expect);
+}
+
+TEST(PairEnergy, ElasticEnergyIsMinusTheWorkOfTheForce) {
+  // Frictionless, undamped: moving a through the overlap in small steps, the change of the
+  // stored energy equals minus the work of the force on a (midpoint rule).
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0, 1);
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const auto a0 = make_body({{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}}});
+    const auto b = make_body({{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}}});
+    if (a0.area < 0.05 || b.area < 0.05) continue;
+    const V step = V{u(rng), u(rng)} * 2e-5;
+    const int n = 2000;
+    double work = 0;
+    PairSlip<double> slip{};
+    Body<double> a = a0;
+    PairForce<double> f = pair_force(a, b, law, 1e-4, slip);
+    const double e0 = f.elastic_energy;
+    for (int i = 0; i < n; ++i) {
+      const Body<double> next = moved(a, step);
+      const PairForce<double> g = pair_force(next, b, law, 1e-4, slip);
+      work += dot((f.force_a + g.force_a) * 0.5, step);
+      a = next;
+      f = g;
+    }
+    const double change = f.elastic_energy - e0;
+    if (std::abs(change) < 1e-6 * law.penalty * 1e-6) continue;
+    ++checked;
+    const double scale = std::abs(work) + std::abs(change) + 1e-3;
+    EXPECT_NEAR(change, -work, 2e-4 * scale) << "trial " << trial;
+  }
+  EXPECT_GT(checked, 10);
+}
+
+TEST(PairEnergy, SlidingDissipatesMuTimesNormalForceTimesSlip) {
+  // Steady sliding: after the first step the spring sits at the cap, so each step's slip
+  // is the whole tangential displacement v·dt.
+  const double d = 1e-3, v = 50, dt = 1e-3;  // k_t·v·dt far above μ·f_n: sliding
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1}}}, {v, 0});
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0.4, 1);
+  PairSlip<double> slip{};
+  pair_force(c, floor, law, dt, slip);
+  const PairForce<double> f = pair_force(c, floor, law, dt, slip);
+  EXPECT_NEAR(f.force_a.x, -0.4 * f.force_a.y, 1e-12 * f.force_a.y);
+  EXPECT_NEAR(f.friction_dissipation, 0.4 * f.force_a.y * v * dt, 1e-9 * f.friction_dissipation);
+  EXPECT_EQ(f.damping_dissipation, 0.0);  // e = 1: no dashpot
+}
+
+TEST(PairEnergy, DashpotsDissipateWhatTheyTakeAndStickingStoresTheSpring) {
+  // A slow approach with damping: the normal dashpot takes c·v_n²·dt >= 0; a sticking
+  // tangential displacement stores ½·k_t·ξ².
+  const double d = 1e-3, dt = 1e-4;
+  const auto floor = make_body({{{10, 0}, {-10, 0}, {0, -10}}}, {}, 0, 0);
+  const auto c = make_body({{{-0.5, -d}, {0.5, -d}, {0, 1}}}, {1e-4, -0.01});
+  const ContactLaw<double> damped = contact_law(1e6, 1e5, 0.5, 0.5);
+  const ContactLaw<double> plain = contact_law(1e6, 1e5, 0.5, 1);
+  PairSlip<double> s1{}, s2{};
+  const PairForce<double> f = pair_force(c, floor, damped, dt, s1);
+  const PairForce<double> g = pair_force(c, floor, plain, dt, s2);
+  EXPECT_GT(f.damping_dissipation, 0.0);
+  EXPECT_EQ(f.friction_dissipation, 0.0);
+  // The normal dashpot adds c·v_n along y: its power is (f_y − g_y)·|v_y| and the
+  // tangential one c_t·v_t².
+  const double normal_part = (f.force_a.y - g.force_a.y) * 0.01 * dt;
+  const double tangential_part = -(f.force_a.x - g.force_a.x) * 1e-4 * dt;
+  EXPECT_NEAR(f.damping_dissipation, normal_part + tangential_part,
+              1e-9 * f.damping_dissipation);
+  // Spring energy: ½|u|² = ½k_t·ξ² with ξ = v_t·dt (u = √k_t·ξ; g has no dashpot), and
+  // the spring force k_t·ξ = u²/ξ.
+  EXPECT_NEAR(-g.force_a.x, s2.s[0] * s2.s[0] / (1e-4 * dt), 1e-9 * std::abs(g.force_a.x));
+  EXPECT_NEAR(g.elastic_energy - (f.elastic_energy - 0.5 * s1.s[0] * s1.s[0]),
+              0.5 * s2.s[0] * s2.s[0], 1e-12 * g.elastic_energy);
+}
+
+/// (From the energy budget's own tests, merged: bodies given by vertices, shifted and
+/// turned about their centroid.)
+Body<double> make_turned_body(const V (&v)[3], V shift = {}, double turn = 0, V velocity = {}) {
   Body<double> body;
   const V c = (v[0] + v[1] + v[2]) / 3.0;
   const double cs = std::cos(turn), sn = std::sin(turn);
@@ -33,14 +143,14 @@ double elastic(const Body<double>& a, const Body<double>& b, const ContactLaw<do
 // E = p∫_Ω(φ_a + φ_b)dA is the potential of the contact force: F_a = −∂E/∂x_a and
 // M_a = −∂E/∂θ_a, for random overlaps (finite differences, central).
 TEST(PairEnergy, ForceIsMinusTheGradientOfTheElasticEnergy) {
-  const ContactLaw<double> law{1e6, 1e5, 0, 0};
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0, 1);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   int checked = 0;
   for (int trial = 0; trial < 2000 && checked < 60; ++trial) {
     const V va[3] = {{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}};
     const V vb[3] = {{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}};
-    const auto a = make_body(va), b = make_body(vb);
+    const auto a = make_turned_body(va), b = make_turned_body(vb);
     if (a.area < 0.05 || b.area < 0.05) continue;
     PairSlip<double> slip{};
     const PairForce<double> f = pair_force(a, b, law, 1e-4, slip);
@@ -48,12 +158,12 @@ TEST(PairEnergy, ForceIsMinusTheGradientOfTheElasticEnergy) {
     ++checked;
     EXPECT_GT(f.elastic_energy, 0) << "trial " << trial;
     const double h = 1e-6;
-    const double dx = (elastic(make_body(va, {h, 0}), b, law) -
-                       elastic(make_body(va, {-h, 0}), b, law)) / (2 * h);
-    const double dy = (elastic(make_body(va, {0, h}), b, law) -
-                       elastic(make_body(va, {0, -h}), b, law)) / (2 * h);
-    const double dt = (elastic(make_body(va, {}, h), b, law) -
-                       elastic(make_body(va, {}, -h), b, law)) / (2 * h);
+    const double dx = (elastic(make_turned_body(va, {h, 0}), b, law) -
+                       elastic(make_turned_body(va, {-h, 0}), b, law)) / (2 * h);
+    const double dy = (elastic(make_turned_body(va, {0, h}), b, law) -
+                       elastic(make_turned_body(va, {0, -h}), b, law)) / (2 * h);
+    const double dt = (elastic(make_turned_body(va, {}, h), b, law) -
+                       elastic(make_turned_body(va, {}, -h), b, law)) / (2 * h);
     const double scale = norm(f.force_a) + std::abs(f.torque_a) + 1e-3 * law.penalty;
     EXPECT_NEAR(-dx, f.force_a.x, 1e-5 * scale) << "trial " << trial;
     EXPECT_NEAR(-dy, f.force_a.y, 1e-5 * scale) << "trial " << trial;
@@ -65,9 +175,9 @@ TEST(PairEnergy, ForceIsMinusTheGradientOfTheElasticEnergy) {
 TEST(PairEnergy, SeparatedOrTouchingPairsHoldNoEnergy) {
   const V va[3] = {{0, 0}, {1, 0}, {0, 1}};
   const V vb[3] = {{1, 0}, {2, 0}, {1, 1}};  // shares the vertex (1, 0)
-  const ContactLaw<double> law{1e6, 1e5, 0.5, 0.3};
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0.5, 0.4);
   PairSlip<double> slip{};
-  const PairForce<double> f = pair_force(make_body(va), make_body(vb), law, 1e-4, slip);
+  const PairForce<double> f = pair_force(make_turned_body(va), make_turned_body(vb), law, 1e-4, slip);
   EXPECT_EQ(f.elastic_energy, 0);
   EXPECT_EQ(f.damping_dissipation, 0);
   EXPECT_EQ(f.friction_dissipation, 0);
@@ -81,11 +191,11 @@ TEST(PairEnergy, DashpotsDissipateThePowerOfTheirForce) {
   const V vb[3] = {{0.2, 0.85}, {0.8, 0.85}, {0.5, 1.5}};
   const V v{0.3, -0.7};
   const double dt = 1e-4;
-  const auto a = make_body(va, {}, 0, v), b = make_body(vb);
+  const auto a = make_turned_body(va, {}, 0, v), b = make_turned_body(vb);
   PairSlip<double> s1{}, s2{};
   const PairForce<double> damped =
-      pair_force(a, b, ContactLaw<double>{1e6, 1e5, 0, 0.4}, dt, s1);
-  const PairForce<double> plain = pair_force(a, b, ContactLaw<double>{1e6, 1e5, 0, 0}, dt, s2);
+      pair_force(a, b, contact_law(1e6, 1e5, 0, 0.3), dt, s1);
+  const PairForce<double> plain = pair_force(a, b, contact_law(1e6, 1e5, 0, 1), dt, s2);
   ASSERT_TRUE(damped.touching);
   const double expected = -dot(damped.force_a - plain.force_a, v) * dt;
   EXPECT_GT(expected, 0);
@@ -94,24 +204,25 @@ TEST(PairEnergy, DashpotsDissipateThePowerOfTheirForce) {
   EXPECT_EQ(damped.friction_dissipation, 0) << "no friction";
 }
 
-// A sliding contact: the slider dissipates, and the springs keep ½p_t·s² at their caps.
+// A sliding contact: the slider dissipates, and the spring keeps ½|u|² = ½k_t·|ξ|² at its
+// cap, where k_t·|ξ| = |f_t| = μ·f_n (one contact per pair since issue 10).
 TEST(PairEnergy, SlidingDissipatesAndTheSpringsKeepTheirEnergy) {
   const V va[3] = {{0, 0}, {1, 0}, {0.5, 0.9}};
   const V vb[3] = {{0.2, 0.85}, {0.8, 0.85}, {0.5, 1.5}};
   const double dt = 1e-3;
-  const ContactLaw<double> law{1e6, 1e5, 0.3, 0};
-  const auto a = make_body(va, {}, 0, {50.0, 0}), b = make_body(vb);
+  const ContactLaw<double> law = contact_law(1e6, 1e5, 0.3, 1);
+  const auto a = make_turned_body(va, {}, 0, {50.0, 0}), b = make_turned_body(vb);
   PairSlip<double> slip{};
   const PairForce<double> f = pair_force(a, b, law, dt, slip);
   ASSERT_TRUE(f.touching);
   EXPECT_GT(f.friction_dissipation, 0);
-  // Recompute each capped edge contact's share from the slips it kept.
   PairSlip<double> none{};
   const PairForce<double> frictionless =
-      pair_force(a, b, ContactLaw<double>{1e6, 1e5, 0, 0}, dt, none);
-  double spring = 0;
-  for (double s : slip.s) spring += 0.5 * law.tangential_penalty * s * s;
-  EXPECT_NEAR(f.elastic_energy - frictionless.elastic_energy, spring, 1e-12 * spring);
+      pair_force(a, b, contact_law(1e6, 1e5, 0, 1), dt, none);
+  const double f_t = norm(f.force_a - frictionless.force_a);
+  EXPECT_NEAR(f_t, 0.3 * norm(frictionless.force_a), 1e-12 * f_t);
+  const double spring = 0.5 * (slip.s[0] * slip.s[0] + slip.s[1] * slip.s[1]);  // ½|u|²
+  EXPECT_NEAR(f.elastic_energy - frictionless.elastic_energy, spring, 1e-9 * spring);
 }
 
 }  // namespace

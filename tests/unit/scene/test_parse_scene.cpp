@@ -1,5 +1,6 @@
 // Valid scenes: every key lands in the right field, defaults, integers as reals, clockwise
 // reordering and particle id order.
+#include "core/particle_model.hpp"
 #include "tridem/generate.hpp"
 #include "tridem/scene_io.hpp"
 
@@ -131,6 +132,8 @@ TEST(SceneParse, OmittedKeysTakeDefaults) {
   EXPECT_EQ(s.output.checkpoint_every, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].friction, 0);
   EXPECT_DOUBLE_EQ(s.materials[0].damping, 0);
+  EXPECT_FALSE(s.materials[0].restitution.has_value());
+  EXPECT_DOUBLE_EQ(material_restitution(s.materials[0]), 1.0);
   EXPECT_DOUBLE_EQ(s.materials[0].tangential_penalty, 1e6);
   ASSERT_EQ(s.triangles.size(), 1u);
   EXPECT_EQ(s.triangles[0].motion, Motion::Free);
@@ -146,6 +149,25 @@ name = "m"
 density = 1000
 penalty = 1e6
 )";
+
+TEST(SceneParse, RestitutionIsReadAndDampingMapsToIt) {
+  const Scene s = parse_scene(std::string(kHead) + "restitution = 0.6\n" + R"(
+[[material]]
+name = "old"
+density = 1000
+penalty = 1e6
+damping = 0.2
+[[triangle]]
+material = "m"
+vertices = [[0, 0], [1, 0], [0, 1]]
+)",
+                              "r.toml");
+  ASSERT_TRUE(s.materials[0].restitution.has_value());
+  EXPECT_DOUBLE_EQ(*s.materials[0].restitution, 0.6);
+  EXPECT_DOUBLE_EQ(material_restitution(s.materials[0]), 0.6);
+  // ζ = 0.2 stands for the face restitution it gave: exp(−0.2π/√0.96) = 0.5266.
+  EXPECT_NEAR(material_restitution(s.materials[1]), 0.52662, 1e-5);
+}
 
 TEST(SceneParse, IntegersAcceptedWhereRealsExpected) {
   const Scene s = parse_scene(std::string(kHead) + R"(

@@ -132,6 +132,11 @@ TEST(SceneRefusals, OtherMaterialRanges) {
                           "density = 1\npenalty = 1\n";
   expect_refused(mat + "friction = -0.1\n", {"bad.toml:7:", "key 'friction'"});
   expect_refused(mat + "damping = 1\n", {"bad.toml:7:", "key 'damping'", "[0, 1)"});
+  expect_refused(mat + "restitution = 0\n", {"bad.toml:7:", "key 'restitution'", "(0, 1]"});
+  expect_refused(mat + "restitution = 1.2\n", {"bad.toml:7:", "key 'restitution'"});
+  // restitution replaces damping: both in one material is ambiguous.
+  expect_refused(mat + "restitution = 0.5\ndamping = 0.2\n",
+                 {"bad.toml:8:", "key 'damping'", "not both"});
   expect_refused("[simulation]\nsteps = 5\n[[material]]\nname = \"\"\n",
                  {"bad.toml:4:", "key 'name'", "empty"});
 }
