@@ -12,13 +12,9 @@
 
 namespace tridem {
 
+/// How to run a scene, besides what the scene says (a command line's overrides of the
+/// scene's settings are applied to the scene first: apply_overrides in scene_io.hpp).
 struct RunOptions {
-  std::optional<std::string> out_dir;     ///< overrides [output] dir
-  std::optional<Backend> backend;         ///< overrides [simulation] backend
-  std::optional<std::int64_t> steps;      ///< overrides [simulation] steps
-  std::optional<Method> method;           ///< overrides [simulation] method
-  std::optional<ContactTest> contact_test; ///< overrides [simulation] contact_test
-  std::optional<bool> bbox_prefilter;     ///< overrides [simulation] bbox_prefilter
   bool force = false;                     ///< accept dt above dt_crit
   int threads = 0;                        ///< OpenMP threads, 0 = default
   bool progress = true;                   ///< bar on stderr when it is a terminal
@@ -44,7 +40,8 @@ struct RunSummary {
   std::string solver;
 };
 
-/// Runs the scene to the end (or to an interruption), writing its outputs, checkpoints
+/// Runs the scene (its settings are the run's: backend, precision, method, steps, output
+/// directory) to the end (or to an interruption), writing its outputs, checkpoints
 /// every [output] checkpoint_every steps. Throws tridem::Error on failure; on a blow-up
 /// the last good state is first written to last_good.ckpt and final.csv.
 RunSummary run_scene(const Scene& scene, const RunOptions& options);

@@ -36,12 +36,11 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
   throw RunError("internal error: unresolved backend");
 }
 
-/// The method settings again, with the config's method (a command line may have replaced
-/// the scene's): a scene built in code has not been through the reader.
-void check_method(const Scene& scene, Method method) {
+/// The method settings again: a scene built in code has not been through the reader.
+void check_method(const Scene& scene) {
   const std::string source = scene.source.empty() ? "scene built in code" : scene.source;
   const SimulationSettings& s = scene.simulation;
-  if (auto why = method_settings_conflict(method, s.contact_test, s.bbox_prefilter))
+  if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
     throw SceneError(source + ": [simulation] " + *why);
 }
 
@@ -54,16 +53,23 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& conf
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& model,
                                     const TimeStep& ts, const SolverConfig& config) {
-  check_method(scene, config.method);
+  check_method(scene);
   check_time_step(scene, ts, config.force);
-  const Backend backend = resolve_backend(config.backend);
+  const Backend requested = scene.simulation.backend;
+  const Backend backend = resolve_backend(requested);
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(
         "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "
-        "them: give --backend openmp, or leave --threads out",
+        "them: give --backend {}, or leave --threads out",
         config.threads, backend_name(backend),
-        config.backend == Backend::Auto ? " (picked by backend = auto)" : ""));
-  if (config.precision == Precision::Float)
+        requested == Backend::Auto ? " (picked by backend = auto)" : "",
+        backend_name(Backend::OpenMP)));
+  if (std::string why; backend == Backend::Cuda && !cuda_available(&why))
+    throw RunError(fmt::format("backend '{}' is not available: {}; use backend = \"{}\", "
+                               "\"{}\" or \"{}\"",
+                               backend_name(backend), why, backend_name(Backend::Cpu),
+                               backend_name(Backend::OpenMP), backend_name(Backend::Auto)));
+  if (scene.simulation.precision == Precision::Float)
     return make_for_real<float>(scene, model, ts, config, backend);
   return make_for_real<double>(scene, model, ts, config, backend);
 }

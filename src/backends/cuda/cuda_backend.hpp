@@ -21,7 +21,8 @@ bool cuda_available(std::string* reason = nullptr);
 std::string cuda_device_description();
 
 /// The solver running the whole time loop on the GPU. Throws RunError when no GPU is
-/// usable or the scene does not fit in its memory.
+/// usable or the scene does not fit in its memory (make_solver first refuses a build or
+/// machine without one, with the way out).
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config);
 

@@ -148,6 +148,8 @@ std::string Provenance::describe(std::size_t id) const {
   return fmt::format("particle id {}", id);
 }
 
+void validate_settings(const Scene& scene) { check_settings(scene, Refuser(scene)); }
+
 void validate_scene(const Scene& scene, const Provenance* provenance) {
   const Refuser refuse(scene);
   check_settings(scene, refuse);
