@@ -9,10 +9,8 @@
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 
-#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
-#include <vector>
 
 namespace tridem::app {
 
@@ -20,18 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The last frame of an output directory: the highest step among frames/frame_*.vtu.
+/// The last frame of an output directory: the highest step among its frames.
 fs::path last_frame(const fs::path& dir) {
-  std::vector<fs::path> frames;
-  const fs::path folder = dir / "frames";
-  if (fs::is_directory(folder))
-    for (const auto& entry : fs::directory_iterator(folder))
-      if (entry.path().extension() == ".vtu") frames.push_back(entry.path());
-  if (frames.empty())
-    throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
-                            "frames, or give a .vtu file",
-                            dir.string()));
-  return *std::max_element(frames.begin(), frames.end());
+  if (auto frame = last_frame_file(dir)) return *frame;
+  throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
+                          "frames, or give a .vtu file",
+                          dir.string()));
 }
 
 /// What the command line says instead of the scene. main.cpp checked the spellings
@@ -54,6 +46,7 @@ int run(const RunArgs& args) {
   RunOptions options;
   options.force = args.force;
   options.threads = args.threads;
+  options.device = args.device;
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.interrupt = &install_interrupt_handlers();

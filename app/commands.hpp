@@ -18,6 +18,7 @@ struct RunArgs {
   std::optional<std::int64_t> steps;
   std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
+  int device = 0;
   bool force = false;
   bool quiet = false;
 };

@@ -73,6 +73,9 @@ int main(int argc, char** argv) {
       ->check(at_least(1));
   run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
       ->check(at_least(0));
+  run_cmd->add_option("--device", run_args.device,
+                      "GPU of the cuda backend, numbered from 0 (default 0)")
+      ->check(at_least(0));
   run_cmd->add_option("--restart", run_args.restart,
                       "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
       ->check(existing("checkpoint"));

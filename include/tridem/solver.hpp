@@ -29,6 +29,9 @@ struct SolverConfig {
   /// OpenMP threads of the openmp backend; 0 = the runtime's default. Applied to the
   /// solver's own parallel regions only: the caller's OpenMP settings are left as they were.
   int threads = 0;
+  /// The GPU of the cuda backend, an index below cuda_device_count() (0 = the first, as
+  /// CUDA numbers them, after CUDA_VISIBLE_DEVICES); other backends refuse anything else.
+  int device = 0;
   bool force = false;  ///< run even with dt above dt_crit
 };
 

@@ -69,6 +69,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
 
   SolverConfig config;
   config.threads = options.threads;
+  config.device = options.device;
   config.force = options.force;
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);

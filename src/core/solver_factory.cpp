@@ -44,6 +44,32 @@ void check_method(const Scene& scene) {
     throw SceneError(source + ": [simulation] " + *why);
 }
 
+/// The GPU the caller chose, refused with the way out where it is not one of this machine.
+void check_device(int device, Backend backend, Backend requested) {
+  if (backend != Backend::Cuda) {
+    if (device != 0)
+      throw RunError(fmt::format(
+          "--device {} picks a GPU, but the backend is {}{}, which runs on the CPU: give "
+          "--backend {}, or leave --device out",
+          device, backend_name(backend),
+          requested == Backend::Auto ? " (picked by backend = auto)" : "",
+          backend_name(Backend::Cuda)));
+    return;
+  }
+  if (std::string why; !cuda_available(&why))
+    throw RunError(fmt::format("backend '{}' is not available: {}; use backend = \"{}\", "
+                               "\"{}\" or \"{}\"",
+                               backend_name(backend), why, backend_name(Backend::Cpu),
+                               backend_name(Backend::OpenMP), backend_name(Backend::Auto)));
+  const int count = cuda_device_count();
+  if (device < 0 || device >= count)
+    throw RunError(fmt::format(
+        "--device {} is not a GPU of this machine, which has {} usable GPU{} ({}): give one "
+        "of those, or leave --device out for device 0",
+        device, count, count == 1 ? "" : "s",
+        count == 1 ? std::string("device 0") : fmt::format("devices 0 to {}", count - 1)));
+}
+
 }  // namespace
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config) {
@@ -64,11 +90,7 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
         config.threads, backend_name(backend),
         requested == Backend::Auto ? " (picked by backend = auto)" : "",
         backend_name(Backend::OpenMP)));
-  if (std::string why; backend == Backend::Cuda && !cuda_available(&why))
-    throw RunError(fmt::format("backend '{}' is not available: {}; use backend = \"{}\", "
-                               "\"{}\" or \"{}\"",
-                               backend_name(backend), why, backend_name(Backend::Cpu),
-                               backend_name(Backend::OpenMP), backend_name(Backend::Auto)));
+  check_device(config.device, backend, requested);
   if (scene.simulation.precision == Precision::Float)
     return make_for_real<float>(scene, model, ts, config, backend);
   return make_for_real<double>(scene, model, ts, config, backend);

@@ -14,7 +14,9 @@ bool cuda_available(std::string* reason) {
   return false;
 }
 
-std::string cuda_device_description() { return {}; }
+int cuda_device_count() { return 0; }
+
+std::string cuda_device_description(int) { return {}; }
 
 std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, const TimeStep&,
                                          const SolverConfig&) {

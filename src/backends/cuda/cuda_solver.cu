@@ -36,13 +36,16 @@ std::string mib(std::size_t bytes) {
 
 template <class Real>
 CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
-                             const SolverConfig&)
+                             const SolverConfig& config)
     : n_(model.size()), method_(scene.simulation.method) {
   if (n_ > static_cast<std::size_t>(INT_MAX / 8))
     throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
                    " particles on one GPU");
+  // The caller's GPU (make_solver checked the index): every allocation, stream and kernel
+  // of this solver goes to the device current on this host thread from here on.
+  TRIDEM_CUDA_CHECK(cudaSetDevice(config.device));
   cudaDeviceProp prop{};
-  TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+  TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, config.device));
   device_name_ = prop.name;
   // Refuse before allocating anything: a scene that does not fit says so up front.
   const std::size_t reserve = kCudaPairsPerParticle * n_ + 1024;
@@ -429,10 +432,16 @@ bool cuda_available(std::string* reason) {
   return true;
 }
 
-std::string cuda_device_description() {
-  if (!cuda_available()) return {};
+int cuda_device_count() {
+  int count = 0;
+  if (!cuda_available() || cudaGetDeviceCount(&count) != cudaSuccess) return 0;
+  return count;
+}
+
+std::string cuda_device_description(int device) {
+  if (device < 0 || device >= cuda_device_count()) return {};
   cudaDeviceProp prop{};
-  if (cudaGetDeviceProperties(&prop, 0) != cudaSuccess) return {};
+  if (cudaGetDeviceProperties(&prop, device) != cudaSuccess) return {};
   char text[256];
   std::snprintf(text, sizeof text, "%s (sm_%d%d, %d SMs, %.0f GiB)", prop.name, prop.major,
                 prop.minor, prop.multiProcessorCount,

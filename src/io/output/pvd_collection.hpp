@@ -21,6 +21,8 @@ class PvdCollection {
   /// (a step written twice) updates its entry instead of duplicating it.
   void add(double time, const std::filesystem::path& dataset);
 
+  const std::filesystem::path& file() const { return file_; }
+
  private:
   struct Entry {
     double time;
