@@ -27,6 +27,9 @@ Scene parse_scene(std::string_view toml_text, std::string source_name);
 /// degenerate, fixed triangles at rest. Changes nothing (clockwise triangles are accepted).
 void validate_scene(const Scene& scene);
 
+/// How messages name the scene: the file it came from, or "scene built in code".
+std::string scene_label(const Scene& scene);
+
 /// Settings a command line gives instead of the scene's: each replaces the [simulation]
 /// or [output] key of the same name. Applied by apply_overrides alone, so that the scene
 /// it returns is the one description of the run that everything after reads.

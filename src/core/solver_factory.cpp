@@ -3,6 +3,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 
@@ -38,10 +39,9 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
 
 /// The method settings again: a scene built in code has not been through the reader.
 void check_method(const Scene& scene) {
-  const std::string source = scene.source.empty() ? "scene built in code" : scene.source;
   const SimulationSettings& s = scene.simulation;
   if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
-    throw SceneError(source + ": [simulation] " + *why);
+    throw SceneError(scene_label(scene) + ": [simulation] " + *why);
 }
 
 /// The GPU the caller chose, refused with the way out where it is not one of this machine.

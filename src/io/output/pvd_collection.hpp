@@ -1,7 +1,7 @@
 #pragma once
 // A ParaView collection (.pvd) listing time steps. It is rewritten whole after every
-// frame, through a temporary file and a rename, so a reader (or a run that dies) never
-// sees it half written.
+// frame by write_file_atomically (atomic_file.hpp), so a reader, a run that dies or a
+// power cut never leaves it half written.
 #include <filesystem>
 #include <string>
 #include <vector>
