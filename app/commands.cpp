@@ -86,8 +86,7 @@ int info(const std::string& path) {
   fmt::print("steps        {} (t = {:.6g} s)\n", sim.steps,
              static_cast<double>(sim.steps) * info.dt_chosen);
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
-             backend_name(resolve_backend(sim.backend)),
-             precision_name(sim.precision));
+             backend_name(resolve_backend(sim.backend)), precision_name(sim.precision));
   fmt::print("method       {}\n",
              method_description(sim.method, sim.contact_test, sim.bbox_prefilter));
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",

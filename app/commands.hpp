@@ -26,7 +26,7 @@ struct RunArgs {
 /// (after it wrote its checkpoint).
 int run(const RunArgs&);
 
-int info(const std::string& scene);
+int info(const std::string& path);
 
 struct RenderArgs {
   std::string input;  ///< a .vtu frame, or an output directory (its last frame)

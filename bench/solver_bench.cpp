@@ -275,8 +275,8 @@ int main(int argc, char** argv) {
       const std::string size = "/n:" + std::to_string(n);
       const Work w = v.backend == Backend::Cuda ? gpu_work(n) : work(n);
       auto* bm = benchmark::RegisterBenchmark(
-          (std::string("dense_pile/") + v.name() + method_tag + size).c_str(), dense_pile_case, v, n,
-          w.steps_per_iteration);
+          (std::string("dense_pile/") + v.name() + method_tag + size).c_str(), dense_pile_case, v,
+          n, w.steps_per_iteration);
       const auto iters = std::max<std::int64_t>(
           1, std::llround(static_cast<double>(w.iterations) * iter_scale));
       bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(

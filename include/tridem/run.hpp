@@ -41,11 +41,12 @@ struct RunSummary {
   std::string solver;
 };
 
-/// Runs the scene (its settings are the run's: backend, precision, method, steps, output
-/// directory) to the end (or to an interruption), writing its outputs, checkpoints
-/// every [output] checkpoint_every steps. Throws tridem::Error on failure; on a blow-up
-/// the last good state is first written to last_good.ckpt and final.csv.
-RunSummary run_scene(const Scene& scene, const RunOptions& options);
+/// Runs the scene `input` to the end (or to an interruption): its settings are the run's
+/// (backend, precision, method, steps, output directory); relax_overlaps moves a copy's
+/// triangles. Writes its outputs, and checkpoints every [output] checkpoint_every steps.
+/// Throws tridem::Error on failure; on a blow-up the last good state is first written to
+/// last_good.ckpt and final.csv.
+RunSummary run_scene(const Scene& input, const RunOptions& options);
 
 /// What `tridem info` prints about a scene.
 struct SceneInfo {

@@ -14,7 +14,8 @@
 namespace tridem {
 
 ParticleModel build_particle_model(const Scene& scene) {
-  if (scene.triangles.empty()) throw SceneError(scene_label(scene) + ": the scene has no triangles");
+  if (scene.triangles.empty())
+    throw SceneError(scene_label(scene) + ": the scene has no triangles");
   ParticleModel m;
   const std::size_t n = scene.triangles.size();
   m.offsets.resize(n);

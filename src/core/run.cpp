@@ -78,7 +78,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));
   // What the checkpoints of this run record, and what a restart must match.
   const CheckpointMeta meta{scene.simulation.precision, scene_fingerprint(scene),
-                           physics_settings(scene, ts.chosen)};
+                            physics_settings(scene, ts.chosen)};
   const std::optional<ResumePoint> resume = restore(*solver, scene, meta, options);
 
   const std::int64_t last = scene.simulation.steps;

@@ -39,8 +39,7 @@ TEST(CpuParity, SolverThreadsLeaveTheCallersSettingAlone) {
   EXPECT_EQ(omp_get_max_threads(), before) << "after construction";
   solver->advance(50);
   EXPECT_EQ(omp_get_max_threads(), before) << "after advance";
-  EXPECT_NE(solver->description().find(fmt::format("({} threads)", threads)),
-            std::string::npos)
+  EXPECT_NE(solver->description().find(fmt::format("({} threads)", threads)), std::string::npos)
       << solver->description();
   Snapshot parallel;
   solver->snapshot(parallel, true);

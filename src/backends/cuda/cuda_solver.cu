@@ -53,12 +53,11 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
-    throw RunError("the scene needs about " + mib(need) + " of GPU memory for " +
-                   std::to_string(n_) + " particles, but the GPU (" + device_name_ + ") has " +
-                   mib(free_bytes) + " free of " + mib(total_bytes) +
-                   ": use precision = \"" + std::string(precision_name(Precision::Float)) +
-                   "\", fewer particles, or backend = \"" +
-                   std::string(backend_name(Backend::OpenMP)) + "\"");
+    throw RunError(
+        "the scene needs about " + mib(need) + " of GPU memory for " + std::to_string(n_) +
+        " particles, but the GPU (" + device_name_ + ") has " + mib(free_bytes) + " free of " +
+        mib(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
+        "\", fewer particles, or backend = \"" + std::string(backend_name(Backend::OpenMP)) + "\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
 
   params_.dt = ts.chosen;
@@ -391,8 +390,7 @@ std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
   return std::string(backend_name(Backend::Cuda)) + " (" + device_name_ + "), " +
-         precision_description(sizeof(Real) == 8 ? Precision::Double : Precision::Float) +
-         ", " +
+         precision_description(sizeof(Real) == 8 ? Precision::Double : Precision::Float) + ", " +
          method_description(method_, filter_.test, filter_.bbox_prefilter) +
          (pairs_->single_step() || decomposed_ ? std::string(", list rebuilt every step")
                                                : std::string(skin));

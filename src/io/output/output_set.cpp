@@ -2,6 +2,7 @@
 #include "tridem/output.hpp"
 
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace tridem {
@@ -17,8 +18,9 @@ OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding enco
                      const std::optional<ResumePoint>& resume)
     : impl_(std::make_unique<Impl>()) {
   io::make_directory(dir);
-  impl_->dir = dir;
-  impl_->writers = io::make_writers(settings, dir, encoding);
+  impl_->dir = std::move(dir);
+  const fs::path& where = impl_->dir;
+  impl_->writers = io::make_writers(settings, where, encoding);
   // A run owns the tridem files of its directory: frames, their renderings and contact
   // files of an earlier run there would otherwise mix with the new ones (ParaView and
   // `tridem render` would show them). Each writer knows its own files; nothing else is
@@ -28,7 +30,7 @@ OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding enco
   // describe a failure this run did not have. checkpoint.ckpt stays: it may be what the
   // user means to restart from.
   std::error_code ec;
-  if (!resume) fs::remove(dir / "last_good.ckpt", ec);
+  if (!resume) fs::remove(where / "last_good.ckpt", ec);
 }
 
 OutputSet::~OutputSet() = default;

@@ -29,9 +29,9 @@ class OutputWriter {
   /// files of an earlier run there; a restarted one keeps them up to the resume point
   /// and removes what came after, which it will write again.
   virtual void start(const std::optional<ResumePoint>& resume) = 0;
-  virtual void frame(const Snapshot&) {}  ///< every [output] every steps
+  virtual void frame(const Snapshot&) {}                  ///< every [output] every steps
   virtual void log(const Snapshot&, const LogInputs&) {}  ///< every energy_every steps
-  virtual void final_state(const Snapshot&) {}  ///< the state a run ends or stops with
+  virtual void final_state(const Snapshot&) {}            ///< the state a run ends or stops with
 };
 
 /// Every output format of a run into `dir`, in the order they write.

@@ -127,9 +127,8 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
       dir, StepFileFormat{kFrameFiles, ".vtu", "tridem.pvd", ".png"},
       [encoding](const fs::path& f, const Snapshot& s) { write_vtu_frame(f, s, encoding); }));
   const bool contacts = settings.contacts;
-  w.push_back(std::make_unique<StepFileWriter>(
-      dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
-      contacts ? Write(write_contacts_csv) : Write()));
+  w.push_back(std::make_unique<StepFileWriter>(dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
+                                               contacts ? Write(write_contacts_csv) : Write()));
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kContactFiles, ".vtp", "contacts.pvd", {}},
       contacts ? Write([encoding](const fs::path& f, const Snapshot& s) {
@@ -137,8 +136,7 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
       })
                : Write()));
   w.push_back(std::make_unique<CsvLog>(
-      dir / "energy.csv", kEnergyHeader,
-      [](OutFile& out, const Snapshot& s, const LogInputs& in) {
+      dir / "energy.csv", kEnergyHeader, [](OutFile& out, const Snapshot& s, const LogInputs& in) {
         write_energy_row(out, compute_energy(s, in.gravity, in.budget));
       }));
   w.push_back(std::make_unique<CsvLog>(
@@ -155,8 +153,8 @@ void make_directory(const fs::path& dir) {
   if (!ec && !fs::is_directory(dir, ec) && !ec)
     ec = std::make_error_code(std::errc::not_a_directory);
   if (ec)
-    throw RunError(fmt::format("cannot create output directory '{}': {}", dir.string(),
-                               ec.message()));
+    throw RunError(
+        fmt::format("cannot create output directory '{}': {}", dir.string(), ec.message()));
 }
 
 }  // namespace tridem::io

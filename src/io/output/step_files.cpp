@@ -16,8 +16,7 @@ std::string StepFiles::name(std::int64_t step, std::string_view extension) const
   return fmt::format("{}{:09}{}", prefix, step, extension);
 }
 
-fs::path StepFiles::path(const fs::path& dir, std::int64_t step,
-                         std::string_view extension) const {
+fs::path StepFiles::path(const fs::path& dir, std::int64_t step, std::string_view extension) const {
   return dir / folder / name(step, extension);
 }
 

@@ -20,8 +20,7 @@ struct StepFiles {
   std::filesystem::path path(const std::filesystem::path& dir, std::int64_t step,
                              std::string_view extension) const;
   /// The step of a file name of this kind ending in `extension`; none for any other name.
-  std::optional<std::int64_t> step_of(std::string_view file_name,
-                                      std::string_view extension) const;
+  std::optional<std::int64_t> step_of(std::string_view file_name, std::string_view extension) const;
   /// Removes the files of this kind ending in `extension` whose step is after `after`, or
   /// all of them; nothing else in the folder is touched.
   void remove(const std::filesystem::path& dir, std::string_view extension,

@@ -35,8 +35,7 @@ std::optional<std::string> triangle_problem(const TriangleSpec& t, std::size_t m
     return "velocity and angular_velocity must be finite";
   switch (t.motion) {
     case Motion::Free:
-    case Motion::Prescribed:
-      return std::nullopt;
+    case Motion::Prescribed: return std::nullopt;
     case Motion::Fixed:
       if (t.velocity.x != 0 || t.velocity.y != 0 || t.angular_velocity != 0)
         return "a fixed triangle must have zero velocity and angular_velocity";

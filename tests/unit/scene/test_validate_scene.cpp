@@ -80,7 +80,9 @@ TEST(SceneValidate, ParticleModelRefusesByTheSameRules) {
   const std::vector<std::function<void(Scene&)>> spoils = {
       [](Scene& s) { s.triangles[2].material = 1; },
       [](Scene& s) { s.triangles[1].material = -1; },
-      [](Scene& s) { s.triangles[1].vertices[2] = {4, 0}; },
+      [](Scene& s) {
+        s.triangles[1].vertices[2] = {4, 0};
+      },
       [](Scene& s) { s.triangles[0].vertices[0].x = NAN; },
       [](Scene& s) { s.triangles[0].velocity.y = INFINITY; },
       [](Scene& s) {
