@@ -9,7 +9,11 @@
 // Serial and OpenMP share one constant (the same sums in the same order). The CUDA
 // constants are the device's own (its sin, cos and fused multiply-adds round differently)
 // and are recorded from a run on the GPU machine: an entry still kToBeRecorded fails there,
-// printing the hash to record.
+// printing the hash to record. To record them: on the GPU machine run
+//   build/tests/tridem_tests --gtest_filter='Gpu/StateHash.*' --gtest_repeat=2
+// check that both repetitions print the same hash for each case (the CUDA backend is
+// meant to be deterministic; a hash that varies is a bug to report, not a constant), and
+// write each into the cuda column below.
 #include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 #include "support/state_hash.hpp"
