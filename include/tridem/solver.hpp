@@ -35,8 +35,9 @@ const char* stage_name(Stage stage);
 /// Wall time spent in each stage over the steps completed so far (a step stopped by a
 /// blow-up is not counted). CPU: steady_clock; CUDA: GPU events between the stages.
 struct StageTimes {
-  double seconds[kStageCount] = {};
+  double seconds[kStageCount] = {};  ///< over all completed steps (scaled when sampled)
   std::int64_t steps = 0;
+  std::int64_t timed_steps = 0;  ///< the steps whose stages were timed (a clock may sample)
   const char* clock = "";  ///< how the times were taken, for the report
   /// Per fused stage, the stage whose time includes it (its own index when not fused).
   int fused_into[kStageCount] = {0, 1, 2, 3, 4, 5};

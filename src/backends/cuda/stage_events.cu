@@ -5,6 +5,7 @@
 namespace tridem::cuda {
 
 StageEvents::StageEvents(cudaStream_t stream) : stream_(stream) {
+  every = kSampleEvery;
   for (auto& step : events_)
     for (cudaEvent_t& e : step) TRIDEM_CUDA_CHECK(cudaEventCreate(&e));
 }
@@ -28,7 +29,7 @@ void StageEvents::end_stage(Stage stage) {
 
 void StageEvents::end_step() {
   stages_[slot_] = stage_;
-  ++steps_;
+  count_timed_step();
   if (++slot_ == kRingSteps) {
     drain();
     slot_ = 0;
@@ -53,8 +54,7 @@ void StageEvents::drain() const {
 StageTimes StageEvents::times() const {
   drain();
   StageTimes t;
-  for (int k = 0; k < kStageCount; ++k) t.seconds[k] = seconds_[k];
-  t.steps = steps_;
+  fill(t, seconds_.data());
   t.clock = "CUDA events";
   return t;
 }

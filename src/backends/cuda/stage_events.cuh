@@ -6,6 +6,7 @@
 // times are read only when a ring of kRingSteps steps is full and when a report asks: by
 // then the events are complete (every step ends with the solver's own synchronisation),
 // so reading them does not wait either.
+#include "core/stage_pipeline.hpp"
 #include "tridem/solver.hpp"
 
 #include <cuda_runtime.h>
@@ -15,11 +16,12 @@
 
 namespace tridem::cuda {
 
-class StageEvents {
+/// Times one step in kSampleEvery (StageSampling): recording every step cost 17-21 % of a
+/// step below 10^4 triangles on an H200.
+class StageEvents : public StageSampling {
  public:
-  bool on = true;
-
   static constexpr int kRingSteps = 64;
+  static constexpr int kSampleEvery = 16;
 
   explicit StageEvents(cudaStream_t stream);
   ~StageEvents();
@@ -45,7 +47,6 @@ class StageEvents {
   int stage_ = 0;    ///< stages recorded so far in this step
   mutable int drained_ = 0;  ///< slots already added to the totals
   mutable std::array<double, kStageCount> seconds_{};
-  std::int64_t steps_ = 0;
 };
 
 }  // namespace tridem::cuda

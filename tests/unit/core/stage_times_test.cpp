@@ -1,6 +1,7 @@
 // The pipeline as code: every backend runs its stages through run_step and reports the
 // time of each (Solver::stage_times), counting completed steps only; `tridem run` prints
 // them as a table.
+#include "core/stage_pipeline.hpp"
 #include "core/stage_report.hpp"
 #include "support/gpu.hpp"
 #include "support/scene_builder.hpp"
@@ -9,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
+#include <thread>
 
 namespace tridem {
 namespace {
@@ -72,6 +75,33 @@ TEST(StageTimes, AStepStoppedByABlowUpIsNotCounted) {
   const StageTimes t = solver->stage_times();
   EXPECT_EQ(t.steps, 0);
   EXPECT_EQ(t.total(), 0);
+}
+
+/// A backend whose stages each take at least a millisecond, to see what a sampling clock
+/// counts.
+struct SleepyBackend {
+  int runs = 0;
+  void run_stage(Stage) {
+    ++runs;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+};
+
+TEST(StageTimes, ASampledClockTimesOneStepInEveryAndScalesToAllSteps) {
+  constexpr std::array<Stage, 2> pipeline = {Stage::PairForces, Stage::Integrate};
+  SleepyBackend backend;
+  StageStopwatch clock;
+  clock.every = 4;
+  for (int s = 0; s < 10; ++s) run_step(backend, pipeline, clock);
+  EXPECT_EQ(backend.runs, 20);  // untimed steps still run every stage
+  const StageTimes t = clock.times();
+  EXPECT_EQ(t.steps, 10);
+  EXPECT_EQ(t.timed_steps, 3);  // steps 1, 5 and 9
+  // Scaled to all ten steps: at least 10 ms per stage, not the 3 ms actually timed.
+  EXPECT_GE(t.seconds[static_cast<int>(Stage::PairForces)], 10e-3);
+  EXPECT_GE(t.seconds[static_cast<int>(Stage::Integrate)], 10e-3);
+  EXPECT_NE(stage_table(t).find("10 steps, 3 of them timed"), std::string::npos)
+      << stage_table(t);
 }
 
 TEST(StageTimes, TableNamesEveryStageAndWhereFusedOnesWent) {
