@@ -39,6 +39,7 @@ struct RunSummary {
   double steps_per_second = 0;
   double triangle_steps_per_second = 0;
   std::string solver;
+  StageTimes stages;  ///< the time loop's steps, stage by stage (outputs not included)
 };
 
 /// Runs the scene `input` to the end (or to an interruption): its settings are the run's

@@ -1,7 +1,7 @@
 #pragma once
 // Rules for one triangle, shared by the file reader, validate_scene, the particle model
-// and the tests so that "degenerate" (and every other refusal of a triangle) means the
-// same thing everywhere.
+// and the tests so that "degenerate" (physics::is_degenerate) and every other refusal of a
+// triangle mean the same thing everywhere.
 #include "tridem/scene.hpp"
 #include "tridem/vec2.hpp"
 
@@ -11,11 +11,6 @@
 #include <utility>
 
 namespace tridem::scene_detail {
-
-/// A triangle is degenerate when its area <= kDegenerateAreaFactor · L², L its longest edge:
-/// scale-free, so it holds for grains of any size, and far above rounding noise of a true
-/// sliver while far below any triangle a user would mean to draw.
-inline constexpr double kDegenerateAreaFactor = 1e-12;
 
 /// Twice the signed area: > 0 for counter-clockwise vertices.
 inline double twice_signed_area(const std::array<Vec2d, 3>& v) {

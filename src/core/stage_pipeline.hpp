@@ -1,0 +1,108 @@
+#pragma once
+// One step as code: a backend lists the stages it runs, in order (its pipeline), and
+// implements run_stage(Stage); run_step drives them and lets a clock take the time between
+// consecutive stages. The clocks take one reading per stage boundary and add nothing else
+// to the step (no synchronisation, no allocation): steady_clock on the CPU (about 20 ns a
+// reading), GPU events on CUDA (backends/cuda/stage_events.cuh).
+#include "tridem/solver.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+
+namespace tridem {
+
+/// Runs the stages of `pipeline` in order on `backend` (a member run_stage(Stage)), the
+/// clock reading the time after each one. A stage that throws (a blow-up) ends the step
+/// before the clock counts it.
+template <class Backend, class Clock, std::size_t N>
+void run_step(Backend& backend, const std::array<Stage, N>& pipeline, Clock& clock) {
+  if (!clock.on) {
+    for (const Stage stage : pipeline) backend.run_stage(stage);
+    return;
+  }
+  if (!clock.sample_this_step()) {
+    for (const Stage stage : pipeline) backend.run_stage(stage);
+    clock.count_untimed_step();
+    return;
+  }
+  clock.begin_step();
+  for (const Stage stage : pipeline) {
+    backend.run_stage(stage);
+    clock.end_stage(stage);
+  }
+  clock.end_step();
+}
+
+/// What both clocks share: whether timing is on, and which steps are timed. A clock that
+/// costs a visible part of a small step (CUDA's six event records, about 10 µs against a
+/// 46 µs launch-bound step: bench/results/stage_timing_2026-12-01_nvidia-h200) times one
+/// step in `every` and scales its per-step means to all completed steps.
+class StageSampling {
+ public:
+  bool on = true;
+  int every = 1;
+
+  bool sample_this_step() {
+    if (since_sample_ + 1 < every) {
+      ++since_sample_;
+      return false;
+    }
+    since_sample_ = 0;
+    return true;
+  }
+  void count_untimed_step() { ++steps_; }
+
+ protected:
+  /// Totals over the timed steps scaled to every completed step.
+  void fill(StageTimes& t, const double* timed_seconds) const {
+    t.steps = steps_;
+    t.timed_steps = timed_;
+    const double scale = timed_ > 0 ? static_cast<double>(steps_) / static_cast<double>(timed_) : 0;
+    for (int k = 0; k < kStageCount; ++k) t.seconds[k] = timed_seconds[k] * scale;
+  }
+  void count_timed_step() {
+    ++steps_;
+    ++timed_;
+  }
+
+ private:
+  int since_sample_ = 1 << 30;  ///< the first step is always timed
+  std::int64_t steps_ = 0, timed_ = 0;
+};
+
+/// The CPU's clock: steady_clock read once before the step and once after each stage
+/// (about 20 ns a reading: every step is timed).
+class StageStopwatch : public StageSampling {
+ public:
+  /// A step stopped by a blow-up left its times in step_: they are dropped here.
+  void begin_step() {
+    step_.fill(Clock::duration::zero());
+    last_ = Clock::now();
+  }
+  void end_stage(Stage stage) {
+    const Clock::time_point now = Clock::now();
+    step_[static_cast<int>(stage)] += now - last_;
+    last_ = now;
+  }
+  /// Only completed steps reach the totals.
+  void end_step() {
+    for (int k = 0; k < kStageCount; ++k) total_[k] += step_[k];
+    count_timed_step();
+  }
+  StageTimes times() const {
+    double seconds[kStageCount];
+    for (int k = 0; k < kStageCount; ++k)
+      seconds[k] = std::chrono::duration<double>(total_[k]).count();
+    StageTimes t;
+    fill(t, seconds);
+    t.clock = "steady_clock";
+    return t;
+  }
+ private:
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last_{};
+  std::array<Clock::duration, kStageCount> step_{}, total_{};
+};
+
+}  // namespace tridem
