@@ -102,6 +102,14 @@ physics::ContactLaw<double> calibrated_law(double p, double pt, double mu, doubl
 
 }  // namespace
 
+bool walls_move(const ParticleModel& model) {
+  for (std::size_t i = 0; i < model.size(); ++i)
+    if (model.motion[i] != Motion::Free &&
+        (model.velocity[i].x != 0 || model.velocity[i].y != 0 || model.angular_velocity[i] != 0))
+      return true;
+  return false;
+}
+
 double material_restitution(const Material& m) {
   return m.restitution ? *m.restitution : physics::restitution_of_damping_ratio(m.damping);
 }
