@@ -185,11 +185,17 @@ void for_each_array(Columns& c, G&& g) {
 }
 
 /// Array k of one field's columns (the columns themselves for a field of one array).
-template <class Columns>
-decltype(auto) array_at(Columns& c, int k) {
-  using Plain = std::remove_const_t<Columns>;
-  if constexpr (std::is_array_v<Plain> || is_std_array<Plain>::value) return (c[k]);
-  else return (c);
+template <class T, std::size_t N>
+T& array_at(std::array<T, N>& c, int k) {
+  return c[static_cast<std::size_t>(k)];
+}
+template <class T, std::size_t N>
+const T& array_at(const std::array<T, N>& c, int k) {
+  return c[static_cast<std::size_t>(k)];
+}
+template <class Column>
+Column& array_at(Column& c, int) {
+  return c;
 }
 
 // Member declarations: storage of the solvers' member names (Column and Real in scope),
