@@ -1,6 +1,6 @@
 #pragma once
 // TRIDEM_HD marks a function that runs on the host and, under nvcc, on the device too.
-// Physics is written once with it (architecture.md, "rules of the house").
+// Physics is written once with it (ARCHITECTURE.md, "Rules of the house").
 #if defined(__CUDACC__)
 #define TRIDEM_HD __host__ __device__
 #else

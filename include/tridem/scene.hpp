@@ -80,7 +80,7 @@ struct SimulationSettings {
   /// the centroid); deeper stops the run as a blow-up. 1 = off.
   double max_penetration = 0.8;
   /// Overlapping triangles in the scene are refused; true pushes them apart before the run
-  /// instead, moving positions only (core/overlap_relaxation.hpp).
+  /// instead, moving positions only (core/initial_overlaps.hpp).
   bool relax_overlaps = false;
 };
 

@@ -3,7 +3,7 @@
 // two overlap tests. The exact test is the separating-axis theorem (two convex polygons
 // are disjoint iff the normal of some edge separates them); the paper's direct area
 // method (a vertex of one inside the other) is kept as its baseline because it misses
-// overlaps where edges cross with no vertex inside (contact-model.md).
+// overlaps where edges cross with no vertex inside (docs/model.md, "Contact detection").
 #include "tridem/hd.hpp"
 #include "tridem/vec2.hpp"
 

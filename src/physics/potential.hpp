@@ -2,7 +2,7 @@
 // Munjiza's triangle potential φ(P) = min_k 3A_k(P)/A: one at the centroid, zero on the
 // boundary. In the sub-triangle S_k = (c, x_k, x_k+1) it is linear,
 // φ = 3·cross(e_k, P − x_k) / (2A), so an edge clipped to S_k carries a linear load whose
-// integral and centroid are exact (contact-model.md, "The potential of a triangle").
+// integral and centroid are exact (docs/model.md, "The potential contact force").
 #include "physics/geometry.hpp"
 
 namespace tridem::physics {

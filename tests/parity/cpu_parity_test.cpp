@@ -3,6 +3,7 @@
 // cell grid (rounding apart: its pairs are summed in another order), single-domain with
 // the exact test must reproduce the grid bit for bit, and float must stay close over a
 // short run.
+#include "support/float_compare.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 
@@ -104,12 +105,7 @@ TEST(CpuParity, FloatGridFindsEveryContactFarFromOrigin) {
 
 TEST(CpuParity, FloatStaysCloseToDoubleOverShortRun) {
   const Scene s = test::jostling_pile(8, 5);
-  const Snapshot d = test::run_to(s, Backend::Cpu, 50);
-  const Snapshot f = test::run_to(s, Backend::Cpu, 50, Precision::Float);
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    EXPECT_NEAR(d.x[i], f.x[i], 1e-4) << "particle " << i;
-    EXPECT_NEAR(d.y[i], f.y[i], 1e-4) << "particle " << i;
-  }
+  test::expect_float_follows_double(s, 50, test::run_to(s, Backend::Cpu, 50, Precision::Float));
 }
 
 }  // namespace

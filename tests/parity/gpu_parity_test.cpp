@@ -1,5 +1,6 @@
 // The CUDA solver against the serial reference (the tolerances and why: support/gpu_compare.hpp).
 #include "support/gpu.hpp"
+#include "support/float_compare.hpp"
 #include "support/gpu_compare.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
@@ -91,12 +92,7 @@ TEST(GpuParity, SkinDoesNotChangeTheResult) {
 TEST(GpuParity, FloatStaysCloseToSerialDouble) {
   TRIDEM_SKIP_WITHOUT_GPU();
   const Scene s = test::jostling_pile(8, 5);
-  const Snapshot d = test::run_to(s, Backend::Cpu, 50);
-  const Snapshot f = test::run_to(s, Backend::Cuda, 50, Precision::Float);
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    EXPECT_NEAR(d.x[i], f.x[i], 1e-4) << "particle " << i;
-    EXPECT_NEAR(d.y[i], f.y[i], 1e-4) << "particle " << i;
-  }
+  test::expect_float_follows_double(s, 50, test::run_to(s, Backend::Cuda, 50, Precision::Float));
 }
 
 TEST(GpuParity, BlowUpKeepsTheLastGoodState) {

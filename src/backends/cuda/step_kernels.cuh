@@ -27,8 +27,9 @@ __device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, i
 }
 
 /// Launch shape of the pair-force kernel: 128-thread blocks with a register cap, measured
-/// best on an H100 (bench/results/cuda_tuning.md): the double kernel needs 226 registers
-/// uncapped, so 4 blocks per SM (128 registers, a few spills) beat 8 warps without spills.
+/// best on an H100 (bench/results/cuda_tuning_2026-11-23_nvidia-h100-80gb-hbm3.md): the
+/// double kernel needs 226 registers uncapped, so 4 blocks per SM (128 registers, a few
+/// spills) beat 8 warps without spills.
 template <class Real>
 struct PairKernelShape;
 template <>

@@ -114,17 +114,29 @@ TEST(SceneRandom, FollowsTheDocumentedDrawOrder) {
 }
 
 TEST(SceneRandom, IrregularityChangesShapesNotPlacement) {
-  // Same draws whatever the irregularity: the first vertex keeps its direction from the
-  // centre, only its distance and the others move. Checked through the centroid staying
-  // within the cell's jitter box either way.
-  const auto a = generate_random(packing({0, 0}, {8, 8}, 1, 0.1, 0.0, 9));
-  const auto b = generate_random(packing({0, 0}, {8, 8}, 1, 0.1, 0.6, 9));
-  ASSERT_EQ(a.size(), b.size());
-  const double R = 1 / std::sqrt(3.0);
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec2d ca = (a[i].vertices[0] + a[i].vertices[1] + a[i].vertices[2]) / 3.0;
-    const Vec2d cb = (b[i].vertices[0] + b[i].vertices[1] + b[i].vertices[2]) / 3.0;
-    EXPECT_LT(norm(ca - cb), R) << i;
+  // Every triangle takes the same nine draws whatever the irregularity, so its centre and
+  // its orientation θ0 do not depend on it. At irregularity 0 the triangle is equilateral
+  // about its centre, which is then its centroid; at irregularity ι, vertex k is at a
+  // radius in [R(1 − ι/2), R] from that same centre and turned by at most ι·π/6 from
+  // vertex k of the regular triangle. A centre or θ0 that moved with ι (even by a fraction
+  // of the jitter, here up to R/4 per axis) puts vertices outside these bounds.
+  const double R = 1 / std::sqrt(3.0), irregularity = 0.6, eps = 1e-12;
+  const auto regular = generate_random(packing({0, 0}, {20, 20}, 1, 0.5, 0.0, 9));
+  const auto irregular = generate_random(packing({0, 0}, {20, 20}, 1, 0.5, irregularity, 9));
+  ASSERT_EQ(regular.size(), irregular.size());
+  ASSERT_GE(regular.size(), 100u);
+  const double max_turn = irregularity * std::numbers::pi / 6;
+  for (std::size_t i = 0; i < regular.size(); ++i) {
+    const auto& a = regular[i].vertices;
+    const Vec2d centre = (a[0] + a[1] + a[2]) / 3.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec2d ra = a[k] - centre, rb = irregular[i].vertices[k] - centre;
+      ASSERT_NEAR(norm(ra), R, eps) << "triangle " << i;
+      EXPECT_LE(norm(rb), R + eps) << "triangle " << i << ", vertex " << k;
+      EXPECT_GE(norm(rb), R * (1 - irregularity / 2) - eps) << "triangle " << i << ", vertex " << k;
+      EXPECT_LE(std::abs(std::atan2(cross(ra, rb), dot(ra, rb))), max_turn + eps)
+          << "triangle " << i << ", vertex " << k;
+    }
   }
 }
 
