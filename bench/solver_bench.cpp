@@ -14,6 +14,9 @@
 //   steps_per_iter   k
 //   first_step       the first timed step (after the warm-up)
 //   contacts_per_tri touching pairs per triangle at the end of the window (density check)
+//   stage_<name>     seconds per step of each stage in the timed window (Solver::
+//                    stage_times(): steady_clock on the CPU, CUDA events on the GPU); a
+//                    stage the backend fuses into another one's kernel has no counter
 //
 // Extra flags (before or among the --benchmark_* ones):
 //   --max_n=N         skip sizes above N (e.g. --max_n=1e5 to fit a time budget)
@@ -21,6 +24,7 @@
 //   --backends=LIST   cpu,openmp,cuda,cuda-float (default cpu,openmp); cuda-float is the
 //                     GPU in precision = "float" (the mixed mode: double state, float
 //                     pairs; docs/model.md, "Precision"), the others double
+//   --stage_timing=0  run without per-stage times (what timing costs: compare s_per_step)
 //   --frames=1        also time one output frame (snapshot) per variant and size
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
 //   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
@@ -103,6 +107,9 @@ const Variant kVariants[] = {
     {Backend::Cuda, tridem::Precision::Float, "cuda-float"},
 };
 
+/// --stage_timing: per-stage times on (the default) or off.
+bool g_stage_timing = true;
+
 /// How pairs are found in every case (--method, --contact_test, --bbox_prefilter).
 tridem::SimulationSettings g_method;
 
@@ -148,6 +155,8 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
   const Backend backend = v.backend;
   const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
   if (!solver) return;
+  solver->set_stage_timing(g_stage_timing);
+  const tridem::StageTimes before = solver->stage_times();
   try {
     for (auto _ : state) solver->advance(k);
   } catch (const std::exception& e) {
@@ -170,6 +179,14 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
   state.counters["steps_per_iter"] = static_cast<double>(k);
   state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  const tridem::StageTimes after = solver->stage_times();
+  const auto steps = static_cast<double>(after.steps - before.steps);
+  for (int s = 0; s < tridem::kStageCount && steps > 0; ++s) {
+    if (after.fused_into[s] != s) continue;
+    std::string name = tridem::stage_name(static_cast<tridem::Stage>(s));
+    std::replace(name.begin(), name.end(), ' ', '_');
+    state.counters["stage_" + name] = (after.seconds[s] - before.seconds[s]) / steps;
+  }
   const std::string stats = solver->statistics();
   state.SetLabel(solver->description() + (stats.empty() ? "" : "; " + stats));
 }
@@ -233,6 +250,7 @@ int main(int argc, char** argv) {
       !take_choice("tridem_bench", argc, argv, "layout", tridem::kLayoutNames, d.layout))
     return 2;
   g_method.bbox_prefilter = prefilter_flag != "0";
+  g_stage_timing = take_flag(argc, argv, "stage_timing") != "0";
   for (auto [flag, value] : {std::pair{"rows", &d.rows}, std::pair{"columns", &d.columns},
                              std::pair{"capacity", &d.capacity}})
     if (const std::string text = take_flag(argc, argv, flag); !text.empty())

@@ -42,6 +42,7 @@ struct RunSummary {
   double steps_per_second = 0;
   double triangle_steps_per_second = 0;
   std::string solver;
+  StageTimes stages;  ///< the time loop's steps, stage by stage (outputs not included)
 };
 
 /// Runs the scene to the end (or to an interruption), writing its outputs, checkpoints

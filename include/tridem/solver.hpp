@@ -12,14 +12,36 @@
 
 namespace tridem {
 
-/// The stages of one step, in the order they run.
+/// The stages of one step. Each backend runs them through run_stage() in the order of its
+/// pipeline (core/stage_pipeline.hpp), which times each one; a stage that a backend fuses
+/// into another one's kernel is not in its pipeline and reports no time (ARCHITECTURE.md,
+/// "The stages of a step").
 enum class Stage {
   Geometry,    ///< vertices and bounding boxes from the poses
-  BroadPhase,  ///< pairs (cell grid or all pairs: boxes overlap; single-domain: every pair
-               ///< through the contact test), contact history carried over
-  PairForces,  ///< exact overlap test and potential contact force of each candidate pair
-  Accumulate,  ///< sum of the pair forces on each particle
-  Integrate,   ///< symplectic Euler, prescribed motions, blow-up check
+  PairList,    ///< broad phase: the pairs (cell grid or all pairs: boxes overlap;
+               ///< single-domain, decomposition: through the contact test), their contact
+               ///< history carried over, the reverse index
+  PairForces,  ///< exact overlap test and contact force of each listed pair; too deep a
+               ///< pair stops the run
+  Gather,      ///< the sum of its pair forces on each particle, in a fixed order
+  Check,       ///< the runaway test of every particle's step, before anything is written
+  Integrate,   ///< symplectic Euler and prescribed motions written, the step's energy added
+};
+inline constexpr int kStageCount = 6;
+
+/// "geometry", "pair list", "pair forces", "gather", "check", "integrate".
+const char* stage_name(Stage stage);
+
+/// Wall time spent in each stage over the steps completed so far (a step stopped by a
+/// blow-up is not counted). CPU: steady_clock; CUDA: GPU events between the stages.
+struct StageTimes {
+  double seconds[kStageCount] = {};
+  std::int64_t steps = 0;
+  const char* clock = "";  ///< how the times were taken, for the report
+  /// Per fused stage, the stage whose time includes it (its own index when not fused).
+  int fused_into[kStageCount] = {0, 1, 2, 3, 4, 5};
+
+  double total() const;
 };
 
 struct SolverConfig {
@@ -55,6 +77,12 @@ class Solver {
   virtual std::size_t size() const = 0;
   /// e.g. "openmp (2 threads), double, grid"
   virtual std::string description() const = 0;
+  /// The time each stage took over the steps advanced so far. Cheap: a backend collects
+  /// the times as it goes and adds them up only here.
+  virtual StageTimes stage_times() const = 0;
+  /// Stage timing is on from the start; off, a step takes no clock readings at all (the
+  /// benchmark measures what timing costs this way).
+  virtual void set_stage_timing(bool on) = 0;
   /// What the solver did so far, for the run's summary (e.g. how often the CUDA pair list
   /// was rebuilt); empty when there is nothing to say.
   virtual std::string statistics() const { return {}; }

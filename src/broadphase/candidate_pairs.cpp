@@ -1,5 +1,6 @@
 #include "broadphase/candidate_pairs.hpp"
 
+#include "broadphase/emitter_rule.hpp"
 #include "broadphase/grid_rules.hpp"
 
 #include <algorithm>
@@ -91,28 +92,28 @@ template <class Real>
 template <class Visit>
 void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real>& b,
                                             Method method, Visit&& visit) const {
-  auto overlap = [&b](std::int32_t p, std::int32_t q) {
-    return b.lo_x[p] <= b.hi_x[q] && b.lo_x[q] <= b.hi_x[p] && b.lo_y[p] <= b.hi_y[q] &&
-           b.lo_y[q] <= b.hi_y[p];
+  const physics::Aabb<Real> box_i = b.box(i);
+  const bool free_i = free_[i] != 0;
+  // All-pairs has no size classes: every particle counts as small.
+  auto consider = [&](std::int32_t j, bool small_j) {
+    if (emits_pair(i, j, true, small_j, free_i, free_[j] != 0) &&
+        physics::boxes_overlap(box_i, b.box(j)))
+      visit(j);
   };
   if (method == Method::AllPairs) {
     for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
-      if ((free_[i] || free_[j]) && overlap(i, j)) visit(j);
+      consider(j, true);
     return;
   }
-  if (!small_[i]) return;  // large particles are reached from the small ones
+  if (!small_[i]) return;  // a large particle emits nothing: the small ones reach it
   const std::int64_t cx = cell_of_[i] % nx_, cy = cell_of_[i] / nx_;
   for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
     for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1);
          ++x) {
       const std::int64_t c = x + y * nx_;
-      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-        const std::int32_t j = sorted_[k];
-        if (j > i && (free_[i] || free_[j]) && overlap(i, j)) visit(j);
-      }
+      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) consider(sorted_[k], true);
     }
-  for (const std::int32_t j : large_)
-    if ((free_[i] || free_[j]) && overlap(i, j)) visit(j);
+  for (const std::int32_t j : large_) consider(j, false);
 }
 
 template <class Real>

@@ -5,8 +5,9 @@
 // and a small particle is binned by the lower-left corner of its bounding box: two boxes no
 // wider than L that overlap then have corners in neighbouring cells, so a 3×3 scan finds
 // them. Boundary triangles larger than L (walls, hopper sides) are kept in a short list
-// that every small particle checks directly. Pairs of two non-free particles are skipped.
+// that every small particle checks directly. Who emits a pair is broadphase/emitter_rule.hpp.
 #include "broadphase/pair_list.hpp"
+#include "physics/geometry.hpp"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -30,6 +31,10 @@ struct BoxArrays {
   const Real* lo_y;
   const Real* hi_x;
   const Real* hi_y;
+
+  physics::Aabb<Real> box(std::int64_t i) const {
+    return physics::box_of(lo_x[i], lo_y[i], hi_x[i], hi_y[i]);
+  }
 };
 
 template <class Real>

@@ -1,8 +1,9 @@
 #pragma once
 // The per-pair decision of the paper's methods (single-domain, decomposition), on the host
-// and the device alike: whether particle i emits the pair {i, j}, and whether the pair
-// passes the contact test, with or without the bounding-box pre-filter before it. Only the
-// pairs that pass get a force computed.
+// and the device alike: whether a pair (emitted by the rule of emitter_rule.hpp) passes the
+// contact test, with or without the bounding-box pre-filter before it. Only the pairs that
+// pass get a force computed.
+#include "broadphase/emitter_rule.hpp"
 #include "physics/local_frame.hpp"
 #include "tridem/hd.hpp"
 #include "tridem/scene.hpp"
@@ -33,20 +34,9 @@ struct TriangleArrays {
     return physics::triangle_at(physics::offset_from<Real>(origin, centroid(i)), rel);
   }
   TRIDEM_HD physics::Aabb<Real> box(int i) const {
-    return {{lo_x[i], lo_y[i]}, {hi_x[i], hi_y[i]}};
+    return physics::box_of(lo_x[i], lo_y[i], hi_x[i], hi_y[i]);
   }
 };
-
-/// The house's emitter rule, the one the cell grid follows (candidate_pairs.hpp): a pair
-/// needs one free particle; two small particles are emitted by the lower index, a small
-/// and a large one (a wall) by the small one. Following it, the paper's methods build
-/// exactly the grid's rows (minus the pairs that fail the test), so that with the exact
-/// test they reproduce the grid bit for bit.
-TRIDEM_HD inline bool emits_pair(int i, int j, bool small_i, bool small_j, bool free_i,
-                                 bool free_j) {
-  if (!small_i || !(free_i || free_j)) return false;
-  return !small_j || j > i;
-}
 
 /// Whether a pair gets a force. The exact test is what pair_force itself checks first
 /// (the same separating-axis arithmetic), so the pairs it drops would have given exact

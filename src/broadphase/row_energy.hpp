@@ -5,6 +5,8 @@
 // backend adds them when it writes the step's state (a step stopped by a blow-up adds
 // nothing).
 #include "physics/contact_force.hpp"
+#include "physics/integrate.hpp"
+#include "tridem/energy_budget.hpp"
 
 namespace tridem {
 
@@ -40,6 +42,27 @@ TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, cons
     }
   }
   return sum;
+}
+
+/// What particle i's step adds to the budget's per-particle sums (`sums[k][i]`, k in
+/// EnergyAccumulator order; host vectors or device pointers) when the backend writes it:
+/// its own row of pairs (row_energy) and, if free, what local damping took from it over
+/// the step from `before` to `after` under force f and torque m.
+template <class Sums, class Real, class Offset, class Index, class WallVelocity>
+TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* offset,
+                                      const Index* partner, const physics::PairForce<Real>* result,
+                                      WallVelocity&& wall_velocity, bool free,
+                                      const physics::Pose<double>& before,
+                                      const physics::Pose<double>& after, Vec2<Real> f, Real m,
+                                      double inv_mass, Vec2d g, double alpha, double dt) {
+  const RowEnergy row = row_energy(i, offset, partner, result, wall_velocity, dt);
+  sums[kDissipatedDamping][i] += row.damping;
+  sums[kDissipatedFriction][i] += row.friction;
+  sums[kWallWork][i] += row.wall_work;
+  if (free && alpha > 0)
+    sums[kDissipatedLocal][i] += physics::local_damping_dissipation(
+        before, after, Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)},
+        static_cast<double>(m), inv_mass, g, alpha, dt);
 }
 
 }  // namespace tridem

@@ -1,20 +1,15 @@
 #include "core/particle_model.hpp"
 
 #include "physics/geometry.hpp"
-#include "physics/restitution.hpp"
+#include "physics/contact_laws.hpp"
 #include "tridem/error.hpp"
 
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <fmt/format.h>
 
 namespace tridem {
 
 namespace {
-
-// Relative area below which a triangle is degenerate (also the scene reader's bound).
-constexpr double kDegenerateArea = 1e-12;
 
 void check_triangle(const Scene& scene, std::size_t id, const TriangleSpec& t) {
   auto fail = [&](const std::string& why) {
@@ -56,10 +51,10 @@ ParticleModel build_particle_model(const Scene& scene) {
       area = -area;
     }
     const double edge = physics::longest_edge(t);
-    if (!(area > kDegenerateArea * edge * edge))
+    if (physics::is_degenerate(area, edge * edge))
       throw SceneError(fmt::format(
           "{}: particle id {}: triangle is degenerate (area {:g} <= {:g}*L^2, L = {:g})",
-          scene.source, i, area, kDegenerateArea, edge));
+          scene.source, i, area, physics::kDegenerateAreaFactor, edge));
     const Vec2d c = physics::centroid(t);
     double sum_r2 = 0;
     for (int k = 0; k < 3; ++k) {
@@ -82,26 +77,6 @@ ParticleModel build_particle_model(const Scene& scene) {
   return m;
 }
 
-namespace {
-
-/// physics::contact_law, with the calibration of each restitution done once per process:
-/// solvers, the time-step estimate and scene descriptions all build the table, and the
-/// calibration integrates an ODE some thousand times.
-physics::ContactLaw<double> calibrated_law(double p, double pt, double mu, double e) {
-  static std::mutex mutex;
-  static std::map<double, physics::ContactLaw<double>> known;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = known.find(e);
-  if (it == known.end()) it = known.emplace(e, physics::contact_law(1, 1, 0, e)).first;
-  physics::ContactLaw<double> law = it->second;
-  law.penalty = p;
-  law.tangential_penalty = pt;
-  law.friction = mu;
-  return law;
-}
-
-}  // namespace
-
 bool walls_move(const ParticleModel& model) {
   for (std::size_t i = 0; i < model.size(); ++i)
     if (model.motion[i] != Motion::Free &&
@@ -111,28 +86,16 @@ bool walls_move(const ParticleModel& model) {
 }
 
 double material_restitution(const Material& m) {
-  return m.restitution ? *m.restitution : physics::restitution_of_damping_ratio(m.damping);
+  return physics::material_restitution(m.restitution, m.damping);
 }
 
-std::vector<physics::ContactLaw<double>> contact_law_table(const std::vector<Material>& mats) {
+std::vector<physics::LawParameters<double>> contact_law_table(const std::vector<Material>& mats) {
   const std::size_t n = mats.size();
-  std::vector<physics::ContactLaw<double>> table(n * n);
-  // Penalties combine as springs in series (harmonic mean: p for equal materials); the
-  // smoother surface sets the friction; restitutions average, and the damping ratios are
-  // calibrated for the pair's restitution (docs/model.md, "Damping").
-  auto harmonic = [](double a, double b) { return 2.0 * a * b / (a + b); };
+  std::vector<physics::LawParameters<double>> table(n * n);
   for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b) {
-      if (b < a) {
-        table[a * n + b] = table[b * n + a];  // the law is symmetric; calibrate once
-        continue;
-      }
-      table[a * n + b] = calibrated_law(
-          harmonic(mats[a].penalty, mats[b].penalty),
-          harmonic(mats[a].tangential_penalty, mats[b].tangential_penalty),
-          std::min(mats[a].friction, mats[b].friction),
-          0.5 * (material_restitution(mats[a]) + material_restitution(mats[b])));
-    }
+    for (std::size_t b = 0; b < n; ++b)
+      table[a * n + b] = b < a ? table[b * n + a]  // the law is symmetric: mix once
+                               : physics::SceneContactLaw::parameters(mats[a], mats[b]);
   return table;
 }
 

@@ -2,7 +2,7 @@
 // The mechanical model of each triangle, built once from a scene in double precision:
 // body-frame vertex offsets, mass, inertia and sizes. Solvers copy it into their own real
 // type and layout.
-#include "physics/body.hpp"
+#include "physics/contact_laws.hpp"
 #include "tridem/scene.hpp"
 
 #include <array>
@@ -42,6 +42,6 @@ ParticleModel build_particle_model(const Scene& scene);
 double material_restitution(const Material& m);
 
 /// Contact law for every ordered pair of materials, row-major (a·n + b).
-std::vector<physics::ContactLaw<double>> contact_law_table(const std::vector<Material>& m);
+std::vector<physics::LawParameters<double>> contact_law_table(const std::vector<Material>& m);
 
 }  // namespace tridem

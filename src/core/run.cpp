@@ -2,6 +2,7 @@
 
 #include "core/initial_overlaps.hpp"
 #include "core/solver_factory.hpp"
+#include "core/stage_report.hpp"
 #include "core/time_loop.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
@@ -119,6 +120,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   summary.triangle_steps_per_second =
       summary.steps_per_second * static_cast<double>(summary.triangles);
   summary.solver = solver->description();
+  summary.stages = solver->stage_times();
   if (log) {
     fmt::print(log, "{}: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
                "outputs in {}\n",
@@ -126,6 +128,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
                summary.steps_per_second, summary.triangle_steps_per_second, scene.output.dir);
     if (const std::string stats = solver->statistics(); !stats.empty())
       fmt::print(log, "{}: {}\n", solver->description(), stats);
+    fmt::print(log, "{}", stage_table(summary.stages));
     std::fflush(log);
   }
   return summary;

@@ -1,5 +1,6 @@
 #include "core/time_step.hpp"
 
+#include "physics/contact_laws.hpp"
 #include "physics/stability.hpp"
 #include "tridem/error.hpp"
 
@@ -33,7 +34,7 @@ struct ParticleLimit {
 
 ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
                              const std::vector<Thinnest> (&thinnest)[2],
-                             const std::vector<physics::ContactLaw<double>>& laws,
+                             const std::vector<physics::LawParameters<double>>& laws,
                              double local) {
   const std::size_t n_mat = thinnest[0].size();
   const double m = model.mass[i], h_i = model.smallest_height[i];
@@ -53,11 +54,10 @@ ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
       // The free kind includes the particle itself: a particle alone is bounded as if it
       // met a copy of itself, which keeps the automatic step defined.
       if (t.count == 0) continue;
-      const auto in = physics::contact_stiffness_inputs(laws[model.material[i] * n_mat + b]);
-      // One pair pressed along a length ℓ of this edge: ℓ of its edge in the partner's
-      // sub-triangle (height >= t.height) and about ℓ of the partner's boundary in its own
-      // (height >= h_i): k = 3p·ℓ·(1/h_partner + 1/h_i).
-      const double per_metre = 3.0 * in.normal * (1.0 / t.height + 1.0 / h_i);
+      // What the contact law puts on an edge pressed by this partner, per metre.
+      const physics::EdgeStiffness<double> in = physics::SceneContactLaw::edge_stiffness(
+          laws[model.material[i] * n_mat + b], t.height, h_i);
+      const double per_metre = in.normal;
       // Two free bodies: (u_a − u_b)² <= 2u_a² + 2u_b², so each takes twice the pair's
       // springs; a wall does not move.
       const double share = kind == 0 ? 2.0 : 1.0;

@@ -8,6 +8,7 @@
 // along y (one row in 1D); each row is split along x into sub-domains owning runs of cell
 // columns. The first row and the first sub-domain of each row start at -infinity, the
 // last end at +infinity, so every centroid has an owner wherever it goes.
+#include "physics/geometry.hpp"
 #include "tridem/hd.hpp"
 
 #include <cstdint>
@@ -54,7 +55,8 @@ struct Hull {
 template <class Real>
 TRIDEM_HD inline bool box_reaches(Real lo_x, Real lo_y, Real hi_x, Real hi_y,
                                   const Hull<Real>& h) {
-  return lo_x <= h.hi_x && h.lo_x <= hi_x && lo_y <= h.hi_y && h.lo_y <= hi_y;
+  return physics::boxes_overlap(physics::box_of(lo_x, lo_y, hi_x, hi_y),
+                                physics::box_of(h.lo_x, h.lo_y, h.hi_x, h.hi_y));
 }
 
 /// How far (in cells) a partner's centroid can be from an owned emitter's. A box is at

@@ -55,10 +55,17 @@ TRIDEM_HD inline Aabb<Real> bounding_box(const Triangle<Real>& t) {
   return b;
 }
 
-/// The paper's pre-filter. Touching boxes count as overlapping: the exact test decides.
+/// The box test of every broad phase, the paper's pre-filter and the sub-domains' bands
+/// (the one spelling of it). Touching boxes count as overlapping: the exact test decides.
 template <class Real>
 TRIDEM_HD inline bool boxes_overlap(const Aabb<Real>& a, const Aabb<Real>& b) {
   return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
+/// A box from the four columns a structure of arrays keeps it in.
+template <class Real>
+TRIDEM_HD inline Aabb<Real> box_of(Real lo_x, Real lo_y, Real hi_x, Real hi_y) {
+  return {{lo_x, lo_y}, {hi_x, hi_y}};
 }
 
 /// True when an edge normal of `a` separates the two (touching counts as separated:
@@ -170,6 +177,18 @@ TRIDEM_HD inline Real longest_edge(const Triangle<Real>& t) {
     l = le > l ? le : l;
   }
   return l;
+}
+
+/// A triangle is degenerate when its area <= kDegenerateAreaFactor · L², L its longest
+/// edge: scale-free, so it holds for grains of any size, and far above rounding noise of a
+/// true sliver while far below any triangle a user would mean to draw.
+inline constexpr double kDegenerateAreaFactor = 1e-12;
+
+/// The one degeneracy rule (the scene reader and the particle model both ask it), for
+/// either orientation. Written as a negated ">" so that a NaN from overflowing
+/// coordinates counts as degenerate too.
+TRIDEM_HD inline bool is_degenerate(double area, double longest_edge_squared) {
+  return !(area > kDegenerateAreaFactor * longest_edge_squared);
 }
 
 /// Smallest height: twice the area over the longest edge.

@@ -72,6 +72,17 @@ TRIDEM_HD inline void advance_body(Pose<Real>& p, bool free, Vec2<Real> f, Real 
   else integrate_prescribed(p, dt);
 }
 
+/// A body's pose after one step, as every backend advances it: the contact force and
+/// torque come in the pair precision Real; the integration is double in every precision.
+template <class Real>
+TRIDEM_HD inline Pose<double> stepped_pose(Pose<double> p, bool free, Vec2<Real> f, Real torque,
+                                           double inv_mass, double inv_inertia, Vec2d g,
+                                           double alpha, double dt) {
+  advance_body(p, free, Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)},
+               static_cast<double>(torque), inv_mass, inv_inertia, g, alpha, dt);
+  return p;
+}
+
 /// True when the advanced pose of a free body is non-finite or has moved more than half
 /// the body's size in one step: the contact forces are then no longer resolved in time.
 template <class Real>

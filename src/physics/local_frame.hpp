@@ -10,6 +10,7 @@
 #include "physics/geometry.hpp"
 
 #include <float.h>
+#include <cstdint>
 
 namespace tridem::physics {
 
@@ -83,6 +84,43 @@ TRIDEM_HD inline Aabb<Real> outward_box(Vec2d c, const Vec2<Real> rel[3], Real h
            round_down(c.y + static_cast<double>(ly) - pad, tag)},
           {round_up(c.x + static_cast<double>(hx) + pad, tag),
            round_up(c.y + static_cast<double>(hy) + pad, tag)}};
+}
+
+/// The geometry stage of one body, on every backend: its vertices about its centroid at
+/// angle θ (rotated_offsets) and its outward box.
+template <class Real>
+struct PlacedBody {
+  Vec2<Real> rel[3];
+  Aabb<Real> box;
+};
+
+template <class Real>
+TRIDEM_HD inline PlacedBody<Real> place_body(Vec2d c, double theta, const Vec2<Real> body_frame[3],
+                                             Real half_size) {
+  PlacedBody<Real> b;
+  rotated_offsets(theta, body_frame, b.rel);
+  b.box = outward_box(c, b.rel, half_size);
+  return b;
+}
+
+/// The three vertices (offsets or rotated offsets) of particle i from the three x and
+/// three y columns a structure of arrays keeps them in: three host vectors or device
+/// pointers (a std::array or a C array of them; tridem/particle_fields.hpp).
+template <class Real, class Columns>
+TRIDEM_HD inline void load_vertices(const Columns& x, const Columns& y, std::int64_t i,
+                                    Vec2<Real> out[3]) {
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) out[k] = {x[k][i], y[k][i]};
+}
+
+template <class Real, class Columns>
+TRIDEM_HD inline void store_vertices(Columns& x, Columns& y, std::int64_t i,
+                                     const Vec2<Real> v[3]) {
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    x[k][i] = v[k].x;
+    y[k][i] = v[k].y;
+  }
 }
 
 /// What pair_force needs of one body, in the pair's frame: its triangle and centroid at

@@ -11,6 +11,7 @@
 #include "physics/body.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace tridem::physics {
 
@@ -60,6 +61,12 @@ inline double damping_for_restitution(double e, double n) {
 /// under the former constant-stiffness dashpot, exp(−πζ/√(1−ζ²)).
 inline double restitution_of_damping_ratio(double zeta) {
   return std::exp(-M_PI * zeta / std::sqrt(1 - zeta * zeta));
+}
+
+/// A material's coefficient of restitution: `restitution`, or the one its legacy damping
+/// ratio stands for.
+inline double material_restitution(const std::optional<double>& restitution, double damping) {
+  return restitution ? *restitution : restitution_of_damping_ratio(damping);
 }
 
 /// A contact law with damping calibrated for restitution e at every contact shape.

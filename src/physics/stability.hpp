@@ -1,31 +1,12 @@
 #pragma once
 // The stability limit of symplectic Euler for the contact springs and dashpots of a
 // particle (docs/model.md, "The time step"). core/time_step builds the worst case a scene
-// allows from these pieces; they are TRIDEM_HD so that a run-time check can reuse them.
+// allows from these pieces and the contact law's EdgeStiffness (physics/potential_law.hpp);
+// they are TRIDEM_HD so that a run-time check can reuse them.
 #include "physics/body.hpp"
 #include "physics/damping.hpp"
 
 namespace tridem::physics {
-
-/// What the step bound takes from the contact law of a pair of materials. The one place
-/// that ties the bound to the law: point it at a new law here.
-template <class Real>
-struct ContactStiffnessInputs {
-  Real normal;            ///< k_n per unit of Σ 3ℓ/h over the clipped pieces of both roles
-  Real tangential_ratio;  ///< k_t / k_n
-  Real damping_ratio;     ///< largest ζ of the normal and tangential dashpots, c = 2ζ√(m_eff·k)
-};
-
-/// Normal: k_n = p·Σ 3ℓ/h (pair_force's stiffness bound; its normal dashpot uses
-/// k_N = N·K·N <= k_n). Tangential: the spring on the contact's tangent, k_t = (p_t/p)·k_n
-/// (pair_force since issue 10), inert without friction (capped at μ·f_n = 0). Damping:
-/// c = 2ζ(n_eff)·√(m_eff·k) on both springs, ζ(n_eff) <= max_damping_ratio(law).
-template <class Real>
-TRIDEM_HD inline ContactStiffnessInputs<Real> contact_stiffness_inputs(
-    const ContactLaw<Real>& law) {
-  const Real ratio = law.friction > Real(0) ? law.tangential_penalty / law.penalty : Real(0);
-  return {law.penalty, ratio, max_damping_ratio(law)};
-}
 
 /// A symmetric 3×3 matrix over a body's (x, y, θ).
 template <class Real>

@@ -1,5 +1,6 @@
 #include "backends/cpu/cpu_solver.hpp"
 
+#include "broadphase/history_carry.hpp"
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
 #include "core/memory_estimate.hpp"
@@ -44,7 +45,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   });
   walls_move_ = walls_move(model);
   for (const auto& law : contact_law_table(scene.materials))
-    laws_.push_back(physics::law_cast<Real>(law));
+    laws_.push_back(physics::SceneContactLaw::cast<Real>(law));
   // Room for a dense packing's pairs up front; the lists only grow past it.
   const auto initial_pairs = static_cast<std::int64_t>(reserved_pairs(n_));
   for (PairList* p : {&pairs_, &old_pairs_}) {
@@ -74,11 +75,7 @@ std::string CpuSolver<Real>::statistics() const {
 template <class Real>
 void CpuSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
-    update_geometry();
-    find_pairs();
-    compute_pair_forces();
-    accumulate();
-    integrate();
+    run_step(*this, kPipeline, stopwatch_);
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
     ++step_;
@@ -87,24 +84,36 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
 }
 
 template <class Real>
+void CpuSolver<Real>::run_stage(Stage stage) {
+  switch (stage) {
+    case Stage::Geometry: return update_geometry();
+    case Stage::PairList: return find_pairs();
+    case Stage::PairForces: return compute_pair_forces();
+    case Stage::Gather: return accumulate();
+    case Stage::Check: return check_runaway();
+    case Stage::Integrate: return integrate();
+  }
+}
+
+template <class Real>
+StageTimes CpuSolver<Real>::stage_times() const {
+  return stopwatch_.times();
+}
+
+template <class Real>
 void CpuSolver<Real>::update_geometry() {
   const auto n = static_cast<std::int64_t>(n_);
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
-    const Vec2<Real> body_frame[3] = {{offset_x_[0][i], offset_y_[0][i]},
-                                      {offset_x_[1][i], offset_y_[1][i]},
-                                      {offset_x_[2][i], offset_y_[2][i]}};
-    Vec2<Real> rel[3];
-    physics::rotated_offsets(theta_[i], body_frame, rel);
-    for (int k = 0; k < 3; ++k) {
-      rel_x_[k][i] = rel[k].x;
-      rel_y_[k][i] = rel[k].y;
-    }
-    const physics::Aabb<Real> box = physics::outward_box(Vec2d{x_[i], y_[i]}, rel, half_size_[i]);
-    lo_x_[i] = box.lo.x;
-    lo_y_[i] = box.lo.y;
-    hi_x_[i] = box.hi.x;
-    hi_y_[i] = box.hi.y;
+    Vec2<Real> body_frame[3];
+    physics::load_vertices(offset_x_, offset_y_, i, body_frame);
+    const physics::PlacedBody<Real> placed =
+        physics::place_body(Vec2d{x_[i], y_[i]}, theta_[i], body_frame, half_size_[i]);
+    physics::store_vertices(rel_x_, rel_y_, i, placed.rel);
+    lo_x_[i] = placed.box.lo.x;
+    lo_y_[i] = placed.box.lo.y;
+    hi_x_[i] = placed.box.hi.x;
+    hi_y_[i] = placed.box.hi.y;
   }
 }
 
@@ -128,9 +137,8 @@ void CpuSolver<Real>::find_pairs() {
 
 template <class Real>
 physics::Body<Real> CpuSolver<Real>::body(std::int32_t i, Vec2d origin) const {
-  const Vec2<Real> rel[3] = {{rel_x_[0][i], rel_y_[0][i]},
-                             {rel_x_[1][i], rel_y_[1][i]},
-                             {rel_x_[2][i], rel_y_[2][i]}};
+  Vec2<Real> rel[3];
+  physics::load_vertices(rel_x_, rel_y_, i, rel);
   return physics::body_at(physics::offset_from<Real>(origin, Vec2d{x_[i], y_[i]}), rel,
                           Vec2d{vx_[i], vy_[i]}, w_[i], area_[i], mass_[i]);
 }
@@ -144,20 +152,18 @@ void CpuSolver<Real>::compute_pair_forces() {
 #pragma omp parallel for schedule(dynamic, 256) if (parallel_) reduction(min : too_deep)
   for (std::int64_t e = 0; e < n; ++e) {
     const auto emitter = static_cast<std::int32_t>(e);
-    std::int64_t old = old_pairs_.offset[e];
-    const std::int64_t old_end = old_pairs_.offset[e + 1];
+    OldRow<std::int64_t, physics::PairSlip<Real>> old{old_pairs_.partner.data(), old_slip_.data(),
+                                                      old_pairs_.offset[e],
+                                                      old_pairs_.offset[e + 1]};
     // The pair's frame: origin at the emitter's centroid (physics/local_frame.hpp).
     const Vec2d origin{x_[e], y_[e]};
     const physics::Body<Real> a = body(emitter, origin);
     const auto dt = static_cast<Real>(dt_);
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
-      // Both rows are sorted by partner: walk the old one to find this pair's history.
-      while (old < old_end && old_pairs_.partner[old] < j) ++old;
-      physics::PairSlip<Real> slip{};
-      if (old < old_end && old_pairs_.partner[old] == j) slip = old_slip_[old];
+      physics::PairSlip<Real> slip = old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
-      result_[s] = physics::pair_force(a, body(j, origin), law, dt, slip);
+      result_[s] = physics::SceneContactLaw::force(a, body(j, origin), law, dt, slip);
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
     }
@@ -198,18 +204,15 @@ void CpuSolver<Real>::accumulate() {
 
 template <class Real>
 physics::Pose<double> CpuSolver<Real>::advanced_pose(std::size_t i) const {
-  physics::Pose<double> p{{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
-  physics::advance_body(p, motion_[i] == Motion::Free,
-                        Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])},
-                        static_cast<double>(torque_[i]), inv_mass_[i], inv_inertia_[i],
-                        gravity_, local_damping_, dt_);
-  return p;
+  return physics::stepped_pose(pose(i), motion_[i] == Motion::Free, Vec2<Real>{fx_[i], fy_[i]},
+                               torque_[i], inv_mass_[i], inv_inertia_[i], gravity_,
+                               local_damping_, dt_);
 }
 
+// Check first, write second (integrate): a blow-up leaves the last good state in place.
 template <class Real>
-void CpuSolver<Real>::integrate() {
+void CpuSolver<Real>::check_runaway() const {
   const auto n = static_cast<std::int64_t>(n_);
-  // Check first, write second: a blow-up leaves the last good state in place.
   std::int64_t bad = n;
 #pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -222,11 +225,15 @@ void CpuSolver<Real>::integrate() {
     const physics::Pose<double> p = advanced_pose(i);
     throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
   }
+}
+
+template <class Real>
+void CpuSolver<Real>::integrate() {
+  const auto n = static_cast<std::int64_t>(n_);
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
     const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
-    add_step_energy(static_cast<std::size_t>(i),
-                    {{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]}, p);
+    add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p);
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
@@ -249,15 +256,10 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
     w = w_[j];
     return true;
   };
-  const RowEnergy row = row_energy(static_cast<std::int64_t>(i), pairs_.offset.data(),
-                                   pairs_.partner.data(), result_.data(), wall_velocity, dt_);
-  energy_[kDissipatedDamping][i] += row.damping;
-  energy_[kDissipatedFriction][i] += row.friction;
-  energy_[kWallWork][i] += row.wall_work;
-  if (motion_[i] == Motion::Free && local_damping_ > 0)
-    energy_[kDissipatedLocal][i] += physics::local_damping_dissipation(
-        before, after, Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])},
-        static_cast<double>(torque_[i]), inv_mass_[i], gravity_, local_damping_, dt_);
+  tridem::add_step_energy(energy_, static_cast<std::int64_t>(i), pairs_.offset.data(),
+                          pairs_.partner.data(), result_.data(), wall_velocity,
+                          motion_[i] == Motion::Free, before, after, Vec2<Real>{fx_[i], fy_[i]},
+                          torque_[i], inv_mass_[i], gravity_, local_damping_, dt_);
 }
 
 template <class Real>

@@ -6,6 +6,7 @@
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/single_domain.hpp"
 #include "core/particle_model.hpp"
+#include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
 #include "decomposition/decomposed_pairs.hpp"
 #include "physics/contact_force.hpp"
@@ -36,6 +37,15 @@ class CpuSolver final : public Solver {
   std::size_t size() const override { return n_; }
   std::string description() const override;
   std::string statistics() const override;
+  StageTimes stage_times() const override;
+  void set_stage_timing(bool on) override { stopwatch_.on = on; }
+
+  /// The stages in the order advance() runs them (core/stage_pipeline.hpp): each its own
+  /// loop over particles or pairs, none fused.
+  static constexpr std::array<Stage, kStageCount> kPipeline = {
+      Stage::Geometry, Stage::PairList, Stage::PairForces,
+      Stage::Gather,   Stage::Check,    Stage::Integrate};
+  void run_stage(Stage stage);
 
   /// The columns of a per-particle field, by its tag (generic code: snapshots, states).
   TRIDEM_PARTICLE_FIELDS(TRIDEM_MEMBER_COLUMN_ACCESSOR)
@@ -46,12 +56,16 @@ class CpuSolver final : public Solver {
   void compute_pair_forces();
   [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
+  void check_runaway() const;
   void integrate();
   void add_step_energy(std::size_t i, const physics::Pose<double>& before,
                        const physics::Pose<double>& after);
 
   /// Body i as pair_force sees it, in the frame whose origin is at `origin`.
   physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
+  physics::Pose<double> pose(std::size_t i) const {
+    return {{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
+  }
   physics::Pose<double> advanced_pose(std::size_t i) const;
 
   std::size_t n_;
@@ -70,7 +84,7 @@ class CpuSolver final : public Solver {
   // The per-particle fields (tridem/particle_fields.hpp) as member_ vectors: offset_x_,
   // x_, fx_, energy_, rel_x_, lo_x_, ...
   TRIDEM_PARTICLE_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
-  std::vector<physics::ContactLaw<Real>> laws_;
+  std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
   // Pairs of this step and the last, with their contact history. The method picks the
@@ -84,6 +98,7 @@ class CpuSolver final : public Solver {
   std::vector<physics::PairSlip<Real>> slip_, old_slip_;
   std::vector<physics::PairForce<Real>> result_;
   ReverseIndex reverse_;
+  StageStopwatch stopwatch_;
 };
 
 }  // namespace tridem

@@ -9,6 +9,7 @@
 #include "backends/cuda/grid_types.cuh"
 #include "backends/cuda/row_history.cuh"
 #include "backends/cuda/sorted_ranges.cuh"
+#include "broadphase/emitter_rule.hpp"
 #include "broadphase/grid_rules.hpp"
 #include "broadphase/row_sort.hpp"
 
@@ -117,35 +118,32 @@ __global__ void cell_range_kernel(const unsigned int* sorted_key, int n, unsigne
   if (k == n - 1 || sorted_key[k + 1] != key) cell_end[key] = k + 1;
 }
 
-/// Calls visit(j) for every pair (i, j) that i emits: build boxes overlapping, at least one
-/// particle free; i emits to higher-index small particles and to every large one (in
-/// all-pairs mode, to every higher index). The same rule as CandidatePairs on the CPU.
+/// Calls visit(j) for every pair (i, j) that i emits (broadphase/emitter_rule.hpp; all-pairs
+/// has no size classes) with overlapping build boxes: the same visits as CandidatePairs on
+/// the CPU.
 template <class Real, class Visit>
 __device__ inline void visit_candidates(const CandidateSearch<Real>& c, int i, Visit&& visit) {
   const bool free_i = c.free[i] != 0;
-  const Real lx = c.lo_x[i], ly = c.lo_y[i], hx = c.hi_x[i], hy = c.hi_y[i];
-  auto consider = [&](int j) {
-    if ((free_i || c.free[j]) && lx <= c.hi_x[j] && c.lo_x[j] <= hx && ly <= c.hi_y[j] &&
-        c.lo_y[j] <= hy)
+  const physics::Aabb<Real> box_i = c.box(i);
+  auto consider = [&](int j, bool small_j) {
+    if (emits_pair(i, j, true, small_j, free_i, c.free[j] != 0) &&
+        physics::boxes_overlap(box_i, c.box(j)))
       visit(j);
   };
   if (c.all_pairs) {
-    for (int j = i + 1; j < c.n; ++j) consider(j);
+    for (int j = i + 1; j < c.n; ++j) consider(j, true);
     return;
   }
-  if (!c.small[i]) return;
+  if (!c.small[i]) return;  // a large particle emits nothing: the small ones reach it
   const int nx = c.grid->nx, ny = c.grid->ny;
   const int cx = static_cast<int>(c.cell_of[i] % static_cast<unsigned int>(nx));
   const int cy = static_cast<int>(c.cell_of[i] / static_cast<unsigned int>(nx));
   for (int y = cy > 0 ? cy - 1 : 0; y <= (cy + 1 < ny ? cy + 1 : ny - 1); ++y)
     for (int x = cx > 0 ? cx - 1 : 0; x <= (cx + 1 < nx ? cx + 1 : nx - 1); ++x) {
       const int cell = x + y * nx;
-      for (int k = c.cell_start[cell]; k < c.cell_end[cell]; ++k) {
-        const int j = c.sorted[k];
-        if (j > i) consider(j);
-      }
+      for (int k = c.cell_start[cell]; k < c.cell_end[cell]; ++k) consider(c.sorted[k], true);
     }
-  for (int k = 0; k < c.n_large; ++k) consider(c.large[k]);
+  for (int k = 0; k < c.n_large; ++k) consider(c.large[k], false);
 }
 
 template <class Real>

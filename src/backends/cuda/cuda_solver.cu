@@ -73,6 +73,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
                    mib(free_bytes) + " free of " + mib(total_bytes) +
                    ": use precision = \"float\", fewer particles, or backend = \"openmp\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
+  events_ = std::make_unique<StageEvents>(stream_);
 
   params_.dt = ts.chosen;
   limit_ = ts;
@@ -81,9 +82,9 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   params_.n_materials = static_cast<int>(scene.materials.size());
   params_.max_depth = static_cast<Real>(scene.simulation.max_penetration);
   params_.walls_move = walls_move(model);
-  std::vector<physics::ContactLaw<Real>> laws;
+  std::vector<physics::LawParameters<Real>> laws;
   for (const auto& law : contact_law_table(scene.materials))
-    laws.push_back(physics::law_cast<Real>(law));
+    laws.push_back(physics::SceneContactLaw::cast<Real>(law));
   laws_.upload(laws);
   params_.laws = laws_.data();
   d_.upload_initial(model);
@@ -104,6 +105,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
 
 template <class Real>
 CudaSolver<Real>::~CudaSolver() {
+  events_.reset();
   if (stream_) cudaStreamDestroy(stream_);
 }
 
@@ -121,41 +123,72 @@ void CudaSolver<Real>::update_geometry() {
 
 template <class Real>
 void CudaSolver<Real>::advance(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) {
+    run_step(*this, kPipeline, *events_);
+    ++step_;
+    time_ += params_.dt;
+  }
+}
+
+template <class Real>
+void CudaSolver<Real>::run_stage(Stage stage) {
   const ParticleArrays<Real> p = arrays();
   StepStatus* status = status_.data();
   StepStatus* host = host_status_.data();
-  for (std::int64_t s = 0; s < steps; ++s) {
-    if (decomposed_) {
-      decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
-    } else if (rebuild_ || pairs_->single_step()) {
-      // A single-domain list holds the pairs that pass the contact test at this step's
-      // positions only: no skin can keep it valid, so it is rebuilt every step.
-      pairs_->rebuild(p, margin_);
-      rebuild_ = false;
-    }
-    const PairArrays<Real> q = pairs_->arrays();
-    *host = {0, INT_MAX, INT_MAX};
-    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
-    if (q.count > 0) {
+  switch (stage) {
+    case Stage::PairList:
+      if (decomposed_) {
+        decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
+      } else if (rebuild_ || pairs_->single_step()) {
+        // A single-domain list holds the pairs that pass the contact test at this step's
+        // positions only: no skin can keep it valid, so it is rebuilt every step.
+        pairs_->rebuild(p, margin_);
+        rebuild_ = false;
+      }
+      step_pairs_ = pairs_->arrays();
+      return;
+    case Stage::PairForces: {
+      *host = {0, INT_MAX, INT_MAX};
+      TRIDEM_CUDA_CHECK(
+          cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
+      const PairArrays<Real>& q = step_pairs_;
+      if (q.count == 0) return;
       constexpr int threads = PairKernelShape<Real>::threads;
       pair_forces_kernel<Real><<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(
           p, q, params_, status);
       TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+      return;
     }
-    gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, false);
-    TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
-    integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, q, params_, status, true);
-    TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
-    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host, status, sizeof *host, cudaMemcpyDeviceToHost, stream_));
-    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    // The CPU's order: its pair stage stops on a deep pair before the integrator looks.
-    if (host->deep != INT_MAX) report_penetration(host->deep);
-    if (host->bad != INT_MAX) report_runaway(host->bad);
-    rebuild_ = host->rebuild != 0;
-    results_ = true;
-    ++step_;
-    time_ += params_.dt;
+    case Stage::Gather:  // with the Check stage's runaway test of every particle
+      gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
+                                                              false);
+      TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+      return;
+    case Stage::Integrate:  // with the Geometry stage of the next step
+      integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
+                                                                 true);
+      TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+      return;
+    case Stage::Check:
+      TRIDEM_CUDA_CHECK(
+          cudaMemcpyAsync(host, status, sizeof *host, cudaMemcpyDeviceToHost, stream_));
+      TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+      // The CPU's order: its pair stage stops on a deep pair before the integrator looks.
+      if (host->deep != INT_MAX) report_penetration(host->deep);
+      if (host->bad != INT_MAX) report_runaway(host->bad);
+      rebuild_ = host->rebuild != 0;
+      results_ = true;
+      return;
+    case Stage::Geometry:  // fused into Integrate (and run by update_geometry at the start)
+      return;
   }
+}
+
+template <class Real>
+StageTimes CudaSolver<Real>::stage_times() const {
+  StageTimes t = events_->times();
+  t.fused_into[static_cast<int>(Stage::Geometry)] = static_cast<int>(Stage::Integrate);
+  return t;
 }
 
 template <class Real>
@@ -168,11 +201,10 @@ void CudaSolver<Real>::report_runaway(int i) const {
     return v;
   };
   const double x = at(d_.x), y = at(d_.y);
-  physics::Pose<double> pose{{x, y}, at(d_.theta), {at(d_.vx), at(d_.vy)}, at(d_.w)};
-  physics::advance_body(pose, true,
-                        Vec2d{static_cast<double>(at(d_.fx)), static_cast<double>(at(d_.fy))},
-                        static_cast<double>(at(d_.torque)), at(d_.inv_mass), at(d_.inv_inertia),
-                        params_.gravity, params_.local_damping, params_.dt);
+  const physics::Pose<double> pose = physics::stepped_pose(
+      physics::Pose<double>{{x, y}, at(d_.theta), {at(d_.vx), at(d_.vy)}, at(d_.w)}, true,
+      Vec2<Real>{at(d_.fx), at(d_.fy)}, at(d_.torque), at(d_.inv_mass), at(d_.inv_inertia),
+      params_.gravity, params_.local_damping, params_.dt);
   throw RunError(runaway_message(step_ + 1, i, x, y, norm(pose.v), params_.dt, limit_));
 }
 

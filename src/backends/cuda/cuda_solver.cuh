@@ -1,16 +1,14 @@
 #pragma once
 // The CUDA solver: the whole time loop on one GPU with the single-source physics. The
-// state stays on the GPU; only snapshots (output steps) copy it back. One step is
-//   [pair-list build, when some particle has left its build box; every step for the
-//    single-domain method]
-//   pair forces (thread per pair) → gather + runaway check (thread per particle)
-//   → integrate + geometry of the new state (thread per particle) → status to the host,
-// the CPU solver's stages with the same sums in the same order, so that both agree to
-// rounding and two runs of one scene agree bit for bit.
+// state stays on the GPU; only snapshots (output steps) copy it back. One step is the
+// CPU solver's stages (kPipeline) with the same sums in the same order, so that both
+// agree to rounding and two runs of one scene agree bit for bit.
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/decomposed_rows.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
 #include "backends/cuda/particle_buffers.cuh"
+#include "backends/cuda/stage_events.cuh"
+#include "core/stage_pipeline.hpp"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
 #include "tridem/solver.hpp"
@@ -40,6 +38,23 @@ class CudaSolver final : public Solver {
   void save_state(SolverState& out) const override;  // cuda_solver_state.cu
   void load_state(const SolverState& in) override;
   EnergyBudget energy() const override;
+  StageTimes stage_times() const override;
+  void set_stage_timing(bool on) override { events_->on = on; }
+
+  /// The stages in the order advance() runs them (core/stage_pipeline.hpp), with the
+  /// fusions of its kernels:
+  ///   PairList    [pair-list build, only when some box has left its build box; every
+  ///               step for single-domain and decomposition], carrying contact history
+  ///   PairForces  thread per pair; flags the lowest emitter of a too-deep pair
+  ///   Gather      thread per particle, fused with Check's runaway test of each particle
+  ///   Integrate   thread per particle, fused with the Geometry stage of the next step
+  ///               (vertices, boxes, the rebuild flag), and with the step's energy
+  ///   Check       the 12-byte status read back, the one synchronisation of a step, and
+  ///               the blow-up reports
+  static constexpr std::array<Stage, 5> kPipeline = {Stage::PairList, Stage::PairForces,
+                                                     Stage::Gather, Stage::Integrate,
+                                                     Stage::Check};
+  void run_stage(Stage stage);
 
  private:
   ParticleArrays<Real> arrays() const { return d_.view(static_cast<int>(n_)); }
@@ -60,7 +75,7 @@ class CudaSolver final : public Solver {
   std::string device_name_;
   cudaStream_t stream_ = nullptr;
 
-  DeviceBuffer<physics::ContactLaw<Real>> laws_;
+  DeviceBuffer<physics::LawParameters<Real>> laws_;
   /// The per-particle fields (tridem/particle_fields.hpp), and the Model ones on the host
   /// for snapshots.
   ParticleBuffers<Real> d_;
@@ -68,6 +83,8 @@ class CudaSolver final : public Solver {
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   /// method = decomposition: the pair list is built by sub-domain, every step.
   std::unique_ptr<DecomposedRows<Real>> decomposed_;
+  PairArrays<Real> step_pairs_{};  ///< the list of the step in progress
+  std::unique_ptr<StageEvents> events_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies

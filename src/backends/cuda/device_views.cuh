@@ -2,7 +2,7 @@
 // What kernels receive: plain structs of device pointers, passed by value. The particle
 // data is a structure of arrays, so that the threads of a warp, handling consecutive
 // particles, read consecutive addresses.
-#include "physics/contact_force.hpp"
+#include "physics/contact_laws.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/particle_fields.hpp"
 
@@ -41,7 +41,7 @@ struct StepParams {
   double dt;              ///< the integration's; pairs take it rounded to Real
   Vec2d gravity;
   double local_damping;
-  const physics::ContactLaw<Real>* laws;  ///< row-major by material pair
+  const physics::LawParameters<Real>* laws;  ///< row-major by material pair
   int n_materials;
   Real max_depth;  ///< deepest PairForce::depth accepted ([simulation] max_penetration)
   bool walls_move;  ///< some fixed or prescribed particle has a velocity (does work)

@@ -64,6 +64,10 @@ struct CandidateSearch {
   const int* cell_end;
   const int* large;              ///< particles too large for the grid (walls)
   int n_large;
+
+  __device__ physics::Aabb<Real> box(int i) const {
+    return physics::box_of(lo_x[i], lo_y[i], hi_x[i], hi_y[i]);
+  }
 };
 
 }  // namespace tridem::cuda

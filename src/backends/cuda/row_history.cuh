@@ -3,6 +3,7 @@
 // (partners ascending) gets its slots' emitter and id, and the contact history of the
 // same pairs from the emitter's old row.
 #include "backends/cuda/device_views.cuh"
+#include "broadphase/history_carry.hpp"
 
 namespace tridem::cuda {
 
@@ -20,17 +21,13 @@ struct RowHistory {
 };
 
 /// Emitter i's row, already filled and sorted: each pair takes the slip stored for it in
-/// i's old row (both sorted by partner, so one walk finds them all), or zero if it is new.
+/// i's old row (broadphase/history_carry.hpp), or zero if it is new.
 template <class Real>
 __device__ inline void carry_history(int i, const RowHistory<Real>& h) {
-  int old = h.old_offset[i];
-  const int old_end = h.old_offset[i + 1];
+  OldRow<int, physics::PairSlip<Real>> old{h.old_partner, h.old_slip, h.old_offset[i],
+                                           h.old_offset[i + 1]};
   for (int s = h.offset[i]; s < h.offset[i + 1]; ++s) {
-    const int j = h.partner[s];
-    while (old < old_end && h.old_partner[old] < j) ++old;
-    physics::PairSlip<Real> slip{};
-    if (old < old_end && h.old_partner[old] == j) slip = h.old_slip[old];
-    h.slip[s] = slip;
+    h.slip[s] = old.history_of(h.partner[s]);
     h.emitter[s] = i;
     h.slot_id[s] = s;
   }

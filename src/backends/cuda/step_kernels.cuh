@@ -19,9 +19,8 @@ namespace tridem::cuda {
 template <class Real>
 __device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, int i,
                                                 Vec2d origin) {
-  const Vec2<Real> rel[3] = {{p.rel_x[0][i], p.rel_y[0][i]},
-                             {p.rel_x[1][i], p.rel_y[1][i]},
-                             {p.rel_x[2][i], p.rel_y[2][i]}};
+  Vec2<Real> rel[3];
+  physics::load_vertices(p.rel_x, p.rel_y, i, rel);
   return physics::body_at(physics::offset_from<Real>(origin, Vec2d{p.x[i], p.y[i]}), rel,
                           Vec2d{p.vx[i], p.vy[i]}, p.w[i], p.area[i], p.mass[i]);
 }
@@ -49,9 +48,9 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
   physics::PairSlip<Real> slip = q.slip[s];
-  const physics::ContactLaw<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
+  const physics::LawParameters<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
   const Vec2d origin{p.x[e], p.y[e]};
-  const physics::PairForce<Real> result = physics::pair_force(
+  const physics::PairForce<Real> result = physics::SceneContactLaw::force(
       load_body(p, e, origin), load_body(p, j, origin), law, static_cast<Real>(sp.dt), slip);
   q.result[s] = result;
   q.slip[s] = slip;
@@ -60,14 +59,16 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
 }
 
 template <class Real>
+__device__ inline physics::Pose<double> pose(const ParticleArrays<Real>& p, int i) {
+  return {{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
+}
+
+template <class Real>
 __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>& p,
                                                       const StepParams<Real>& sp, int i) {
-  physics::Pose<double> pose{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
-  physics::advance_body(pose, p.free[i] != 0,
-                        Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])},
-                        static_cast<double>(p.torque[i]), p.inv_mass[i], p.inv_inertia[i],
-                        sp.gravity, sp.local_damping, sp.dt);
-  return pose;
+  return physics::stepped_pose(pose(p, i), p.free[i] != 0, Vec2<Real>{p.fx[i], p.fy[i]},
+                               p.torque[i], p.inv_mass[i], p.inv_inertia[i], sp.gravity,
+                               sp.local_damping, sp.dt);
 }
 
 /// Sums the forces of free particles and flags the lowest one whose step would run away
@@ -95,16 +96,12 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
 template <class Real>
 __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
                                        StepStatus* status) {
-  const Vec2<Real> offsets[3] = {{p.offset_x[0][i], p.offset_y[0][i]},
-                                 {p.offset_x[1][i], p.offset_y[1][i]},
-                                 {p.offset_x[2][i], p.offset_y[2][i]}};
-  Vec2<Real> rel[3];
-  physics::rotated_offsets(p.theta[i], offsets, rel);
-  const physics::Aabb<Real> box = physics::outward_box(Vec2d{p.x[i], p.y[i]}, rel, p.half_size[i]);
-  for (int k = 0; k < 3; ++k) {
-    p.rel_x[k][i] = rel[k].x;
-    p.rel_y[k][i] = rel[k].y;
-  }
+  Vec2<Real> body_frame[3];
+  physics::load_vertices(p.offset_x, p.offset_y, i, body_frame);
+  const physics::PlacedBody<Real> placed =
+      physics::place_body(Vec2d{p.x[i], p.y[i]}, p.theta[i], body_frame, p.half_size[i]);
+  const physics::Aabb<Real>& box = placed.box;
+  physics::store_vertices(p.rel_x, p.rel_y, i, placed.rel);
   p.lo_x[i] = box.lo.x;
   p.lo_y[i] = box.lo.y;
   p.hi_x[i] = box.hi.x;
@@ -127,14 +124,10 @@ __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const Pair
     w = p.w[j];
     return true;
   };
-  const RowEnergy row = row_energy(i, q.offset, q.partner, q.result, wall_velocity, sp.dt);
-  p.energy[kDissipatedDamping][i] += row.damping;
-  p.energy[kDissipatedFriction][i] += row.friction;
-  p.energy[kWallWork][i] += row.wall_work;
-  if (p.free[i] != 0 && sp.local_damping > 0)
-    p.energy[kDissipatedLocal][i] += physics::local_damping_dissipation(
-        before, after, Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])},
-        static_cast<double>(p.torque[i]), p.inv_mass[i], sp.gravity, sp.local_damping, sp.dt);
+  double* const* sums = p.energy;
+  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, p.free[i] != 0,
+                          before, after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i],
+                          p.inv_mass[i], sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Writes the advanced state (unless some particle ran away or some pair overlaps too
@@ -147,7 +140,7 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
   if (i >= p.n) return;
   if (advance) {
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
-    const physics::Pose<double> before{{p.x[i], p.y[i]}, p.theta[i], {p.vx[i], p.vy[i]}, p.w[i]};
+    const physics::Pose<double> before = pose(p, i);
     const physics::Pose<double> pose = advanced_pose(p, sp, i);
     add_step_energy(p, q, sp, i, before, pose);
     p.x[i] = pose.c.x;

@@ -1,5 +1,7 @@
 #include "io/scene/triangle_shape.hpp"
 
+#include "physics/geometry.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,10 +20,10 @@ std::optional<std::string> shape_problem(const std::array<Vec2d, 3>& v) {
     longest_sq = std::max(longest_sq, dot(e, e));
   }
   const double area = 0.5 * std::abs(twice_signed_area(v));
-  // Written as a negated ">" so that a NaN from overflowing coordinates is refused too.
-  if (!(area > kDegenerateAreaFactor * longest_sq))
-    return fmt::format("triangle is degenerate (area {:g} <= 1e-12*L^2 = {:g}, L = longest edge)",
-                       area, kDegenerateAreaFactor * longest_sq);
+  if (physics::is_degenerate(area, longest_sq))
+    return fmt::format("triangle is degenerate (area {:g} <= {:g}*L^2 = {:g}, L = longest edge)",
+                       area, physics::kDegenerateAreaFactor,
+                       physics::kDegenerateAreaFactor * longest_sq);
   return std::nullopt;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Shape rules for one triangle, shared by the file reader, validate_scene and the tests so
-// that "degenerate" means the same thing everywhere.
+// Shape rules for one triangle, shared by the file reader, validate_scene and the tests;
+// "degenerate" is physics::is_degenerate, the rule the particle model applies too.
 #include "tridem/vec2.hpp"
 
 #include <array>
@@ -9,11 +9,6 @@
 #include <utility>
 
 namespace tridem::scene_detail {
-
-/// A triangle is degenerate when its area <= kDegenerateAreaFactor · L², L its longest edge:
-/// scale-free, so it holds for grains of any size, and far above rounding noise of a true
-/// sliver while far below any triangle a user would mean to draw.
-inline constexpr double kDegenerateAreaFactor = 1e-12;
 
 /// Twice the signed area: > 0 for counter-clockwise vertices.
 inline double twice_signed_area(const std::array<Vec2d, 3>& v) {

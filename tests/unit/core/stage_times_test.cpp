@@ -1,0 +1,93 @@
+// The pipeline as code: every backend runs its stages through run_step and reports the
+// time of each (Solver::stage_times), counting completed steps only; `tridem run` prints
+// them as a table.
+#include "core/stage_report.hpp"
+#include "support/gpu.hpp"
+#include "support/scene_builder.hpp"
+#include "tridem/error.hpp"
+#include "tridem/solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+namespace tridem {
+namespace {
+
+std::unique_ptr<Solver> pile_solver(Backend backend) {
+  SolverConfig config;
+  config.backend = backend;
+  return make_solver(test::jostling_pile(4, 3), config);
+}
+
+void expect_every_stage_timed(Backend backend) {
+  auto solver = pile_solver(backend);
+  const auto start = std::chrono::steady_clock::now();
+  solver->advance(20);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const StageTimes t = solver->stage_times();
+  EXPECT_EQ(t.steps, 20);
+  for (int k = 0; k < kStageCount; ++k) {
+    if (t.fused_into[k] != k) {
+      EXPECT_EQ(t.seconds[k], 0) << stage_name(static_cast<Stage>(k));
+      continue;
+    }
+    EXPECT_GT(t.seconds[k], 0) << stage_name(static_cast<Stage>(k));
+  }
+  EXPECT_LE(t.total(), wall);
+}
+
+TEST(StageTimes, CpuTimesEveryStageOfEveryStep) {
+  expect_every_stage_timed(Backend::Cpu);
+  expect_every_stage_timed(Backend::OpenMP);
+}
+
+TEST(GpuStageTimes, TimesEveryStageItDoesNotFuse) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  expect_every_stage_timed(Backend::Cuda);
+  const StageTimes t = pile_solver(Backend::Cuda)->stage_times();
+  EXPECT_EQ(t.fused_into[static_cast<int>(Stage::Geometry)], static_cast<int>(Stage::Integrate));
+}
+
+TEST(StageTimes, OffTakesNoTimes) {
+  auto solver = pile_solver(Backend::Cpu);
+  solver->set_stage_timing(false);
+  solver->advance(5);
+  EXPECT_EQ(solver->stage_times().steps, 0);
+  EXPECT_EQ(solver->stage_times().total(), 0);
+  solver->set_stage_timing(true);
+  solver->advance(3);
+  EXPECT_EQ(solver->stage_times().steps, 3);
+}
+
+TEST(StageTimes, AStepStoppedByABlowUpIsNotCounted) {
+  Scene s = test::empty_scene(1e3);
+  s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
+  s.triangles.push_back(test::triangle({0.3, 0.3}, {1.3, 0.3}, {0.3, 1.3}));
+  SolverConfig config;
+  config.backend = Backend::Cpu;
+  auto solver = make_solver(s, config);
+  EXPECT_THROW(solver->advance(1), RunError);
+  const StageTimes t = solver->stage_times();
+  EXPECT_EQ(t.steps, 0);
+  EXPECT_EQ(t.total(), 0);
+}
+
+TEST(StageTimes, TableNamesEveryStageAndWhereFusedOnesWent) {
+  StageTimes t;
+  t.steps = 10;
+  t.clock = "test clock";
+  for (int k = 0; k < kStageCount; ++k) t.seconds[k] = 0.5;
+  t.seconds[static_cast<int>(Stage::Geometry)] = 0;
+  t.fused_into[static_cast<int>(Stage::Geometry)] = static_cast<int>(Stage::Integrate);
+  const std::string table = stage_table(t);
+  EXPECT_NE(table.find("10 steps, test clock"), std::string::npos) << table;
+  EXPECT_NE(table.find("geometry     in integrate"), std::string::npos) << table;
+  EXPECT_NE(table.find("pair forces         0.5 s  20.0 %       0.05 s/step"), std::string::npos)
+      << table;
+  EXPECT_EQ(stage_table(StageTimes{}), "");
+}
+
+}  // namespace
+}  // namespace tridem
