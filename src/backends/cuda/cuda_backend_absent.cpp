@@ -22,6 +22,6 @@ std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, con
                  "; use backend = \"cpu\", \"openmp\" or \"auto\"");
 }
 
-std::size_t cuda_solver_bytes(std::size_t, std::size_t, Precision) { return 0; }
+std::size_t cuda_solver_bytes(std::size_t, Precision) { return 0; }
 
 }  // namespace tridem
