@@ -27,4 +27,9 @@ enum EnergyAccumulator : int {
   kEnergyAccumulators = 4
 };
 
+/// The accumulators' names, in messages.
+inline constexpr const char* kEnergyAccumulatorNames[kEnergyAccumulators] = {
+    "dissipated damping energy", "dissipated friction energy",
+    "dissipated local-damping energy", "wall work"};
+
 }  // namespace tridem

@@ -20,7 +20,7 @@
 //    for zeros (k indexes EnergyAccumulator).
 //  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
 //    would have given without the round trip.
-#include "tridem/energy_budget.hpp"
+#include "tridem/particle_fields.hpp"
 
 #include <array>
 #include <cstdint>
@@ -29,19 +29,21 @@
 
 namespace tridem {
 
-inline constexpr int kSlipsPerPair = 2;  ///< physics::kHistoryValues: u = √k_t·ξ (x, y)
-
+/// The checkpointed fields of tridem/particle_fields.hpp (State, then Sum) under their
+/// public names (x, y, theta, vx, vy, omega, energy), and the contact history.
 struct SolverState {
   std::int64_t step = 0;
   double time = 0;
-  std::vector<double> x, y, theta;    ///< centroid and angle
-  std::vector<double> vx, vy, omega;  ///< velocities
-  std::vector<std::int32_t> pair_emitter, pair_partner;
-  std::vector<std::array<double, kSlipsPerPair>> pair_slip;
-  std::array<std::vector<double>, kEnergyAccumulators> energy;  ///< cumulative, per particle
+  /// x, y, theta, vx, vy, omega, energy; column(field), for_each_field(f) in checkpoint
+  /// order, kArraysPerParticle.
+  TRIDEM_PUBLIC_COLUMNS(TRIDEM_CHECKPOINTED_FIELDS)
+  TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_DECLARE_PAIR_COLUMN)
+  TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_PAIR_COLUMN_ACCESSOR)
 
   std::size_t size() const { return x.size(); }
   std::size_t pairs() const { return pair_emitter.size(); }
+  /// Bytes of one pair's history.
+  static constexpr std::size_t kBytesPerPair = 0 TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_PAIR_BYTES);
 };
 
 /// Checks `state` against a solver of `particles` particles: array sizes, pair indices in

@@ -61,6 +61,14 @@ ParticleModel build_particle_model(const Scene& scene) {
   return m;
 }
 
+bool walls_move(const ParticleModel& model) {
+  for (std::size_t i = 0; i < model.size(); ++i)
+    if (model.motion[i] != Motion::Free &&
+        (model.velocity[i].x != 0 || model.velocity[i].y != 0 || model.angular_velocity[i] != 0))
+      return true;
+  return false;
+}
+
 double material_restitution(const Material& m) {
   return physics::material_restitution(m.restitution, m.damping);
 }

@@ -23,6 +23,16 @@ struct ParticleModel {
   std::size_t size() const { return centroid.size(); }
 };
 
+/// Bytes of one particle's model (what the scene reader budgets for, and the memory
+/// estimate counts).
+inline constexpr std::size_t kParticleModelBytes =
+    sizeof(std::array<Vec2d, 3>) + 2 * sizeof(Vec2d) + 6 * sizeof(double) + sizeof(int) +
+    sizeof(Motion);
+
+/// True when some fixed or prescribed particle starts with a velocity, so that walls do
+/// work on the grains (the energy budget's wall work).
+bool walls_move(const ParticleModel& model);
+
 /// Builds the model; throws SceneError for a scene without triangles, and one naming the
 /// particle for a triangle validate_scene refuses (scene_detail::triangle_problem: a
 /// degenerate shape, a non-finite value, a bad material index, a fixed one that moves).

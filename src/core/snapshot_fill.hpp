@@ -18,6 +18,38 @@ inline void set_vertices(Snapshot& out, std::size_t i, const physics::Triangle<R
   out.y3[i] = t.v[2].y;
 }
 
+/// The shown fields (State and Force) of host columns `from` (anything with column(field)
+/// for them), in double.
+template <class Columns>
+inline void copy_shown_fields(Snapshot& out, const Columns& from) {
+  Snapshot::for_each_field([&](auto field) {
+    for_each_array(out.column(field), [&](std::vector<double>& to, int k) {
+      const auto& values = array_at(from.column(field), k);
+      for (std::size_t i = 0; i < to.size(); ++i) to[i] = static_cast<double>(values[i]);
+    });
+  });
+}
+
+/// What a snapshot derives from the Model fields of `model` (anything with column(field)
+/// for them) and the pose already in `out`: vertices, mass and inertia (1/(1/m), 0 for
+/// walls), material and motion.
+template <class Columns>
+inline void fill_from_model(Snapshot& out, const Columns& model) {
+  namespace pf = particle_field;
+  const auto& ox = model.column(pf::offset_x{});
+  const auto& oy = model.column(pf::offset_y{});
+  const auto& inv_mass = model.column(pf::inv_mass{});
+  const auto& inv_inertia = model.column(pf::inv_inertia{});
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Vec2d off[3] = {{ox[0][i], oy[0][i]}, {ox[1][i], oy[1][i]}, {ox[2][i], oy[2][i]}};
+    set_vertices(out, i, physics::place(Vec2d{out.x[i], out.y[i]}, out.theta[i], off));
+    out.mass[i] = inv_mass[i] > 0 ? 1.0 / inv_mass[i] : 0.0;
+    out.inertia[i] = inv_inertia[i] > 0 ? 1.0 / inv_inertia[i] : 0.0;
+  }
+  out.material.assign(model.column(pf::material{}).begin(), model.column(pf::material{}).end());
+  out.motion.assign(model.column(pf::motion{}).begin(), model.column(pf::motion{}).end());
+}
+
 /// The touching pairs of a pair list (rows by emitter) as contact records, in slot order.
 /// A pair's point is in its frame, relative to the emitter's centroid (cx, cy): placed
 /// back in double here.

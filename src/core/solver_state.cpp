@@ -32,26 +32,22 @@ void validate_solver_state(const SolverState& s, std::size_t particles,
   if (s.step < 0) throw Error(fmt::format("{}: negative step {}", source, s.step));
   if (!std::isfinite(s.time) || s.time < 0)
     throw Error(fmt::format("{}: time {} is not a finite time >= 0", source, s.time));
-  const std::pair<const std::vector<double>*, const char*> arrays[] = {
-      {&s.x, "x"}, {&s.y, "y"}, {&s.theta, "theta"},
-      {&s.vx, "vx"}, {&s.vy, "vy"}, {&s.omega, "omega"}};
-  for (const auto& [v, what] : arrays) {
-    check_size(v->size(), particles, what, source);
-    check_finite(*v, what, source);
-  }
-  static constexpr const char* kEnergyNames[kEnergyAccumulators] = {
-      "dissipated damping energy", "dissipated friction energy",
-      "dissipated local-damping energy", "wall work"};
-  for (int k = 0; k < kEnergyAccumulators; ++k) {
-    if (s.energy[k].empty()) continue;  // zeros
-    check_size(s.energy[k].size(), particles, kEnergyNames[k], source);
-    check_finite(s.energy[k], kEnergyNames[k], source);
-  }
+  SolverState::for_each_field([&](auto field) {
+    using Field = decltype(field);
+    for_each_array(s.column(field), [&](const std::vector<double>& v, int k) {
+      if (Field::role == FieldRole::Sum && v.empty()) return;  // zeros
+      const std::string what = Field::label(k);
+      check_size(v.size(), particles, what.c_str(), source);
+      check_finite(v, what.c_str(), source);
+    });
+  });
   const std::size_t m = s.pair_emitter.size();
-  if (s.pair_partner.size() != m || s.pair_slip.size() != m)
-    throw Error(fmt::format("{}: contact history arrays differ in length ({} emitters, {} "
-                            "partners, {} slips)",
-                            source, m, s.pair_partner.size(), s.pair_slip.size()));
+  for_each_pair_history_field([&](auto field) {
+    if (s.column(field).size() != m)
+      throw Error(fmt::format("{}: contact history arrays differ in length ({} emitters, {} "
+                              "{})",
+                              source, m, s.column(field).size(), decltype(field)::name));
+  });
   const auto n = static_cast<std::int64_t>(particles);
   for (std::size_t k = 0; k < m; ++k) {
     const std::int64_t e = s.pair_emitter[k], p = s.pair_partner[k];

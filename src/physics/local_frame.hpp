@@ -104,16 +104,17 @@ TRIDEM_HD inline PlacedBody<Real> place_body(Vec2d c, double theta, const Vec2<R
 }
 
 /// The three vertices (offsets or rotated offsets) of particle i from the three x and
-/// three y columns a structure of arrays keeps them in: host vectors or device pointers.
-template <class Real, class Column>
-TRIDEM_HD inline void load_vertices(const Column (&x)[3], const Column (&y)[3], std::int64_t i,
+/// three y columns a structure of arrays keeps them in: three host vectors or device
+/// pointers (a std::array or a C array of them; tridem/particle_fields.hpp).
+template <class Real, class Columns>
+TRIDEM_HD inline void load_vertices(const Columns& x, const Columns& y, std::int64_t i,
                                     Vec2<Real> out[3]) {
   TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) out[k] = {x[k][i], y[k][i]};
 }
 
-template <class Real, class Column>
-TRIDEM_HD inline void store_vertices(Column (&x)[3], Column (&y)[3], std::int64_t i,
+template <class Real, class Columns>
+TRIDEM_HD inline void store_vertices(Columns& x, Columns& y, std::int64_t i,
                                      const Vec2<Real> v[3]) {
   TRIDEM_UNROLL
   for (int k = 0; k < 3; ++k) {

@@ -3,7 +3,9 @@
 #include "broadphase/history_carry.hpp"
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
+#include "core/memory_estimate.hpp"
 #include "core/omp_threads.hpp"
+#include "core/particle_columns.hpp"
 #include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
 
@@ -18,15 +20,6 @@
 #include <omp.h>
 
 namespace tridem {
-
-namespace {
-
-template <class Real>
-std::vector<Real> cast(const std::vector<double>& v) {
-  return std::vector<Real>(v.begin(), v.end());
-}
-
-}  // namespace
 
 template <class Real>
 CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
@@ -47,51 +40,15 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (method_ == Method::Decomposition)
     decomposed_.emplace(scene.simulation.decomposition, model.longest_edge, model.motion,
                         filter_);
-  for (int k = 0; k < 3; ++k) {
-    offset_x_[k].resize(n_);
-    offset_y_[k].resize(n_);
-    rel_x_[k].resize(n_);
-    rel_y_[k].resize(n_);
-  }
-  mass_.resize(n_);
-  inv_mass_.resize(n_);
-  inv_inertia_.resize(n_);
-  half_size_.resize(n_);
-  x_.resize(n_);
-  y_.resize(n_);
-  theta_.assign(n_, 0.0);
-  vx_.resize(n_);
-  vy_.resize(n_);
-  w_.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      offset_x_[k][i] = static_cast<Real>(model.offsets[i][k].x);
-      offset_y_[k][i] = static_cast<Real>(model.offsets[i][k].y);
-    }
-    const bool free = model.motion[i] == Motion::Free;
-    mass_[i] = free ? static_cast<Real>(model.mass[i]) : Real(0);
-    inv_mass_[i] = free ? 1.0 / model.mass[i] : 0.0;
-    inv_inertia_[i] = free ? 1.0 / model.inertia[i] : 0.0;
-    half_size_[i] = static_cast<Real>(0.5 * model.longest_edge[i]);
-    x_[i] = model.centroid[i].x;
-    y_[i] = model.centroid[i].y;
-    vx_[i] = model.velocity[i].x;
-    vy_[i] = model.velocity[i].y;
-    w_[i] = model.angular_velocity[i];
-    walls_move_ = walls_move_ || (!free && (vx_[i] != 0 || vy_[i] != 0 || w_[i] != 0));
-  }
-  for (auto& sums : energy_) sums.assign(n_, 0.0);
-  area_ = cast<Real>(model.area);
-  material_ = model.material;
-  motion_ = model.motion;
+  for_each_particle_field([&](auto field) {
+    for_each_array(column(field),
+                   [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
+  });
+  walls_move_ = walls_move(model);
   for (const auto& law : contact_law_table(scene.materials))
     laws_.push_back(physics::SceneContactLaw::cast<Real>(law));
-  fx_.assign(n_, Real(0));
-  fy_.assign(n_, Real(0));
-  torque_.assign(n_, Real(0));
-  for (auto* v : {&lo_x_, &lo_y_, &hi_x_, &hi_y_}) v->resize(n_);
   // Room for a dense packing's pairs up front; the lists only grow past it.
-  const auto initial_pairs = static_cast<std::int64_t>(4 * n_ + 16);
+  const auto initial_pairs = static_cast<std::int64_t>(reserved_pairs(n_));
   for (PairList* p : {&pairs_, &old_pairs_}) {
     p->offset.assign(n_ + 1, 0);
     p->partner.resize(static_cast<std::size_t>(initial_pairs));
@@ -329,25 +286,8 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.step = step_;
   out.time = time_;
   out.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) {
-    out.x[i] = x_[i];
-    out.y[i] = y_[i];
-    out.theta[i] = theta_[i];
-    out.vx[i] = vx_[i];
-    out.vy[i] = vy_[i];
-    out.omega[i] = w_[i];
-    out.fx[i] = fx_[i];
-    out.fy[i] = fy_[i];
-    out.torque[i] = torque_[i];
-    const Vec2d off[3] = {{offset_x_[0][i], offset_y_[0][i]},
-                          {offset_x_[1][i], offset_y_[1][i]},
-                          {offset_x_[2][i], offset_y_[2][i]}};
-    set_vertices(out, i, physics::place(Vec2d{x_[i], y_[i]}, theta_[i], off));
-    out.mass[i] = inv_mass_[i] > 0 ? 1.0 / inv_mass_[i] : 0.0;
-    out.inertia[i] = inv_inertia_[i] > 0 ? 1.0 / inv_inertia_[i] : 0.0;
-    out.material[i] = material_[i];
-    out.motion[i] = motion_[i];
-  }
+  copy_shown_fields(out, *this);
+  fill_from_model(out, *this);
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.

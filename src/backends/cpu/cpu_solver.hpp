@@ -11,6 +11,7 @@
 #include "decomposition/decomposed_pairs.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
+#include "tridem/particle_fields.hpp"
 #include "tridem/solver.hpp"
 
 #include <array>
@@ -46,6 +47,9 @@ class CpuSolver final : public Solver {
       Stage::Gather,   Stage::Check,    Stage::Integrate};
   void run_stage(Stage stage);
 
+  /// The columns of a per-particle field, by its tag (generic code: snapshots, states).
+  TRIDEM_PARTICLE_FIELDS(TRIDEM_MEMBER_COLUMN_ACCESSOR)
+
  private:
   void update_geometry();
   void find_pairs();
@@ -78,24 +82,12 @@ class CpuSolver final : public Solver {
   std::int64_t step_ = 0;
   double time_ = 0;
 
-  // Fixed per particle: body-frame vertex offsets, mass terms.
-  std::vector<Real> offset_x_[3], offset_y_[3];
-  std::vector<Real> mass_, area_, half_size_;
-  std::vector<double> inv_mass_, inv_inertia_;
-  std::vector<int> material_;
-  std::vector<Motion> motion_;
+  // The per-particle fields (tridem/particle_fields.hpp) as member_ vectors: offset_x_,
+  // x_, fx_, energy_, rel_x_, lo_x_, ...
+  TRIDEM_PARTICLE_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
   std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
-  // State.
-  std::vector<double> x_, y_, theta_, vx_, vy_, w_;
-  std::vector<Real> fx_, fy_, torque_;
-  // The energy budget's cumulative sums, per particle (EnergyAccumulator order): each
-  // particle adds its own row of pairs and its local damping when its step is written.
-  std::array<std::vector<double>, kEnergyAccumulators> energy_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
-  // Geometry of the current step: vertices relative to the centroid, absolute boxes.
-  std::vector<Real> rel_x_[3], rel_y_[3];
-  std::vector<Real> lo_x_, lo_y_, hi_x_, hi_y_;
   // Pairs of this step and the last, with their contact history. The method picks the
   // finder: the cell grid and all-pairs list box-overlapping pairs, single-domain only
   // those that pass its contact test.

@@ -12,14 +12,9 @@ template <class Real>
 void CpuSolver<Real>::save_state(SolverState& out) const {
   out.step = step_;
   out.time = time_;
-  out.x.assign(x_.begin(), x_.end());
-  out.y.assign(y_.begin(), y_.end());
-  out.theta.assign(theta_.begin(), theta_.end());
-  out.vx.assign(vx_.begin(), vx_.end());
-  out.vy.assign(vy_.begin(), vy_.end());
-  out.omega.assign(w_.begin(), w_.end());
+  // The checkpointed fields are double in every precision: copied exactly.
+  SolverState::for_each_field([&](auto field) { out.column(field) = column(field); });
   append_history(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), old_slip_.data());
-  out.energy = energy_;
 }
 
 template <class Real>
@@ -27,21 +22,20 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, description());
   step_ = in.step;
   time_ = in.time;
-  // The state is double in every precision: copied exactly.
-  x_ = in.x;
-  y_ = in.y;
-  theta_ = in.theta;
-  vx_ = in.vx;
-  vy_ = in.vy;
-  w_ = in.omega;
-  for (int k = 0; k < kEnergyAccumulators; ++k) {
-    if (in.energy[k].empty()) energy_[k].assign(n_, 0.0);
-    else energy_[k] = in.energy[k];
-  }
-  // Forces are recomputed by the next step; until then nothing stale is shown.
-  std::fill(fx_.begin(), fx_.end(), Real(0));
-  std::fill(fy_.begin(), fy_.end(), Real(0));
-  std::fill(torque_.begin(), torque_.end(), Real(0));
+  // The checkpointed fields are double in every precision: copied exactly; an empty Sum
+  // reads as zeros. Forces are recomputed by the next step; until then nothing stale is
+  // shown.
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(column(field), [&](std::vector<double>& to, int k) {
+      const std::vector<double>& from = array_at(in.column(field), k);
+      if (from.empty()) to.assign(n_, 0.0);
+      else to = from;
+    });
+  });
+  for_each_particle_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::Force)
+      for_each_array(column(field), [](auto& v, int) { std::fill(v.begin(), v.end(), Real(0)); });
+  });
 
   history_rows(in, n_, old_pairs_.offset, old_pairs_.partner, old_slip_);
   // The forces of those pairs are not stored: the loaded step reports no contacts.

@@ -30,12 +30,8 @@ std::string cuda_device_description(int device = 0);
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config);
 
-/// Bytes of GPU memory the CUDA solver allocates for n particles and room for `pairs`
-/// candidate pairs (sized once at start).
-std::size_t cuda_solver_bytes(std::size_t n, std::size_t pairs, Precision precision);
-
-/// Candidate pairs per particle the CUDA solver reserves room for before it has seen the
-/// scene's own contacts: a dense packing with the Verlet skin, and headroom.
-constexpr std::size_t kCudaPairsPerParticle = 10;
+/// Bytes of GPU memory the CUDA solver allocates at start for n particles
+/// (core/memory_estimate.hpp); 0 in a build without CUDA.
+std::size_t cuda_solver_bytes(std::size_t n, Precision precision);
 
 }  // namespace tridem

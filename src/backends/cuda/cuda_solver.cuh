@@ -6,6 +6,7 @@
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/decomposed_rows.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
+#include "backends/cuda/particle_buffers.cuh"
 #include "backends/cuda/stage_events.cuh"
 #include "core/stage_pipeline.hpp"
 #include "core/particle_model.hpp"
@@ -56,20 +57,10 @@ class CudaSolver final : public Solver {
   void run_stage(Stage stage);
 
  private:
-  void upload_model(const ParticleModel& model);
-  ParticleArrays<Real> arrays() const;
+  ParticleArrays<Real> arrays() const { return d_.view(static_cast<int>(n_)); }
   void update_geometry();
   [[noreturn]] void report_runaway(int particle) const;
   [[noreturn]] void report_penetration(int emitter) const;
-  /// What a snapshot copies back, in Snapshot's order: position, angle, velocities (the
-  /// state, double in every precision), then forces (Real).
-  static constexpr int kStateArrays = 6, kForceArrays = 3;
-  std::array<const DeviceBuffer<double>*, kStateArrays> state_buffers() const {
-    return {&x_, &y_, &theta_, &vx_, &vy_, &w_};
-  }
-  std::array<const DeviceBuffer<Real>*, kForceArrays> force_buffers() const {
-    return {&fx_, &fy_, &torque_};
-  }
 
   std::size_t n_;
   Method method_;
@@ -84,27 +75,11 @@ class CudaSolver final : public Solver {
   std::string device_name_;
   cudaStream_t stream_ = nullptr;
 
-  // Fixed per particle: device and the host copies a snapshot needs.
-  DeviceBuffer<Real> offset_x_[3], offset_y_[3];
-  DeviceBuffer<Real> mass_, area_, half_size_;
-  DeviceBuffer<double> inv_mass_, inv_inertia_;
-  DeviceBuffer<int> material_;
-  DeviceBuffer<std::uint8_t> free_;
   DeviceBuffer<physics::LawParameters<Real>> laws_;
-  std::vector<Vec2<Real>> host_offsets_;  ///< 3 per particle
-  std::vector<double> host_mass_, host_inertia_;
-  std::vector<int> host_material_;
-  std::vector<Motion> host_motion_;
-  // State (double in every precision), forces, geometry (vertices about the centroid).
-  DeviceBuffer<double> x_, y_, theta_, vx_, vy_, w_;
-  DeviceBuffer<Real> fx_, fy_, torque_;
-  DeviceBuffer<Real> rel_x_[3], rel_y_[3];
-  DeviceBuffer<Real> lo_x_, lo_y_, hi_x_, hi_y_;
-  DeviceBuffer<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
-  /// The energy budget's cumulative per-particle sums, and room for the elastic energy of
-  /// each row when energy() asks for it.
-  DeviceBuffer<double> energy_[kEnergyAccumulators];
-  mutable DeviceBuffer<double> row_elastic_;
+  /// The per-particle fields (tridem/particle_fields.hpp), and the Model ones on the host
+  /// for snapshots.
+  ParticleBuffers<Real> d_;
+  ModelColumns<Real> host_model_;
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   /// method = decomposition: the pair list is built by sub-domain, every step.
   std::unique_ptr<DecomposedRows<Real>> decomposed_;
@@ -112,8 +87,7 @@ class CudaSolver final : public Solver {
   std::unique_ptr<StageEvents> events_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
-  mutable PinnedBuffer<double> staging_;       ///< the state_buffers() a snapshot copies
-  mutable PinnedBuffer<Real> force_staging_;   ///< and its force_buffers()
+  mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
 };
 
 }  // namespace tridem::cuda

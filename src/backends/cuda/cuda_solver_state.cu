@@ -13,34 +13,38 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   out.step = step_;
   out.time = time_;
-  std::vector<double>* fields[] = {&out.x, &out.y, &out.theta, &out.vx, &out.vy, &out.omega};
-  const auto buffers = state_buffers();
-  for (int k = 0; k < kStateArrays; ++k) {
-    fields[k]->resize(n_);  // download() copies as many values as the host vector holds
-    buffers[k]->download(*fields[k]);
-  }
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(out.column(field), [&](std::vector<double>& to, int k) {
+      to.resize(n_);  // download() copies as many values as the host vector holds
+      array_at(d_.column(field), k).download(to);
+    });
+  });
   std::vector<int> offset, partner;
   std::vector<physics::PairSlip<Real>> slip;
   pairs_->download(offset, partner, &slip, nullptr);
   append_history(out, n_, offset.data(), partner.data(), slip.data());
-  for (int k = 0; k < kEnergyAccumulators; ++k) {
-    out.energy[k].resize(n_);
-    energy_[k].download(out.energy[k]);
-  }
 }
 
 template <class Real>
 void CudaSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, description());
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-  const std::vector<double>* fields[] = {&in.x, &in.y, &in.theta, &in.vx, &in.vy, &in.omega};
-  DeviceBuffer<double>* buffers[] = {&x_, &y_, &theta_, &vx_, &vy_, &w_};
-  for (int k = 0; k < kStateArrays; ++k) buffers[k]->upload(*fields[k]);
-  // Forces are recomputed by the next step; until then nothing stale is shown.
-  const std::vector<Real> zeros(n_, Real(0));
-  for (auto* b : {&fx_, &fy_, &torque_}) b->upload(zeros);
-  for (int k = 0; k < kEnergyAccumulators; ++k)
-    energy_[k].upload(in.energy[k].empty() ? std::vector<double>(n_, 0.0) : in.energy[k]);
+  // An empty Sum reads as zeros. Forces are recomputed by the next step; until then
+  // nothing stale is shown.
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(in.column(field), [&](const std::vector<double>& from, int k) {
+      auto& to = array_at(d_.column(field), k);
+      if (from.empty()) to.upload(std::vector<double>(n_, 0.0));
+      else to.upload(from);
+    });
+  });
+  for_each_particle_field([&](auto field) {
+    using Field = decltype(field);
+    if constexpr (Field::role == FieldRole::Force)
+      for_each_array(d_.column(field), [&](auto& b, int) {
+        b.upload(std::vector<typename Field::template type<Real>>(n_));
+      });
+  });
   step_ = in.step;
   time_ = in.time;
   std::vector<int> offset, partner;

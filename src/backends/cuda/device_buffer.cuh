@@ -12,6 +12,7 @@ namespace tridem::cuda {
 template <class T>
 class DeviceBuffer {
  public:
+  using value_type = T;
   DeviceBuffer() = default;
   explicit DeviceBuffer(std::size_t n) { allocate(n); }
   DeviceBuffer(const DeviceBuffer&) = delete;

@@ -4,37 +4,21 @@
 // particles, read consecutive addresses.
 #include "physics/contact_laws.hpp"
 #include "tridem/energy_budget.hpp"
+#include "tridem/particle_fields.hpp"
 
 #include <cstdint>
 
 namespace tridem::cuda {
 
+/// Every field of the CUDA solver (tridem/particle_fields.hpp: the fields both backends
+/// keep, then its own): `const Real* offset_x[3]`, `double* x`, `double* energy[4]`, ...
+/// Model fields are const: no kernel writes them.
 template <class Real>
 struct ParticleArrays {
   int n;
-  // Fixed per particle.
-  const Real* offset_x[3];
-  const Real* offset_y[3];
-  const double* inv_mass;     ///< the integration is double in every precision
-  const double* inv_inertia;
-  const Real* mass;  ///< 0 for bodies moved by prescription
-  const Real* area;
-  const Real* half_size;
-  const int* material;
-  const std::uint8_t* free;   ///< 1 for bodies moved by forces
-  // State: double in every precision (docs/model.md, "Precision").
-  double *x, *y, *theta, *vx, *vy, *w;
-  Real *fx, *fy, *torque;
-  // Geometry of the current state: vertices relative to the centroid, bounding box.
-  Real* rel_x[3];
-  Real* rel_y[3];
-  Real *lo_x, *lo_y, *hi_x, *hi_y;
-  // The boxes of the last pair-list build, grown by the skin: while every current box lies
-  // inside its build box, the list holds every pair whose boxes overlap.
-  Real *build_lo_x, *build_lo_y, *build_hi_x, *build_hi_y;
-  // The energy budget's cumulative sums, per particle (EnergyAccumulator order), in double
-  // whatever Real is: they add small amounts to a growing total for the whole run.
-  double* energy[kEnergyAccumulators];
+  TRIDEM_GPU_PARTICLE_FIELDS(TRIDEM_DECLARE_POINTERS)
+
+  TRIDEM_GPU_PARTICLE_FIELDS(TRIDEM_COLUMN_ACCESSOR)
 };
 
 /// Candidate pairs in compressed rows by emitter (partners ascending), as on the CPU

@@ -14,15 +14,10 @@ namespace fmt_ = checkpoint_format;
 
 namespace {
 
-/// The six per-particle arrays in file order (const or not, as the state is).
-template <class State>
-auto state_arrays(State& s) {
-  return std::array{&s.x, &s.y, &s.theta, &s.vx, &s.vy, &s.omega};
-}
-
-constexpr const char* kArrayNames[6] = {"x", "y", "theta", "vx", "vy", "omega"};
-constexpr const char* kEnergyArrayNames[kEnergyAccumulators] = {
-    "dissipated damping", "dissipated friction", "dissipated local damping", "wall work"};
+void put(io::ByteWriter& w, double v) { w.f64(v); }
+void put(io::ByteWriter& w, std::int32_t v) { w.i32(v); }
+void get(io::ByteReader& r, double& v, const char* what) { v = r.f64(what); }
+void get(io::ByteReader& r, std::int32_t& v, const char* what) { v = r.i32(what); }
 
 void put_u32_at(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
@@ -103,27 +98,28 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& so
     throw RunError(fmt::format("{}: corrupt: {} particles do not fit in the {} bytes of state "
                                "left after the settings",
                                source, n, r.remaining()));
-  for (int k = 0; k < 6; ++k) {
-    std::vector<double>& v = *state_arrays(s)[k];
-    v.resize(n);
-    for (double& value : v) value = r.f64(kArrayNames[k]);
-  }
-  for (int k = 0; k < kEnergyAccumulators; ++k) {
-    s.energy[k].resize(n);
-    for (double& value : s.energy[k]) value = r.f64(kEnergyArrayNames[k]);
-  }
+  // The per-particle arrays, in SolverState's order (particle_fields.hpp).
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(s.column(field), [&](std::vector<double>& v, int k) {
+      const std::string what = decltype(field)::label(k);
+      v.resize(n);
+      for (double& value : v) get(r, value, what.c_str());
+    });
+  });
   const std::uint64_t m = r.u64("pair count");
   if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
     throw RunError(fmt::format("{}: corrupt: {} pairs of contact history do not fill the "
                                "{} bytes left",
                                source, m, r.remaining()));
-  s.pair_emitter.resize(m);
-  s.pair_partner.resize(m);
-  s.pair_slip.resize(m);
-  for (auto& e : s.pair_emitter) e = r.i32("pair emitters");
-  for (auto& p : s.pair_partner) p = r.i32("pair partners");
-  for (auto& slip : s.pair_slip)
-    for (double& v : slip) v = r.f64("pair slips");
+  // Then each history field for all pairs, a field of several values pair-major.
+  for_each_pair_history_field([&](auto field) {
+    auto& column = s.column(field);
+    column.resize(m);
+    for (auto& value : column) {
+      if constexpr (decltype(field)::count == 1) get(r, value, decltype(field)::name);
+      else for (auto& v : value) get(r, v, decltype(field)::name);
+    }
+  });
   return s;
 }
 
@@ -142,18 +138,20 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
     p.text(setting.key);
     p.text(setting.value);
   }
-  for (const std::vector<double>* array : state_arrays(s))
-    for (double v : *array) p.f64(v);
-  for (const std::vector<double>& sums : s.energy) {  // empty: zeros
-    for (double v : sums) p.f64(v);
-    for (std::size_t i = sums.size(); i < n; ++i) p.f64(0.0);
-  }
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(s.column(field), [&](const std::vector<double>& v, int) {
+      for (double value : v) put(p, value);
+      if (decltype(field)::role == FieldRole::Sum)  // empty: zeros
+        for (std::size_t i = v.size(); i < n; ++i) put(p, 0.0);
+    });
+  });
   p.u64(m);
-  for (std::int32_t e : s.pair_emitter) p.i32(e);
-  for (std::int32_t j : s.pair_partner) p.i32(j);
-  for (const auto& slip : s.pair_slip)
-    for (double v : slip) p.f64(v);
-
+  for_each_pair_history_field([&](auto field) {
+    for (const auto& value : s.column(field)) {
+      if constexpr (decltype(field)::count == 1) put(p, value);
+      else for (auto v : value) put(p, v);
+    }
+  });
   std::vector<std::uint8_t> bytes;
   bytes.reserve(fmt_::kHeaderSize + payload.size());
   io::ByteWriter h(bytes);

@@ -26,6 +26,8 @@
 // to size anything; the payload size is checked against the file size for the same
 // reason. Bump the version on any change to this layout (version 1 had no physics
 // settings, version 2 no energy arrays, version 3 six edge slips per pair).
+#include "tridem/solver_state.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -36,14 +38,20 @@ inline constexpr std::uint32_t kVersion = 4;
 inline constexpr std::size_t kHeaderSize = 48;
 inline constexpr std::size_t kHeaderCrcOffset = 44;
 inline constexpr std::size_t kPayloadCrcOffset = 40;
-/// Per-particle arrays: six of state, four of energy.
-inline constexpr std::size_t kArraysPerParticle = 10;
+/// Per-particle arrays: SolverState's fields (particle_fields.hpp), six of state, four of
+/// energy in this version. A field added to the State or Sum lists changes the layout:
+/// bump kVersion, and keep reading the older version.
+inline constexpr std::size_t kArraysPerParticle = SolverState::kArraysPerParticle;
+static_assert(kVersion != 4 || kArraysPerParticle == 10,
+              "the checkpointed fields changed: bump the checkpoint format version");
 inline constexpr std::size_t kBytesPerParticle = 8 * kArraysPerParticle;
 /// The least bytes of a payload of n particles: step, time, the settings count, the
 /// per-particle arrays, m.
 inline constexpr std::size_t fixed_payload_size(std::uint64_t n) {
   return 8 + 8 + 4 + kBytesPerParticle * n + 8;
 }
-inline constexpr std::size_t kBytesPerPair = 4 + 4 + 2 * 8;  // kSlipsPerPair doubles
+inline constexpr std::size_t kBytesPerPair = SolverState::kBytesPerPair;
+static_assert(kVersion != 4 || kBytesPerPair == 4 + 4 + 2 * 8,
+              "the contact history's fields changed: bump the checkpoint format version");
 
 }  // namespace tridem::checkpoint_format

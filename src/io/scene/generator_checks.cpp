@@ -1,5 +1,6 @@
 #include "io/scene/generator_checks.hpp"
 
+#include "core/particle_model.hpp"
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
 
@@ -55,8 +56,7 @@ double tolerant_floor(double x) { return std::floor(x + 1e-9); }
 std::size_t bytes_to_read(std::size_t n) {
   // Two TriangleSpec lists while the vector grows, and the particle model's per-particle
   // arrays (centroid, offsets, velocities, mass terms, sizes, material, motion).
-  constexpr std::size_t kModel = 136;
-  return n * (2 * sizeof(TriangleSpec) + kModel);
+  return n * (2 * sizeof(TriangleSpec) + kParticleModelBytes);
 }
 
 std::size_t available_memory_bytes() {

@@ -1,0 +1,62 @@
+#include "core/memory_estimate.hpp"
+
+#include "core/particle_model.hpp"
+#include "physics/contact_force.hpp"
+#include "tridem/particle_fields.hpp"
+#include "tridem/snapshot.hpp"
+
+namespace tridem {
+
+namespace {
+
+/// Per particle, besides the fields: the CUDA broad phase's small flag, grid (cell keys
+/// and indices, sorted: 4 words; 4 cells of start and end) and rows (new and old offsets,
+/// reverse offsets, counts).
+constexpr std::size_t kGpuListBytesPerParticle = 1 + 4 * 4 + 4 * 2 * 4 + 4 * 4;
+/// The CPU's: cell bookkeeping (keys, order and the cell ranges), the row offsets of the
+/// new and the old list, the reverse index's offsets and cursor, the row counts.
+constexpr std::size_t kCpuListBytesPerParticle = 2 * 4 * 8 + 8 + 4 + 8 + 3 * 8 + 2 * 8;
+
+template <class Real>
+std::size_t gpu_bytes(std::size_t n, std::size_t pairs) {
+  const std::size_t per_particle =
+      bytes_per_particle<Real>([](auto f) { for_each_gpu_particle_field(f); }) +
+      kGpuListBytesPerParticle;
+  // Per pair: partner and slip twice (new and old list), emitter, slot id, result,
+  // reverse sort keys and slots, and CUB's sort scratch (keys and values).
+  const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +
+                               sizeof(physics::PairForce<Real>) + 4 + 4 + 8;
+  return n * per_particle + pairs * per_pair + (16u << 20);
+}
+
+template <class Real>
+std::size_t cpu_bytes(std::size_t n, std::size_t pairs) {
+  const std::size_t per_particle =
+      bytes_per_particle<Real>([](auto f) { for_each_particle_field(f); }) +
+      kCpuListBytesPerParticle;
+  // Per pair: partner and slip twice (new and old list), the result and the reverse slot.
+  const std::size_t per_pair =
+      2 * (4 + sizeof(physics::PairSlip<Real>)) + sizeof(physics::PairForce<Real>) + 8;
+  // Host copies: the scene's TriangleSpec, the particle model, a snapshot (its shown
+  // fields, vertices, mass and inertia in double, material, motion) and about six contact
+  // records of a dense packing.
+  const std::size_t snapshot =
+      8 * (Snapshot::kArraysPerParticle + 8) + sizeof(int) + sizeof(Motion);
+  const std::size_t host = sizeof(TriangleSpec) + kParticleModelBytes + snapshot +
+                           6 * sizeof(ContactRecord);
+  return n * (per_particle + host) + pairs * per_pair;
+}
+
+}  // namespace
+
+std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision) {
+  return precision == Precision::Float ? gpu_bytes<float>(n, pairs)
+                                       : gpu_bytes<double>(n, pairs);
+}
+
+std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision) {
+  return precision == Precision::Float ? cpu_bytes<float>(n, pairs)
+                                       : cpu_bytes<double>(n, pairs);
+}
+
+}  // namespace tridem

@@ -1,0 +1,35 @@
+#pragma once
+// Host columns of the per-particle fields (tridem/particle_fields.hpp) and how both
+// backends start them from a ParticleModel.
+#include "core/particle_model.hpp"
+#include "tridem/particle_fields.hpp"
+
+#include <vector>
+
+namespace tridem {
+
+/// Array k of `field` for every particle of the model, at its initial value.
+template <class Real, class Field>
+std::vector<typename Field::template type<Real>> initial_column(Field, const ParticleModel& m,
+                                                                int k) {
+  std::vector<typename Field::template type<Real>> v(m.size());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = Field::template initial<Real>(m, i, k);
+  return v;
+}
+
+/// The Model fields on the host: what the CUDA solver keeps there for snapshots.
+template <class Real>
+struct ModelColumns {
+  template <class T>
+  using Column = std::vector<T>;
+  TRIDEM_MODEL_FIELDS(TRIDEM_DECLARE_COLUMNS)
+  TRIDEM_MODEL_FIELDS(TRIDEM_COLUMN_ACCESSOR)
+
+  explicit ModelColumns(const ParticleModel& m) {
+    for_each_model_field([&](auto field) {
+      for_each_array(column(field), [&](auto& v, int k) { v = initial_column<Real>(field, m, k); });
+    });
+  }
+};
+
+}  // namespace tridem
