@@ -9,10 +9,8 @@
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 
-#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
-#include <vector>
 
 namespace tridem::app {
 
@@ -20,34 +18,35 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The last frame of an output directory: the highest step among frames/frame_*.vtu.
+/// The last frame of an output directory: the highest step among its frames.
 fs::path last_frame(const fs::path& dir) {
-  std::vector<fs::path> frames;
-  const fs::path folder = dir / "frames";
-  if (fs::is_directory(folder))
-    for (const auto& entry : fs::directory_iterator(folder))
-      if (entry.path().extension() == ".vtu") frames.push_back(entry.path());
-  if (frames.empty())
-    throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
-                            "frames, or give a .vtu file",
-                            dir.string()));
-  return *std::max_element(frames.begin(), frames.end());
+  if (auto frame = last_frame_file(dir)) return *frame;
+  throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
+                          "frames, or give a .vtu file",
+                          dir.string()));
+}
+
+/// What the command line says instead of the scene. main.cpp checked the spellings
+/// against the same tables.
+SceneOverrides overrides(const RunArgs& args) {
+  SceneOverrides o;
+  o.out_dir = args.out;
+  if (args.backend) o.backend = value_in(kBackendNames, *args.backend);
+  o.steps = args.steps;
+  if (args.method) o.method = value_in(kMethodNames, *args.method);
+  if (args.contact_test) o.contact_test = value_in(kContactTestNames, *args.contact_test);
+  if (args.no_bbox_prefilter) o.bbox_prefilter = false;
+  return o;
 }
 
 }  // namespace
 
 int run(const RunArgs& args) {
-  const Scene scene = read_scene(args.scene);
+  const Scene scene = apply_overrides(read_scene(args.scene), overrides(args));
   RunOptions options;
-  options.out_dir = args.out;
-  if (args.backend) options.backend = value_in(kBackendNames, *args.backend);
-  options.steps = args.steps;
-  // main.cpp checked the spellings against the same tables.
-  if (args.method) options.method = value_in(kMethodNames, *args.method);
-  if (args.contact_test) options.contact_test = value_in(kContactTestNames, *args.contact_test);
-  if (args.no_bbox_prefilter) options.bbox_prefilter = false;
   options.force = args.force;
   options.threads = args.threads;
+  options.device = args.device;
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.interrupt = &install_interrupt_handlers();
@@ -87,8 +86,7 @@ int info(const std::string& path) {
   fmt::print("steps        {} (t = {:.6g} s)\n", sim.steps,
              static_cast<double>(sim.steps) * info.dt_chosen);
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
-             backend_name(resolve_backend(sim.backend)),
-             sim.precision == Precision::Float ? "float" : "double");
+             backend_name(resolve_backend(sim.backend)), precision_name(sim.precision));
   fmt::print("method       {}\n",
              method_description(sim.method, sim.contact_test, sim.bbox_prefilter));
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
@@ -106,8 +104,8 @@ int render(const RenderArgs& args) {
   const Snapshot snap = read_vtu_frame(frame);
   RenderOptions opt;
   opt.width = args.width;
-  opt.color_by = args.color == "material" ? RenderOptions::ColorBy::Material
-                                          : RenderOptions::ColorBy::Speed;
+  // main.cpp checked the spelling against the same table.
+  opt.color_by = value_in(kColorByNames, args.color).value_or(opt.color_by);
   const fs::path out = args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
   render_png(snap, out, opt);
   fmt::print("{}\n", out.string());

@@ -18,6 +18,7 @@ struct RunArgs {
   std::optional<std::int64_t> steps;
   std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
+  int device = 0;
   bool force = false;
   bool quiet = false;
 };
@@ -25,7 +26,7 @@ struct RunArgs {
 /// (after it wrote its checkpoint).
 int run(const RunArgs&);
 
-int info(const std::string& scene);
+int info(const std::string& path);
 
 struct RenderArgs {
   std::string input;  ///< a .vtu frame, or an output directory (its last frame)

@@ -57,7 +57,9 @@ int main(int argc, char** argv) {
   auto* run_cmd = cli.add_subcommand("run", "Run a scene and write its outputs");
   run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(existing("scene file"));
   run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");
-  run_cmd->add_option("--backend", run_args.backend, "auto, cpu (serial reference), openmp or cuda")
+  run_cmd
+      ->add_option("--backend", run_args.backend,
+                   "Overrides [simulation] backend: " + tridem::spellings_of(tridem::kBackendNames))
       ->check(CLI::IsMember(spelling_list(tridem::kBackendNames)));
   run_cmd->add_option("--method", run_args.method,
                       "Overrides [simulation] method: " + tridem::spellings_of(tridem::kMethodNames))
@@ -71,6 +73,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--steps", run_args.steps, "Number of steps (overrides [simulation] steps)")
       ->check(at_least(1));
   run_cmd->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
+      ->check(at_least(0));
+  run_cmd
+      ->add_option("--device", run_args.device,
+                   "GPU of the cuda backend, numbered from 0 (default 0)")
       ->check(at_least(0));
   run_cmd->add_option("--restart", run_args.restart,
                       "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
@@ -88,8 +94,10 @@ int main(int argc, char** argv) {
                          "A frame (.vtu) or an output directory (its last frame)")
       ->required()->check(existing("frame or folder"));
   render_cmd->add_option("-o,--out", render_args.out, "PNG file (default: beside the frame)");
-  render_cmd->add_option("--color", render_args.color, "speed or material")
-      ->check(CLI::IsMember({"speed", "material"}));
+  render_cmd
+      ->add_option("--color", render_args.color,
+                   "Colour by: " + tridem::spellings_of(tridem::kColorByNames))
+      ->check(CLI::IsMember(spelling_list(tridem::kColorByNames)));
   render_cmd->add_option("--width", render_args.width, "Image width in pixels")
       ->check(CLI::Range(16, 16384));
 

@@ -97,14 +97,24 @@ Work gpu_work(std::size_t n) {
 struct Variant {
   Backend backend;
   tridem::Precision precision;
-  const char* name;
+
+  /// "cpu", "openmp", "cuda", "cuda-float": the backend's spelling, and the precision's
+  /// when it is not double.
+  std::string name() const {
+    std::string out(tridem::backend_name(backend));
+    if (precision != tridem::Precision::Double) {
+      out += '-';
+      out += tridem::precision_name(precision);
+    }
+    return out;
+  }
 };
 
 const Variant kVariants[] = {
-    {Backend::Cpu, tridem::Precision::Double, "cpu"},
-    {Backend::OpenMP, tridem::Precision::Double, "openmp"},
-    {Backend::Cuda, tridem::Precision::Double, "cuda"},
-    {Backend::Cuda, tridem::Precision::Float, "cuda-float"},
+    {Backend::Cpu, tridem::Precision::Double},
+    {Backend::OpenMP, tridem::Precision::Double},
+    {Backend::Cuda, tridem::Precision::Double},
+    {Backend::Cuda, tridem::Precision::Float},
 };
 
 /// --stage_timing: per-stage times on (the default) or off.
@@ -129,11 +139,10 @@ const tridem::Scene& pile(std::size_t n) {
 }
 
 std::unique_ptr<tridem::Solver> make(const Variant& v, std::size_t n) {
-  tridem::SolverConfig config;
-  config.backend = v.backend;
-  config.precision = v.precision;
-  config.method = g_method.method;
-  return tridem::make_solver(pile(n), config);
+  tridem::Scene scene = pile(n);
+  scene.simulation.backend = v.backend;
+  scene.simulation.precision = v.precision;
+  return tridem::make_solver(scene, tridem::SolverConfig{});
 }
 
 /// A solver past its warm-up steps, or none (the case then reports why and is skipped).
@@ -231,7 +240,7 @@ int main(int argc, char** argv) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string name = list.substr(start, comma - start);
     const auto* v = std::find_if(std::begin(kVariants), std::end(kVariants),
-                                 [&](const Variant& x) { return name == x.name; });
+                                 [&](const Variant& x) { return name == x.name(); });
     if (v == std::end(kVariants)) {
       std::cerr << "tridem_bench: --backends wants a list of cpu, openmp, cuda, cuda-float; got '"
                 << name << "'\n";
@@ -284,8 +293,8 @@ int main(int argc, char** argv) {
       const std::string size = "/n:" + std::to_string(n);
       const Work w = v.backend == Backend::Cuda ? gpu_work(n) : work(n);
       auto* bm = benchmark::RegisterBenchmark(
-          (std::string("dense_pile/") + v.name + method_tag + size).c_str(), dense_pile_case, v, n,
-          w.steps_per_iteration);
+          (std::string("dense_pile/") + v.name() + method_tag + size).c_str(), dense_pile_case, v,
+          n, w.steps_per_iteration);
       const auto iters = std::max<std::int64_t>(
           1, std::llround(static_cast<double>(w.iterations) * iter_scale));
       bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(
@@ -294,7 +303,7 @@ int main(int argc, char** argv) {
       if (!frames) continue;
       for (const bool contacts : {false, true}) {
         auto* fb = benchmark::RegisterBenchmark(
-            (std::string(contacts ? "frame_with_contacts/" : "frame/") + v.name + size).c_str(),
+            (std::string(contacts ? "frame_with_contacts/" : "frame/") + v.name() + size).c_str(),
             snapshot_case, v, n, contacts);
         fb->Iterations(3)->UseRealTime()->Unit(benchmark::kMillisecond);
       }

@@ -14,3 +14,6 @@ $SUDO apt-get install -y -qq --no-install-recommends \
 # runtimes, and clang's OpenMP.
 $SUDO apt-get install -y -qq --no-install-recommends \
   clang-14 libclang-rt-14-dev libomp-14-dev
+# The style and static checks of a change (scripts/run-lint.sh, .clang-format, .clang-tidy).
+$SUDO apt-get install -y -qq --no-install-recommends \
+  clang-format-14 clang-tidy-14

@@ -117,9 +117,10 @@ struct Case {
   std::size_t n;
 };
 
-/// The case's scene with its method's settings.
+/// The case's scene with its backend and its method's settings.
 tridem::Scene scene_for(const Case& c) {
   tridem::Scene s = problem(c.problem, c.n);
+  s.simulation.backend = c.backend;
   s.simulation.method = c.design.method;
   s.simulation.bbox_prefilter = c.design.prefilter;
   s.simulation.decomposition.layout = c.design.layout;
@@ -143,14 +144,12 @@ tridem::Scene scene_for(const Case& c) {
   return s;
 }
 
-std::unique_ptr<tridem::Solver> make(const Case& c, const tridem::Scene& s) {
-  tridem::SolverConfig config;
-  config.backend = c.backend;
-  config.method = c.design.method;
-  return tridem::make_solver(s, config);
+/// A solver of scene_for(c) (whose settings name the backend and the method).
+std::unique_ptr<tridem::Solver> make(const tridem::Scene& s) {
+  return tridem::make_solver(s, tridem::SolverConfig{});
 }
 
-std::unique_ptr<tridem::Solver> make(const Case& c) { return make(c, scene_for(c)); }
+std::unique_ptr<tridem::Solver> make(const Case& c) { return make(scene_for(c)); }
 
 void describe(benchmark::State& state, const tridem::Solver& solver) {
   const std::string stats = solver.statistics();
@@ -209,9 +208,9 @@ void job_case(benchmark::State& state, Case c, std::int64_t k) {
     tridem::Snapshot snap;
     // One untimed set-up first: the process's first GPU solver also creates the CUDA
     // context (tens of ms), which no later job pays.
-    std::unique_ptr<tridem::Solver> solver = make(c, scene);
+    std::unique_ptr<tridem::Solver> solver = make(scene);
     for (auto _ : state) {
-      solver = make(c, scene);
+      solver = make(scene);
       solver->advance(k);
       solver->snapshot(snap, false);
     }
@@ -227,7 +226,7 @@ struct Limits {
 };
 
 std::string case_name(const char* experiment, const Case& c, const std::string& tail) {
-  return fmt::format("{}/{}/{}/{}/n:{}{}", experiment, c.backend == Backend::Cuda ? "cuda" : "cpu",
+  return fmt::format("{}/{}/{}/{}/n:{}{}", experiment, tridem::backend_name(c.backend),
                      c.design.name(), problem_name(c.problem), c.n, tail);
 }
 

@@ -37,6 +37,8 @@ EnergyRow compute_energy(const Snapshot&, Vec2d gravity = {}, const EnergyBudget
 /// Frame and contact file names carry the step padded to 9 digits so that they sort.
 std::string frame_file_name(std::int64_t step);     ///< frame_000000042.vtu
 std::string contacts_file_stem(std::int64_t step);  ///< contacts_000000042
+/// The frame of the highest step in an output directory (frames/frame_<step>.vtu), or none.
+std::optional<std::filesystem::path> last_frame_file(const std::filesystem::path& dir);
 
 // Single-file writers. OutputSet calls them; tools and tests may call them alone. All
 // throw RunError naming the path and the system's reason when the file cannot be written.
@@ -59,7 +61,8 @@ struct ResumePoint {
   double time = 0;
 };
 
-/// The files of one run, under one directory:
+/// The files of one run, under one directory (each format an io::OutputWriter, listed in
+/// io/output/output_writers.cpp):
 ///   energy.csv, walls.csv          one block of rows per log() call, flushed each time
 ///   frames/frame_<step>.vtu        one per write_frame(), listed in tridem.pvd
 ///   contacts/contacts_<step>.csv   and .vtp, with each frame when settings.contacts,

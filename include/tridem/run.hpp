@@ -12,15 +12,12 @@
 
 namespace tridem {
 
+/// How to run a scene, besides what the scene says (a command line's overrides of the
+/// scene's settings are applied to the scene first: apply_overrides in scene_io.hpp).
 struct RunOptions {
-  std::optional<std::string> out_dir;     ///< overrides [output] dir
-  std::optional<Backend> backend;         ///< overrides [simulation] backend
-  std::optional<std::int64_t> steps;      ///< overrides [simulation] steps
-  std::optional<Method> method;           ///< overrides [simulation] method
-  std::optional<ContactTest> contact_test; ///< overrides [simulation] contact_test
-  std::optional<bool> bbox_prefilter;     ///< overrides [simulation] bbox_prefilter
   bool force = false;                     ///< accept dt above dt_crit
   int threads = 0;                        ///< OpenMP threads, 0 = default
+  int device = 0;                         ///< the cuda backend's GPU (SolverConfig::device)
   bool progress = true;                   ///< bar on stderr when it is a terminal
   std::FILE* log = stdout;                ///< where the start and summary lines go
   /// A checkpoint to continue from (tridem run --restart): the run goes on from its step
@@ -45,10 +42,12 @@ struct RunSummary {
   StageTimes stages;  ///< the time loop's steps, stage by stage (outputs not included)
 };
 
-/// Runs the scene to the end (or to an interruption), writing its outputs, checkpoints
-/// every [output] checkpoint_every steps. Throws tridem::Error on failure; on a blow-up
-/// the last good state is first written to last_good.ckpt and final.csv.
-RunSummary run_scene(const Scene& scene, const RunOptions& options);
+/// Runs the scene `input` to the end (or to an interruption): its settings are the run's
+/// (backend, precision, method, steps, output directory); relax_overlaps moves a copy's
+/// triangles. Writes its outputs, and checkpoints every [output] checkpoint_every steps.
+/// Throws tridem::Error on failure; on a blow-up the last good state is first written to
+/// last_good.ckpt and final.csv.
+RunSummary run_scene(const Scene& input, const RunOptions& options);
 
 /// What `tridem info` prints about a scene.
 struct SceneInfo {

@@ -4,7 +4,9 @@
 // where one is known, the table, the key and, for triangles, the particle id.
 #include "tridem/scene.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -24,5 +26,25 @@ Scene parse_scene(std::string_view toml_text, std::string source_name);
 /// named, at least one triangle, material indices in range, numbers finite, triangles not
 /// degenerate, fixed triangles at rest. Changes nothing (clockwise triangles are accepted).
 void validate_scene(const Scene& scene);
+
+/// How messages name the scene: the file it came from, or "scene built in code".
+std::string scene_label(const Scene& scene);
+
+/// Settings a command line gives instead of the scene's: each replaces the [simulation]
+/// or [output] key of the same name. Applied by apply_overrides alone, so that the scene
+/// it returns is the one description of the run that everything after reads.
+struct SceneOverrides {
+  std::optional<std::string> out_dir;       ///< [output] dir
+  std::optional<Backend> backend;           ///< [simulation] backend
+  std::optional<std::int64_t> steps;        ///< [simulation] steps
+  std::optional<Method> method;             ///< [simulation] method
+  std::optional<ContactTest> contact_test;  ///< [simulation] contact_test
+  std::optional<bool> bbox_prefilter;       ///< [simulation] bbox_prefilter
+};
+
+/// The scene with the overrides in place, its settings checked again as validate_scene
+/// checks them (a method from the command line must fit the scene's contact test).
+/// Throws SceneError naming the scene and the setting.
+Scene apply_overrides(Scene scene, const SceneOverrides& overrides);
 
 }  // namespace tridem

@@ -1,6 +1,8 @@
 #pragma once
-// How the enumerated settings are spelt, in scene files, on the command line and in a
-// solver's description: one table each, so that a name means the same thing everywhere.
+// How the enumerated settings are spelt, in scene files, on the command line, in messages
+// and in a solver's description: one table each, so that a name means the same thing
+// everywhere. Nothing else spells an enumerator: code that prints or reads one uses these.
+#include "tridem/render.hpp"
 #include "tridem/scene.hpp"
 
 #include <array>
@@ -19,6 +21,9 @@ inline constexpr Spellings<Backend, 4> kBackendNames{{{"auto", Backend::Auto},
                                                    {"openmp", Backend::OpenMP},
                                                    {"cuda", Backend::Cuda}}};
 
+inline constexpr Spellings<Precision, 2> kPrecisionNames{
+    {{"double", Precision::Double}, {"float", Precision::Float}}};
+
 inline constexpr Spellings<Method, 4> kMethodNames{{{"grid", Method::Grid},
                                                  {"all-pairs", Method::AllPairs},
                                                  {"single-domain", Method::SingleDomain},
@@ -29,6 +34,16 @@ inline constexpr Spellings<ContactTest, 2> kContactTestNames{
 
 inline constexpr Spellings<DecompositionLayout, 2> kLayoutNames{
     {{"1d", DecompositionLayout::Strips}, {"2d", DecompositionLayout::Grid}}};
+
+inline constexpr Spellings<Encoding, 2> kEncodingNames{
+    {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}}};
+
+inline constexpr Spellings<Motion, 3> kMotionNames{
+    {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};
+
+/// tridem render --color.
+inline constexpr Spellings<RenderOptions::ColorBy, 2> kColorByNames{
+    {{"speed", RenderOptions::ColorBy::Speed}, {"material", RenderOptions::ColorBy::Material}}};
 
 /// The spelling of `value` in `table` (every enumerator has one).
 template <class Table, class E>
@@ -57,8 +72,15 @@ std::string spellings_of(const Table& table) {
 }
 
 inline std::string_view backend_name(Backend b) { return name_in(kBackendNames, b); }
+inline std::string_view precision_name(Precision p) { return name_in(kPrecisionNames, p); }
 inline std::string_view method_name(Method m) { return name_in(kMethodNames, m); }
 inline std::string_view contact_test_name(ContactTest t) { return name_in(kContactTestNames, t); }
+
+/// The precision as a solver describes itself: float is the mixed mode, double state and
+/// float pairs (docs/model.md, "Precision").
+inline std::string precision_description(Precision p) {
+  return std::string(precision_name(p)) + (p == Precision::Float ? " (double state)" : "");
+}
 
 /// The method with the settings that matter to it, for descriptions: "grid", or
 /// "single-domain (contact test exact, bbox pre-filter on)".

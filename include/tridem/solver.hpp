@@ -45,11 +45,16 @@ struct StageTimes {
   double total() const;
 };
 
+/// How to run a scene on this machine: what the scene cannot say because it depends on
+/// the machine, not on the simulation. Backend, precision, method and every other setting
+/// come from the Scene alone (after the command line's overrides: apply_overrides).
 struct SolverConfig {
-  Backend backend = Backend::Auto;
-  Precision precision = Precision::Double;
-  Method method = Method::Grid;
-  int threads = 0;  ///< OpenMP threads; 0 = the runtime's default
+  /// OpenMP threads of the openmp backend; 0 = the runtime's default. Applied to the
+  /// solver's own parallel regions only: the caller's OpenMP settings are left as they were.
+  int threads = 0;
+  /// The GPU of the cuda backend, an index below cuda_device_count() (0 = the first, as
+  /// CUDA numbers them, after CUDA_VISIBLE_DEVICES); other backends refuse anything else.
+  int device = 0;
   bool force = false;  ///< run even with dt above dt_crit
 };
 
@@ -89,8 +94,9 @@ class Solver {
   virtual std::string statistics() const { return {}; }
 };
 
-/// The backend named by the config (Auto picks the fastest available and says so in
-/// description()). Throws SceneError / RunError for a scene that cannot run.
+/// A solver of the scene on the backend, precision and method of its [simulation] (Auto
+/// picks the fastest available and says so in description()). Throws SceneError /
+/// RunError for a scene that cannot run.
 std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& config);
 
 /// The concrete backend Auto resolves to on this machine.

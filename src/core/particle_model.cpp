@@ -1,33 +1,19 @@
 #include "core/particle_model.hpp"
 
-#include "physics/geometry.hpp"
+#include "io/scene/triangle_shape.hpp"
 #include "physics/contact_laws.hpp"
+#include "physics/geometry.hpp"
 #include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
 
 namespace tridem {
 
-namespace {
-
-void check_triangle(const Scene& scene, std::size_t id, const TriangleSpec& t) {
-  auto fail = [&](const std::string& why) {
-    throw SceneError(fmt::format("{}: particle id {}: {}", scene.source, id, why));
-  };
-  if (t.material < 0 || t.material >= static_cast<int>(scene.materials.size()))
-    fail(fmt::format("material index {} does not exist", t.material));
-  for (const auto& v : t.vertices)
-    if (!std::isfinite(v.x) || !std::isfinite(v.y)) fail("vertex is not a finite number");
-  if (!std::isfinite(t.velocity.x) || !std::isfinite(t.velocity.y) ||
-      !std::isfinite(t.angular_velocity))
-    fail("velocity is not a finite number");
-}
-
-}  // namespace
-
 ParticleModel build_particle_model(const Scene& scene) {
-  if (scene.triangles.empty()) throw SceneError(scene.source + ": the scene has no triangle");
+  if (scene.triangles.empty())
+    throw SceneError(scene_label(scene) + ": the scene has no triangles");
   ParticleModel m;
   const std::size_t n = scene.triangles.size();
   m.offsets.resize(n);
@@ -43,7 +29,9 @@ ParticleModel build_particle_model(const Scene& scene) {
   m.angular_velocity.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TriangleSpec& spec = scene.triangles[i];
-    check_triangle(scene, i, spec);
+    // The scene reader's rules: a scene built in code may not have been through it.
+    if (auto problem = scene_detail::triangle_problem(spec, scene.materials.size()))
+      throw SceneError(fmt::format("{}: particle id {}: {}", scene_label(scene), i, *problem));
     physics::Triangle<double> t{{spec.vertices[0], spec.vertices[1], spec.vertices[2]}};
     double area = physics::signed_area(t);
     if (area < 0) {  // clockwise input: reorder
@@ -51,10 +39,6 @@ ParticleModel build_particle_model(const Scene& scene) {
       area = -area;
     }
     const double edge = physics::longest_edge(t);
-    if (physics::is_degenerate(area, edge * edge))
-      throw SceneError(fmt::format(
-          "{}: particle id {}: triangle is degenerate (area {:g} <= {:g}*L^2, L = {:g})",
-          scene.source, i, area, physics::kDegenerateAreaFactor, edge));
     const Vec2d c = physics::centroid(t);
     double sum_r2 = 0;
     for (int k = 0; k < 3; ++k) {

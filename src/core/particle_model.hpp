@@ -34,7 +34,8 @@ inline constexpr std::size_t kParticleModelBytes =
 bool walls_move(const ParticleModel& model);
 
 /// Builds the model; throws SceneError for a scene without triangles, and one naming the
-/// particle for a degenerate triangle, a non-finite value or a bad material index.
+/// particle for a triangle validate_scene refuses (scene_detail::triangle_problem: a
+/// degenerate shape, a non-finite value, a bad material index, a fixed one that moves).
 ParticleModel build_particle_model(const Scene& scene);
 
 /// The material's coefficient of restitution: `restitution`, or the one its legacy damping

@@ -34,10 +34,10 @@ std::optional<ResumePoint> restore(Solver& solver, const Scene& scene,
 }
 
 void print_start(std::FILE* log, const Solver& solver, const TimeStep& ts, std::size_t free,
-                 const SolverConfig& config, std::int64_t last) {
+                 Backend requested, std::int64_t last) {
   fmt::print(log, "tridem {}: {} triangle{} ({} free), solver {}{}\n", TRIDEM_VERSION,
              solver.size(), solver.size() == 1 ? "" : "s", free, solver.description(),
-             config.backend == Backend::Auto ? " (picked by backend = auto)" : "");
+             requested == Backend::Auto ? " (picked by backend = auto)" : "");
   fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
              solver.dt(), solver.dt() / ts.critical, ts.critical,
              ts.automatic ? ", automatic" : "", last, static_cast<double>(last) * solver.dt());
@@ -63,22 +63,14 @@ void print_relaxation(std::FILE* log, const RelaxReport& r) {
 
 RunSummary run_scene(const Scene& input, const RunOptions& options) {
   Scene scene = input;
-  if (options.out_dir) scene.output.dir = *options.out_dir;
-  if (options.backend) scene.simulation.backend = *options.backend;
-  if (options.steps) scene.simulation.steps = *options.steps;
-  if (options.method) scene.simulation.method = *options.method;
-  if (options.contact_test) scene.simulation.contact_test = *options.contact_test;
-  if (options.bbox_prefilter) scene.simulation.bbox_prefilter = *options.bbox_prefilter;
   // Before anything is derived from the positions (a restart relaxes the same way, so its
   // scene fingerprint matches).
   std::optional<RelaxReport> relaxed;
   if (scene.simulation.relax_overlaps) relaxed = relax_initial_overlaps(scene);
 
   SolverConfig config;
-  config.backend = scene.simulation.backend;
-  config.precision = scene.simulation.precision;
-  config.method = scene.simulation.method;
   config.threads = options.threads;
+  config.device = options.device;
   config.force = options.force;
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
@@ -86,15 +78,15 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   const auto free = static_cast<std::size_t>(
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));
   // What the checkpoints of this run record, and what a restart must match.
-  const CheckpointMeta meta{config.precision, scene_fingerprint(scene),
-                           physics_settings(scene, ts.chosen)};
+  const CheckpointMeta meta{scene.simulation.precision, scene_fingerprint(scene),
+                            physics_settings(scene, ts.chosen)};
   const std::optional<ResumePoint> resume = restore(*solver, scene, meta, options);
 
   const std::int64_t last = scene.simulation.steps;
   const std::int64_t first = solver->step();
   std::FILE* log = options.log;
   if (log) {
-    print_start(log, *solver, ts, free, config, last);
+    print_start(log, *solver, ts, free, scene.simulation.backend, last);
     if (relaxed) print_relaxation(log, *relaxed);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,

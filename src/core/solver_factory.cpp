@@ -3,6 +3,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 
@@ -36,13 +37,37 @@ std::unique_ptr<Solver> make_for_real(const Scene& scene, const ParticleModel& m
   throw RunError("internal error: unresolved backend");
 }
 
-/// The method settings again, with the config's method (a command line may have replaced
-/// the scene's): a scene built in code has not been through the reader.
-void check_method(const Scene& scene, Method method) {
-  const std::string source = scene.source.empty() ? "scene built in code" : scene.source;
+/// The method settings again: a scene built in code has not been through the reader.
+void check_method(const Scene& scene) {
   const SimulationSettings& s = scene.simulation;
-  if (auto why = method_settings_conflict(method, s.contact_test, s.bbox_prefilter))
-    throw SceneError(source + ": [simulation] " + *why);
+  if (auto why = method_settings_conflict(s.method, s.contact_test, s.bbox_prefilter))
+    throw SceneError(scene_label(scene) + ": [simulation] " + *why);
+}
+
+/// The GPU the caller chose, refused with the way out where it is not one of this machine.
+void check_device(int device, Backend backend, Backend requested) {
+  if (backend != Backend::Cuda) {
+    if (device != 0)
+      throw RunError(fmt::format(
+          "--device {} picks a GPU, but the backend is {}{}, which runs on the CPU: give "
+          "--backend {}, or leave --device out",
+          device, backend_name(backend),
+          requested == Backend::Auto ? " (picked by backend = auto)" : "",
+          backend_name(Backend::Cuda)));
+    return;
+  }
+  if (std::string why; !cuda_available(&why))
+    throw RunError(fmt::format("backend '{}' is not available: {}; use backend = \"{}\", "
+                               "\"{}\" or \"{}\"",
+                               backend_name(backend), why, backend_name(Backend::Cpu),
+                               backend_name(Backend::OpenMP), backend_name(Backend::Auto)));
+  const int count = cuda_device_count();
+  if (device < 0 || device >= count)
+    throw RunError(fmt::format(
+        "--device {} is not a GPU of this machine, which has {} usable GPU{} ({}): give one "
+        "of those, or leave --device out for device 0",
+        device, count, count == 1 ? "" : "s",
+        count == 1 ? std::string("device 0") : fmt::format("devices 0 to {}", count - 1)));
 }
 
 }  // namespace
@@ -54,16 +79,19 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& conf
 
 std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& model,
                                     const TimeStep& ts, const SolverConfig& config) {
-  check_method(scene, config.method);
+  check_method(scene);
   check_time_step(scene, ts, config.force);
-  const Backend backend = resolve_backend(config.backend);
+  const Backend requested = scene.simulation.backend;
+  const Backend backend = resolve_backend(requested);
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(
         "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "
-        "them: give --backend openmp, or leave --threads out",
+        "them: give --backend {}, or leave --threads out",
         config.threads, backend_name(backend),
-        config.backend == Backend::Auto ? " (picked by backend = auto)" : ""));
-  if (config.precision == Precision::Float)
+        requested == Backend::Auto ? " (picked by backend = auto)" : "",
+        backend_name(Backend::OpenMP)));
+  check_device(config.device, backend, requested);
+  if (scene.simulation.precision == Precision::Float)
     return make_for_real<float>(scene, model, ts, config, backend);
   return make_for_real<double>(scene, model, ts, config, backend);
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
+#include <utility>
 
 namespace tridem {
 
@@ -26,7 +27,7 @@ TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, Checkpoin
     : solver_(solver),
       out_(out),
       scene_(scene),
-      meta_(meta),
+      meta_(std::move(meta)),
       interrupt_(interrupt),
       files_(scene.output.dir),
       bar_(scene.simulation.steps, progress && is_terminal(stderr)),

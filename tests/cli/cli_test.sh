@@ -121,9 +121,17 @@ expect_ok "$tridem" run forced.toml --quiet --force --out forced_out
 if nvidia-smi -L >/dev/null 2>&1; then
   expect_ok "$tridem" run pile.toml --backend cuda --quiet --out cuda_out
   grep -q "solver cuda" out.txt || fail "--backend cuda did not report the cuda solver"
+  # The GPU is the caller's choice: the last one listed works, one past it is refused.
+  gpus=$(nvidia-smi -L | grep -c '^GPU')
+  expect_ok "$tridem" run pile.toml --backend cuda --device $((gpus - 1)) --quiet --out device_out
+  expect_error "--device $gpus is not a GPU of this machine" \
+    "$tridem" run pile.toml --backend cuda --device "$gpus" --quiet --out device_out
 else
   expect_error "not available" "$tridem" run pile.toml --backend cuda
+  expect_error "not available" "$tridem" run pile.toml --backend cuda --device 1
 fi
+expect_error "backend is cpu" "$tridem" run pile.toml --quiet --steps 5 --backend cpu --device 1 --out device_out
+expect_error "at least 0, got '-1'" "$tridem" run pile.toml --device -1
 expect_error "no scene file 'does_not_exist.toml'" "$tridem" run does_not_exist.toml
 expect_error "no-such-option" "$tridem" run pile.toml --no-such-option
 expect_error "subcommand" "$tridem" bogus

@@ -7,6 +7,7 @@
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -24,6 +25,26 @@ TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
   }
   omp_set_num_threads(saved);
   EXPECT_GT(serial.contacts.size(), 30u) << "the pile must be in contact at the last step";
+}
+
+// --threads is the solver's own: a program that makes a solver with N threads keeps its
+// own OpenMP setting (it was once set globally from the constructor).
+TEST(CpuParity, SolverThreadsLeaveTheCallersSettingAlone) {
+  const int before = omp_get_max_threads();
+  const int threads = before + 1;
+  Scene s = test::jostling_pile(10, 6);
+  s.simulation.backend = Backend::OpenMP;
+  SolverConfig config;
+  config.threads = threads;
+  auto solver = make_solver(s, config);
+  EXPECT_EQ(omp_get_max_threads(), before) << "after construction";
+  solver->advance(50);
+  EXPECT_EQ(omp_get_max_threads(), before) << "after advance";
+  EXPECT_NE(solver->description().find(fmt::format("({} threads)", threads)), std::string::npos)
+      << solver->description();
+  Snapshot parallel;
+  solver->snapshot(parallel, true);
+  test::expect_identical(test::run_to(s, Backend::Cpu, 50), parallel);
 }
 
 TEST(CpuParity, SerialRunIsDeterministic) {

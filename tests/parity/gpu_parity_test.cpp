@@ -101,8 +101,8 @@ TEST(GpuParity, BlowUpKeepsTheLastGoodState) {
   s.simulation.dt = 1e-2;
   s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
   s.triangles.push_back(test::triangle({0.2, 0.2}, {1.2, 0.2}, {0.2, 1.2}));
+  s.simulation.backend = Backend::Cuda;
   SolverConfig config;
-  config.backend = Backend::Cuda;
   config.force = true;
   auto solver = make_solver(s, config);
   Snapshot before;

@@ -2,6 +2,7 @@
 // and loaded into a fresh solver ends at step N exactly where an uninterrupted run does,
 // on each backend and precision. The pile has friction, so the contact history must
 // survive the round trip: RestartWithoutHistoryDiverges shows that it matters here.
+#include "support/backend_test.hpp"
 #include "support/gpu.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
@@ -17,11 +18,7 @@ constexpr std::int64_t kSteps = 400;
 
 std::unique_ptr<Solver> solver_for(const Scene& s, Backend backend, Precision precision,
                                    Method method = Method::Grid) {
-  SolverConfig config;
-  config.backend = backend;
-  config.precision = precision;
-  config.method = method;
-  return make_solver(s, config);
+  return test::solver_for(s, test::SolverChoice(backend, method, precision));
 }
 
 /// The state after kSteps/2, through the checkpoint encoding and back.

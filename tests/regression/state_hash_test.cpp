@@ -20,7 +20,6 @@
 #include "tridem/standard_scenes.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <ostream>
 
 namespace tridem {
@@ -107,12 +106,11 @@ class StateHash : public ::testing::TestWithParam<HashRun> {
 
 TEST_P(StateHash, MatchesTheRecordedConstant) {
   const HashRun& r = GetParam();
-  SolverConfig config = test::SolverChoice(r.backend, r.c->method, r.c->precision).config();
+  SolverConfig config;
   if (r.backend == Backend::OpenMP) config.threads = 3;  // not the machine's count: any gives it
-  const int saved_threads = omp_get_max_threads();
-  auto solver = make_solver(hash_scene(*r.c), config);
+  auto solver = test::solver_for(
+      hash_scene(*r.c), test::SolverChoice(r.backend, r.c->method, r.c->precision), config);
   solver->advance(kSteps);
-  omp_set_num_threads(saved_threads);
 
   // The run must exercise what the hash is meant to pin.
   SolverState state;

@@ -24,20 +24,13 @@
 #include "tridem/solver.hpp"
 
 #include <gtest/gtest.h>
+#include <memory>
 #include <ostream>
 
 namespace tridem {
 
 /// How GoogleTest prints a Backend (found by argument-dependent lookup).
-inline void PrintTo(Backend backend, std::ostream* os) {
-  switch (backend) {
-    case Backend::Auto: *os << "auto"; return;
-    case Backend::Cpu: *os << "cpu"; return;
-    case Backend::OpenMP: *os << "openmp"; return;
-    case Backend::Cuda: *os << "cuda"; return;
-  }
-  *os << "backend" << static_cast<int>(backend);
-}
+inline void PrintTo(Backend backend, std::ostream* os) { *os << backend_name(backend); }
 
 }  // namespace tridem
 
@@ -52,14 +45,21 @@ struct SolverChoice {
   SolverChoice(Backend b, Method m = Method::Grid, Precision p = Precision::Double)  // NOLINT
       : backend(b), method(m), precision(p) {}
 
-  SolverConfig config() const {
-    SolverConfig c;
-    c.backend = backend;
-    c.method = method;
-    c.precision = precision;
-    return c;
+  /// The scene set to run on this choice: backend, method and precision are settings of
+  /// the scene, its one description of the run.
+  Scene applied_to(Scene s) const {
+    s.simulation.backend = backend;
+    s.simulation.method = method;
+    s.simulation.precision = precision;
+    return s;
   }
 };
+
+/// A solver of the scene on the choice.
+inline std::unique_ptr<Solver> solver_for(const Scene& s, const SolverChoice& choice,
+                                          const SolverConfig& config = {}) {
+  return make_solver(choice.applied_to(s), config);
+}
 
 /// "cuda", "cpu-single-domain" for another method than the grid, "cpu-float" or
 /// "cuda-decomposition-float" in float (the CTest name's tail).

@@ -88,11 +88,11 @@ inline std::unique_ptr<Solver> advanced_solver(const Scene& scene, Backend backe
                                                std::int64_t steps,
                                                Precision precision = Precision::Double,
                                                Method method = Method::Grid) {
-  SolverConfig config;
-  config.backend = backend;
-  config.precision = precision;
-  config.method = method;
-  auto solver = make_solver(scene, config);
+  Scene s = scene;
+  s.simulation.backend = backend;
+  s.simulation.precision = precision;
+  s.simulation.method = method;
+  auto solver = make_solver(s, SolverConfig{});
   solver->advance(steps);
   return solver;
 }

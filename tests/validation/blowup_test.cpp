@@ -19,10 +19,9 @@ Scene deep_overlap() {
   return s;
 }
 
-std::string blow_up_message(const Scene& s, Backend backend) {
-  SolverConfig config;
-  config.backend = backend;
-  auto solver = make_solver(s, config);
+std::string blow_up_message(Scene s, Backend backend) {
+  s.simulation.backend = backend;
+  auto solver = make_solver(s, SolverConfig{});
   try {
     solver->advance(1);
   } catch (const RunError& e) {

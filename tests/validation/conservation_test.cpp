@@ -43,8 +43,7 @@ Scene colliding_cloud(int side) {
 
 TEST_P(Conservation, CollidingCloudConservesMomentum) {
   const Scene s = colliding_cloud(12);
-  SolverConfig config = GetParam().config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, GetParam());
   Snapshot snap;
   solver->snapshot(snap, false);
   const EnergyRow before = compute_energy(snap);

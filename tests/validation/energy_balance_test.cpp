@@ -40,9 +40,9 @@ Balance measure(const Scene& s, const test::SolverChoice& choice, std::int64_t s
   Scene scene = s;
   if (choice.method == Method::Decomposition)
     scene = test::with_decomposition(scene, DecompositionLayout::Strips, 40);
-  SolverConfig config = choice.config();
-  config.precision = precision;
-  auto solver = make_solver(scene, config);
+  test::SolverChoice on = choice;
+  on.precision = precision;
+  auto solver = test::solver_for(scene, on);
   Snapshot snap;
   Balance b;
   solver->snapshot(snap, false);
@@ -114,7 +114,7 @@ TEST(EnergyBudget, DriftHalvesWithTheStep) {
   auto drift = [](double safety) {
     Scene s = settling_pile();
     s.simulation.safety = safety;
-    auto solver = make_solver(s, SolverConfig{Backend::Cpu});
+    auto solver = test::solver_for(s, Backend::Cpu);
     Snapshot snap;
     solver->snapshot(snap, false);
     const double start = compute_energy(snap, s.simulation.gravity, solver->energy()).total();

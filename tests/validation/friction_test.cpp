@@ -30,7 +30,7 @@ double vertex_drop_rebound(double mu, const test::SolverChoice& choice) {
   const double side = 0.2, h = side * std::sqrt(3.0) / 2;
   s.triangles.push_back(
       test::triangle({0, 1e-4}, {side / 2, 1e-4 + h}, {-side / 2, 1e-4 + h}, {0, -1}));
-  auto solver = make_solver(s, choice.config());
+  auto solver = test::solver_for(s, choice);
   solver->advance(static_cast<std::int64_t>(0.02 / solver->dt()));
   Snapshot snap;
   solver->snapshot(snap, false);
@@ -108,7 +108,7 @@ TEST_P(Friction, EquilateralGrainHoldsOnASlopeFlatterThanAtanMu) {
   const double side = 0.1;
   s.triangles.push_back(test::triangle({-side / 2, 0}, {side / 2, 0},
                                        {0, side * std::sqrt(3.0) / 2}));
-  auto solver = make_solver(s, GetParam().config());
+  auto solver = test::solver_for(s, GetParam());
   Snapshot snap;
   solver->advance(static_cast<std::int64_t>(0.1 / solver->dt()));
   solver->snapshot(snap, false);

@@ -20,8 +20,7 @@ double restitution(double damping, double dt, const test::SolverChoice& choice) 
   const double gap = 0.005;
   s.triangles.push_back(test::triangle({-gap, -0.5}, {-gap, 0.5}, {-1 - gap, 0}, {1, 0}));
   s.triangles.push_back(test::triangle({gap, 0.5}, {gap, -0.5}, {1 + gap, 0}, {-1, 0}));
-  SolverConfig config = choice.config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, choice);
   Snapshot snap;
   // Contact lasts about π/ω with ω = √(6p/m_eff) ≈ 1.5e3 /s: 2 ms; run well past it.
   const auto steps = static_cast<std::int64_t>(0.03 / solver->dt());

@@ -24,8 +24,7 @@ Slide slide(double mu, const test::SolverChoice& choice) {
   s.triangles.push_back(test::floor_triangle(-5, 5));
   // A flat block lying on its long edge, just touching the floor.
   s.triangles.push_back(test::triangle({-0.1, 0}, {0.1, 0}, {0, 0.05}));
-  SolverConfig config = choice.config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, choice);
   Snapshot snap;
   // Let the normal contact settle, then measure v over a fixed window.
   const auto settle = static_cast<std::int64_t>(0.1 / solver->dt());

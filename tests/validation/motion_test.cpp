@@ -17,8 +17,7 @@ TEST_P(MotionTest, FreeFallAndSpinFollowTheAnalyticSolution) {
   s.simulation.gravity = {0.5, -9.81};
   s.simulation.dt = 1e-5;
   s.triangles.push_back(test::triangle({0, 0}, {0.1, 0}, {0, 0.1}, {1.0, 2.0}, Motion::Free, 3.0));
-  SolverConfig config = GetParam().config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, GetParam());
   Snapshot start, end;
   solver->snapshot(start, false);
   const std::int64_t steps = 50000;
@@ -42,8 +41,7 @@ TEST_P(MotionTest, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
   s.triangles.push_back(test::triangle({0.05, -0.05}, {0.15, 0.0}, {0.05, 0.05}));
   s.triangles.push_back(test::triangle({5, 5}, {5.1, 5}, {5, 5.1}, {0, 0}, Motion::Prescribed,
                                        2.0));
-  SolverConfig config = GetParam().config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, GetParam());
   Snapshot start, end;
   solver->snapshot(start, false);
   solver->advance(static_cast<std::int64_t>(0.4 / solver->dt()));

@@ -21,7 +21,7 @@ TEST_P(PrecisionTest, SlowTriangleFarFromOriginMovesTheRightDistance) {
   s.simulation.dt = 1e-6;
   s.triangles.push_back(test::triangle({0.95, 0.0}, {1.05, 0.0}, {1.0, 0.09}, {0.05, -0.03},
                                        Motion::Free, 0.05));
-  auto solver = make_solver(s, GetParam().config());
+  auto solver = test::solver_for(s, GetParam());
   Snapshot start, end;
   solver->snapshot(start, false);
   const std::int64_t steps = 20000;
@@ -55,7 +55,7 @@ TEST_P(PrecisionTest, RestingContactFarFromOriginSettles) {
     for (TriangleSpec* t : {&floor, &grain})
       for (Vec2d& v : t->vertices) v += far;
     s.triangles = {floor, grain};
-    auto solver = make_solver(s, GetParam().config());
+    auto solver = test::solver_for(s, GetParam());
     solver->advance(static_cast<std::int64_t>(1.0 / solver->dt()));
     Snapshot snap;
     solver->snapshot(snap, true);

@@ -2,6 +2,7 @@
 // positions only, so the run starts with no energy it did not have. Without it, a grain
 // placed 4 mm into a floor is shot off (the bug of issue 10, item 6).
 #include "core/initial_overlaps.hpp"
+#include "support/backend_test.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/output.hpp"
 #include "tridem/run.hpp"
@@ -31,7 +32,7 @@ double total_energy(Solver& solver, const Scene& s) {
 }
 
 double highest_kinetic(const Scene& s, int steps) {
-  auto solver = make_solver(s, SolverConfig{Backend::Cpu});
+  auto solver = test::solver_for(s, Backend::Cpu);
   Snapshot snap;
   double most = 0;
   for (int k = 0; k < steps; ++k) {
@@ -68,7 +69,7 @@ TEST(RelaxOverlaps, GrainIntoTheFloorIsPushedOutByPositionsOnly) {
 TEST(RelaxOverlaps, RelaxedGrainStartsWithNoEnergyGain) {
   Scene relaxed = grain_in_floor(0.004);
   relax_initial_overlaps(relaxed);
-  auto solver = make_solver(relaxed, SolverConfig{Backend::Cpu});
+  auto solver = test::solver_for(relaxed, Backend::Cpu);
   const double e0 = total_energy(*solver, relaxed);
   solver->advance(1);
   const double e1 = total_energy(*solver, relaxed);

@@ -19,8 +19,7 @@ TEST_P(Resting, TriangleComesToRestOnFixedFloor) {
   // Base 0.2 on the floor side, height 0.1, dropped from 5 cm with a small spin.
   s.triangles.push_back(test::triangle({-0.1, 0.05}, {0.1, 0.05}, {0, 0.15}, {0, 0},
                                        Motion::Free, 0.5));
-  SolverConfig config = GetParam().config();
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, GetParam());
   solver->advance(static_cast<std::int64_t>(1.0 / solver->dt()));
   Snapshot snap;
   solver->snapshot(snap, true);

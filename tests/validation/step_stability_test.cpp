@@ -34,9 +34,9 @@ struct Outcome {
 
 Outcome run(const Scene& s, const test::SolverChoice& choice, std::int64_t steps,
             bool force = false) {
-  SolverConfig config = choice.config();
+  SolverConfig config;
   config.force = force;
-  auto solver = make_solver(s, config);
+  auto solver = test::solver_for(s, choice, config);
   Outcome out;
   Snapshot snap;
   const std::int64_t chunk = 250;
@@ -78,7 +78,7 @@ void check_packing(Scene s, const test::SolverChoice& choice) {
   s.simulation.dt = dt_crit;
   expect_stable(run(s, choice, 20000), "dt = dt_crit");
   s.simulation.dt = 2 * dt_crit;
-  EXPECT_THROW(make_solver(s, choice.config()), RunError) << "twice dt_crit must be refused";
+  EXPECT_THROW(test::solver_for(s, choice), RunError) << "twice dt_crit must be refused";
   expect_unstable(run(s, choice, 20000, true), "dt = 2 dt_crit (forced)");
 }
 
@@ -108,8 +108,7 @@ TEST_P(StepStability, GrainRestsOnThinFloorsWithTheAutomaticStep) {
       Scene s = grain_on_thin_floor(thickness);
       s.simulation.safety = safety;
       SCOPED_TRACE(testing::Message() << thickness << " m thick floor, safety " << safety);
-      SolverConfig config = GetParam().config();
-      auto solver = make_solver(s, config);
+      auto solver = test::solver_for(s, GetParam());
       ASSERT_NO_THROW(solver->advance(20000));
       Snapshot snap;
       solver->snapshot(snap, false);

@@ -4,6 +4,7 @@
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
 #include "core/memory_estimate.hpp"
+#include "core/omp_threads.hpp"
 #include "core/particle_columns.hpp"
 #include "core/runaway_message.hpp"
 #include "core/snapshot_fill.hpp"
@@ -25,7 +26,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                            const SolverConfig& config, bool parallel)
     : n_(model.size()),
       parallel_(parallel),
-      method_(config.method),
+      threads_(parallel ? config.threads : 0),
+      method_(scene.simulation.method),
       dt_(ts.chosen),
       gravity_(scene.simulation.gravity),
       local_damping_(scene.simulation.local_damping),
@@ -35,7 +37,6 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
       finder_(model.longest_edge, model.motion),
       filter_{scene.simulation.contact_test, scene.simulation.bbox_prefilter},
       single_domain_(model.longest_edge, model.motion, filter_) {
-  if (parallel_ && config.threads > 0) omp_set_num_threads(config.threads);
   if (method_ == Method::Decomposition)
     decomposed_.emplace(scene.simulation.decomposition, model.longest_edge, model.motion,
                         filter_);
@@ -59,12 +60,13 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
 
 template <class Real>
 std::string CpuSolver<Real>::description() const {
-  // float is the mixed mode: double state, float pairs (docs/model.md, "Precision").
-  const char* real = sizeof(Real) == 8 ? "double" : "float (double state)";
+  const std::string real =
+      precision_description(sizeof(Real) == 8 ? Precision::Double : Precision::Float);
   const std::string method = method_description(method_, filter_.test, filter_.bbox_prefilter);
   if (parallel_)
-    return fmt::format("openmp ({} threads), {}, {}", omp_get_max_threads(), real, method);
-  return fmt::format("cpu (serial), {}, {}", real, method);
+    return fmt::format("{} ({} threads), {}, {}", backend_name(Backend::OpenMP),
+                       threads_ > 0 ? threads_ : omp_get_max_threads(), real, method);
+  return fmt::format("{} (serial), {}, {}", backend_name(Backend::Cpu), real, method);
 }
 
 template <class Real>
@@ -74,6 +76,7 @@ std::string CpuSolver<Real>::statistics() const {
 
 template <class Real>
 void CpuSolver<Real>::advance(std::int64_t steps) {
+  const ScopedOmpThreads threads(threads_);
   for (std::int64_t s = 0; s < steps; ++s) {
     run_step(*this, kPipeline, stopwatch_);
     std::swap(pairs_, old_pairs_);

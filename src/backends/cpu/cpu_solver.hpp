@@ -70,6 +70,7 @@ class CpuSolver final : public Solver {
 
   std::size_t n_;
   bool parallel_;
+  int threads_;  ///< OpenMP threads while advancing; 0 = the runtime's default
   Method method_;
   // Mixed precision (docs/model.md, "Precision"): the state and its integration are
   // double in every precision; Real is what pairs and their forces are computed in.

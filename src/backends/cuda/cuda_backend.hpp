@@ -16,12 +16,17 @@ namespace tridem {
 /// false, with the reason (no nvcc at build time, no device, driver too old...).
 bool cuda_available(std::string* reason = nullptr);
 
-/// The GPU the CUDA backend uses, e.g. "NVIDIA H100 80GB HBM3 (sm_90, 132 SMs, 79 GiB)";
-/// empty when none is usable.
-std::string cuda_device_description();
+/// How many GPUs the CUDA backend can choose from (SolverConfig::device is an index below
+/// it); 0 when none is usable or the build has no CUDA.
+int cuda_device_count();
+
+/// GPU `device`, e.g. "NVIDIA H100 80GB HBM3 (sm_90, 132 SMs, 79 GiB)"; empty when there is
+/// no such usable device.
+std::string cuda_device_description(int device = 0);
 
 /// The solver running the whole time loop on the GPU. Throws RunError when no GPU is
-/// usable or the scene does not fit in its memory.
+/// usable or the scene does not fit in its memory (make_solver first refuses a build or
+/// machine without one, with the way out).
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config);
 

@@ -14,12 +14,13 @@ bool cuda_available(std::string* reason) {
   return false;
 }
 
-std::string cuda_device_description() { return {}; }
+int cuda_device_count() { return 0; }
+
+std::string cuda_device_description(int) { return {}; }
 
 std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, const TimeStep&,
                                          const SolverConfig&) {
-  throw RunError(std::string("backend 'cuda' is not available: ") + kAbsent +
-                 "; use backend = \"cpu\", \"openmp\" or \"auto\"");
+  throw RunError(kAbsent);  // make_solver asks cuda_available() first, and says why
 }
 
 std::size_t cuda_solver_bytes(std::size_t, Precision) { return 0; }

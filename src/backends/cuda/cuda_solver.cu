@@ -51,27 +51,27 @@ std::string mib(std::size_t bytes) {
 template <class Real>
 CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
                              const SolverConfig& config)
-    : n_(model.size()), method_(config.method), host_model_(model) {
-  std::string reason;
-  if (!cuda_available(&reason))
-    throw RunError("backend 'cuda' is not available: " + reason +
-                   "; use backend = \"cpu\", \"openmp\" or \"auto\"");
+    : n_(model.size()), method_(scene.simulation.method), host_model_(model) {
   if (n_ > static_cast<std::size_t>(INT_MAX / 8))
     throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
                    " particles on one GPU");
+  // The caller's GPU (make_solver checked the index): every allocation, stream and kernel
+  // of this solver goes to the device current on this host thread from here on.
+  TRIDEM_CUDA_CHECK(cudaSetDevice(config.device));
   cudaDeviceProp prop{};
-  TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+  TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, config.device));
   device_name_ = prop.name;
   // Refuse before allocating anything: a scene that does not fit says so up front.
   const std::size_t reserve = reserved_pairs(n_);
-  const std::size_t need = gpu_solver_bytes(n_, reserve, config.precision);
+  const std::size_t need = gpu_solver_bytes(n_, reserve, scene.simulation.precision);
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
-    throw RunError("the scene needs about " + mib(need) + " of GPU memory for " +
-                   std::to_string(n_) + " particles, but the GPU (" + device_name_ + ") has " +
-                   mib(free_bytes) + " free of " + mib(total_bytes) +
-                   ": use precision = \"float\", fewer particles, or backend = \"openmp\"");
+    throw RunError(
+        "the scene needs about " + mib(need) + " of GPU memory for " + std::to_string(n_) +
+        " particles, but the GPU (" + device_name_ + ") has " + mib(free_bytes) + " free of " +
+        mib(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
+        "\", fewer particles, or backend = \"" + std::string(backend_name(Backend::OpenMP)) + "\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
   events_ = std::make_unique<StageEvents>(stream_);
 
@@ -305,8 +305,8 @@ template <class Real>
 std::string CudaSolver<Real>::description() const {
   char skin[64];
   std::snprintf(skin, sizeof skin, ", skin %g", static_cast<double>(margin_));
-  return "cuda (" + device_name_ + "), " +
-         (sizeof(Real) == 8 ? "double" : "float (double state)") + ", " +
+  return std::string(backend_name(Backend::Cuda)) + " (" + device_name_ + "), " +
+         precision_description(sizeof(Real) == 8 ? Precision::Double : Precision::Float) + ", " +
          method_description(method_, filter_.test, filter_.bbox_prefilter) +
          (pairs_->single_step() || decomposed_ ? std::string(", list rebuilt every step")
                                                : std::string(skin));
@@ -346,10 +346,16 @@ bool cuda_available(std::string* reason) {
   return true;
 }
 
-std::string cuda_device_description() {
-  if (!cuda_available()) return {};
+int cuda_device_count() {
+  int count = 0;
+  if (!cuda_available() || cudaGetDeviceCount(&count) != cudaSuccess) return 0;
+  return count;
+}
+
+std::string cuda_device_description(int device) {
+  if (device < 0 || device >= cuda_device_count()) return {};
   cudaDeviceProp prop{};
-  if (cudaGetDeviceProperties(&prop, 0) != cudaSuccess) return {};
+  if (cudaGetDeviceProperties(&prop, device) != cudaSuccess) return {};
   char text[256];
   std::snprintf(text, sizeof text, "%s (sm_%d%d, %d SMs, %.0f GiB)", prop.name, prop.major,
                 prop.minor, prop.multiProcessorCount,
@@ -359,7 +365,7 @@ std::string cuda_device_description() {
 
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config) {
-  if (config.precision == Precision::Float)
+  if (scene.simulation.precision == Precision::Float)
     return std::make_unique<cuda::CudaSolver<float>>(scene, model, ts, config);
   return std::make_unique<cuda::CudaSolver<double>>(scene, model, ts, config);
 }

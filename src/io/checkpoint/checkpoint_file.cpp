@@ -3,6 +3,7 @@
 #include "io/output/atomic_file.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -45,11 +46,10 @@ void check_checkpoint_fits(const Checkpoint& c, const std::filesystem::path& fil
                                "those the checkpoint was written for",
                                name, scene.source));
   if (c.meta.precision != precision) {
-    auto spelt = [](Precision p) { return p == Precision::Float ? "float" : "double"; };
     throw RunError(fmt::format("{}: checkpoint written by a {} solver; this run is {} (set "
                                "[simulation] precision = \"{}\" to continue it exactly)",
-                               name, spelt(c.meta.precision), spelt(precision),
-                               spelt(c.meta.precision)));
+                               name, precision_name(c.meta.precision), precision_name(precision),
+                               precision_name(c.meta.precision)));
   }
   check_physics_settings(c.meta.settings, run.settings, name);
 }

@@ -6,8 +6,6 @@
 
 namespace tridem {
 
-std::string contacts_file_stem(std::int64_t step) { return fmt::format("contacts_{:09}", step); }
-
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot& s) {
   io::check_contacts(s, file.string());
   io::OutFile out(file);

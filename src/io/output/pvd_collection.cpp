@@ -1,14 +1,13 @@
 #include "io/output/pvd_collection.hpp"
 
-#include "io/output/out_file.hpp"
-#include "tridem/error.hpp"
+#include "io/output/atomic_file.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
-#include <system_error>
 
 namespace tridem::io {
 
@@ -43,21 +42,16 @@ void PvdCollection::restore(double max_time) {
 }
 
 void PvdCollection::rewrite() const {
-  std::filesystem::path temporary = file_;
-  temporary += ".tmp";
-  OutFile out(temporary);
-  out.write("<?xml version=\"1.0\"?>\n"
-            "<VTKFile type=\"Collection\" version=\"0.1\">\n"
-            "  <Collection>\n");
+  fmt::memory_buffer text;
+  auto out = fmt::appender(text);
+  fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
+                      "<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                      "  <Collection>\n");
   for (const Entry& e : entries_)
-    out.print("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time,
-              e.file);
-  out.write("  </Collection>\n</VTKFile>\n");
-  out.close();
-  std::error_code ec;
-  std::filesystem::rename(temporary, file_, ec);
-  if (ec)
-    throw RunError(fmt::format("cannot replace '{}': {}", file_.string(), ec.message()));
+    fmt::format_to(out, "    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                   e.time, e.file);
+  fmt::format_to(out, "  </Collection>\n</VTKFile>\n");
+  write_file_atomically(file_, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 
 }  // namespace tridem::io

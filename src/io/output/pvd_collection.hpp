@@ -1,7 +1,7 @@
 #pragma once
 // A ParaView collection (.pvd) listing time steps. It is rewritten whole after every
-// frame, through a temporary file and a rename, so a reader (or a run that dies) never
-// sees it half written.
+// frame by write_file_atomically (atomic_file.hpp), so a reader, a run that dies or a
+// power cut never leaves it half written.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +20,8 @@ class PvdCollection {
   /// Lists `dataset` at `time` and rewrites the file. Adding the same data set again
   /// (a step written twice) updates its entry instead of duplicating it.
   void add(double time, const std::filesystem::path& dataset);
+
+  const std::filesystem::path& file() const { return file_; }
 
  private:
   struct Entry {

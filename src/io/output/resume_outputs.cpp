@@ -46,20 +46,4 @@ void trim_log(const fs::path& file, std::string_view header, std::int64_t step) 
   write_file_atomically(file, {reinterpret_cast<const std::uint8_t*>(kept.data()), kept.size()});
 }
 
-void remove_frames_after(const fs::path& dir, std::int64_t step) {
-  auto remove_later = [step](const fs::path& folder, std::string_view prefix) {
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec)) return;
-    for (const auto& entry : fs::directory_iterator(folder, ec)) {
-      const std::string name = entry.path().filename().string();
-      std::int64_t s = 0;
-      if (name.starts_with(prefix) &&
-          leading_step(std::string_view(name).substr(prefix.size()), '.', s) && s > step)
-        fs::remove(entry.path(), ec);
-    }
-  };
-  remove_later(dir / "frames", "frame_");
-  remove_later(dir / "contacts", "contacts_");
-}
-
 }  // namespace tridem::io

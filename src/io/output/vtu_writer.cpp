@@ -27,8 +27,6 @@ std::vector<double> interleave3(const std::vector<double>& a, const std::vector<
 
 }  // namespace
 
-std::string frame_file_name(std::int64_t step) { return fmt::format("frame_{:09}.vtu", step); }
-
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encoding encoding) {
   io::check_snapshot(s, file.string());
   const std::size_t n = s.size();

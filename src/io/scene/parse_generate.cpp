@@ -7,10 +7,16 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <string_view>
+#include <utility>
+
 namespace tridem::scene_detail {
 namespace {
 
 enum class Kind { Lattice, Random };
+constexpr std::array<std::pair<std::string_view, Kind>, 2> kKindNames{
+    {{"lattice", Kind::Lattice}, {"random", Kind::Random}}};
 
 struct Common {
   int material;
@@ -99,8 +105,7 @@ void parse_generate(const toml::table& table, const std::string& source, std::si
                     const std::vector<Material>& materials, std::vector<TriangleSpec>& out) {
   TableReader r(table, source,
                 fmt::format("[[generate]] #{} (particle ids from {})", number, out.size()));
-  const Kind kind = r.required(
-      r.choice<Kind>("kind", {{"lattice", Kind::Lattice}, {"random", Kind::Random}}), "kind");
+  const Kind kind = r.required(r.choice_in<Kind>("kind", kKindNames), "kind");
   const Common common = read_common(r, materials);
   // Read everything and refuse unknown keys before generating: a typo should not cost the
   // time of generating a million triangles first.

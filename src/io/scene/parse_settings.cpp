@@ -61,9 +61,7 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
     r.fail("safety", fmt::format("must be in (0, 1], got {}", s.safety));
   s.gravity = r.vec2("gravity").value_or(s.gravity);
   s.backend = r.choice_in<Backend>("backend", kBackendNames).value_or(s.backend);
-  s.precision =
-      r.choice<Precision>("precision", {{"double", Precision::Double}, {"float", Precision::Float}})
-          .value_or(s.precision);
+  s.precision = r.choice_in<Precision>("precision", kPrecisionNames).value_or(s.precision);
   s.method = r.choice_in<Method>("method", kMethodNames).value_or(s.method);
   s.contact_test =
       r.choice_in<ContactTest>("contact_test", kContactTestNames).value_or(s.contact_test);
@@ -105,9 +103,7 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
              fmt::format("must be >= 0 (0 = only step 0 and the last step), got {}", *e));
     o.energy_every = *e;
   }
-  o.encoding = r.choice<Encoding>("vtk_encoding",
-                                  {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}})
-                   .value_or(o.encoding);
+  o.encoding = r.choice_in<Encoding>("vtk_encoding", kEncodingNames).value_or(o.encoding);
   r.reject_unknown_keys();
   return o;
 }

@@ -1,6 +1,7 @@
 // [[triangle]] blocks: one explicit grain each.
 #include "io/scene/scene_sections.hpp"
 #include "io/scene/triangle_shape.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -11,9 +12,7 @@ namespace {
 // they agree, since a file saying both "fixed = true" and "prescribed" has a mistake in it.
 Motion read_motion(TableReader& r) {
   const std::optional<bool> fixed = r.boolean("fixed");
-  const std::optional<Motion> motion = r.choice<Motion>(
-      "motion",
-      {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}});
+  const std::optional<Motion> motion = r.choice_in<Motion>("motion", kMotionNames);
   if (fixed && motion && (*fixed != (*motion == Motion::Fixed)))
     r.fail("motion", fmt::format("conflicts with fixed = {}", *fixed ? "true" : "false"));
   if (motion) return *motion;

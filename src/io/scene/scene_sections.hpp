@@ -45,6 +45,9 @@ struct Provenance {
   std::string describe(std::size_t id) const;
 };
 
+/// The [simulation] and [output] checks of validate_scene alone.
+void validate_settings(const Scene& scene);
+
 /// validate_scene, naming where the particles of an overlapping pair come from.
 void validate_scene(const Scene& scene, const Provenance* provenance);
 

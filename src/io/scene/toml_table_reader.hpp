@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cstdint>
-#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,13 +45,8 @@ class TableReader {
   template <std::size_t N>
   std::optional<std::array<Vec2d, N>> points(std::string_view key);
 
-  /// The enumerator whose spelling equals the string under `key`.
-  template <class E>
-  std::optional<E> choice(std::string_view key,
-                          std::initializer_list<std::pair<std::string_view, E>> options) {
-    return choice_in<E>(key, options);
-  }
-  /// The same with the spellings of setting_names.hpp (any range of {spelling, value}).
+  /// The enumerator whose spelling equals the string under `key`, from a table of
+  /// {spelling, value} (those of setting_names.hpp: one table per enumeration).
   template <class E, class Options>
   std::optional<E> choice_in(std::string_view key, const Options& options);
 

@@ -27,4 +27,23 @@ std::optional<std::string> shape_problem(const std::array<Vec2d, 3>& v) {
   return std::nullopt;
 }
 
+std::optional<std::string> triangle_problem(const TriangleSpec& t, std::size_t materials) {
+  if (t.material < 0 || static_cast<std::size_t>(t.material) >= materials)
+    return fmt::format("material index {} out of range (scene has {} materials)", t.material,
+                       materials);
+  if (auto problem = shape_problem(t.vertices)) return problem;
+  if (!std::isfinite(t.velocity.x) || !std::isfinite(t.velocity.y) ||
+      !std::isfinite(t.angular_velocity))
+    return "velocity and angular_velocity must be finite";
+  switch (t.motion) {
+    case Motion::Free:
+    case Motion::Prescribed: return std::nullopt;
+    case Motion::Fixed:
+      if (t.velocity.x != 0 || t.velocity.y != 0 || t.angular_velocity != 0)
+        return "a fixed triangle must have zero velocity and angular_velocity";
+      return std::nullopt;
+  }
+  return fmt::format("invalid motion value {}", static_cast<int>(t.motion));
+}
+
 }  // namespace tridem::scene_detail

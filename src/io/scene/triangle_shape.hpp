@@ -1,6 +1,8 @@
 #pragma once
-// Shape rules for one triangle, shared by the file reader, validate_scene and the tests;
-// "degenerate" is physics::is_degenerate, the rule the particle model applies too.
+// Rules for one triangle, shared by the file reader, validate_scene, the particle model
+// and the tests so that "degenerate" (physics::is_degenerate) and every other refusal of a
+// triangle mean the same thing everywhere.
+#include "tridem/scene.hpp"
 #include "tridem/vec2.hpp"
 
 #include <array>
@@ -17,6 +19,11 @@ inline double twice_signed_area(const std::array<Vec2d, 3>& v) {
 
 /// Why these vertices can't be a grain (non-finite, degenerate), or nullopt if they can.
 std::optional<std::string> shape_problem(const std::array<Vec2d, 3>& v);
+
+/// Why `t` can't be a particle of a scene with `materials` materials (material index out
+/// of range, a shape_problem, a non-finite velocity, a fixed triangle that moves), or
+/// nullopt if it can. validate_scene and build_particle_model both refuse by this.
+std::optional<std::string> triangle_problem(const TriangleSpec& t, std::size_t materials);
 
 /// Swaps two vertices of a clockwise triangle so that it becomes counter-clockwise.
 inline void make_counter_clockwise(std::array<Vec2d, 3>& v) {

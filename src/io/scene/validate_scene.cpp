@@ -18,8 +18,7 @@ bool finite(Vec2d v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 class Refuser {
  public:
-  explicit Refuser(const Scene& scene)
-      : prefix_(scene.source.empty() ? std::string("scene built in code") : scene.source) {}
+  explicit Refuser(const Scene& scene) : prefix_(scene_label(scene)) {}
   [[noreturn]] void operator()(std::string_view what) const {
     throw SceneError(fmt::format("{}: {}", prefix_, what));
   }
@@ -90,30 +89,9 @@ void check_materials(const Scene& scene, const Refuser& refuse) {
 
 void check_triangles(const Scene& scene, const Refuser& refuse) {
   if (scene.triangles.empty()) refuse("the scene has no triangles");
-  const auto n_materials = static_cast<int>(scene.materials.size());
-  for (std::size_t id = 0; id < scene.triangles.size(); ++id) {
-    const TriangleSpec& t = scene.triangles[id];
-    auto refuse_particle = [&](std::string_view what) {
-      refuse(fmt::format("particle id {}: {}", id, what));
-    };
-    if (t.material < 0 || t.material >= n_materials)
-      refuse_particle(fmt::format("material index {} out of range (scene has {} materials)",
-                                  t.material, n_materials));
-    if (auto problem = scene_detail::shape_problem(t.vertices)) refuse_particle(*problem);
-    if (!finite(t.velocity) || !std::isfinite(t.angular_velocity))
-      refuse_particle("velocity and angular_velocity must be finite");
-    switch (t.motion) {
-      case Motion::Free:
-      case Motion::Prescribed:
-        break;
-      case Motion::Fixed:
-        if (t.velocity.x != 0 || t.velocity.y != 0 || t.angular_velocity != 0)
-          refuse_particle("a fixed triangle must have zero velocity and angular_velocity");
-        break;
-      default:
-        refuse_particle(fmt::format("invalid motion value {}", static_cast<int>(t.motion)));
-    }
-  }
+  for (std::size_t id = 0; id < scene.triangles.size(); ++id)
+    if (auto problem = scene_detail::triangle_problem(scene.triangles[id], scene.materials.size()))
+      refuse(fmt::format("particle id {}: {}", id, *problem));
 }
 
 /// Overlapping triangles hold contact energy the scene did not mean to give them; refused
@@ -148,6 +126,8 @@ std::string Provenance::describe(std::size_t id) const {
   return fmt::format("particle id {}", id);
 }
 
+void validate_settings(const Scene& scene) { check_settings(scene, Refuser(scene)); }
+
 void validate_scene(const Scene& scene, const Provenance* provenance) {
   const Refuser refuse(scene);
   check_settings(scene, refuse);
@@ -159,5 +139,9 @@ void validate_scene(const Scene& scene, const Provenance* provenance) {
 }  // namespace scene_detail
 
 void validate_scene(const Scene& scene) { scene_detail::validate_scene(scene, nullptr); }
+
+std::string scene_label(const Scene& scene) {
+  return scene.source.empty() ? std::string("scene built in code") : scene.source;
+}
 
 }  // namespace tridem

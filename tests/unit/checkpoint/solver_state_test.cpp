@@ -18,7 +18,7 @@ std::unique_ptr<Solver> three_particle_solver(const test::SolverChoice& choice) 
   s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
   s.triangles.push_back(test::triangle({2, 0}, {3, 0}, {2, 1}));
   s.triangles.push_back(test::triangle({4, 0}, {5, 0}, {4, 1}));
-  return make_solver(s, choice.config());
+  return test::solver_for(s, choice);
 }
 
 void expect_refused(const test::SolverChoice& choice,

@@ -5,6 +5,7 @@
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
 #include "tridem/run.hpp"
+#include "tridem/scene_io.hpp"
 #include "unit/io/io_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -29,9 +30,10 @@ RunSummary run(const Scene& s, std::optional<std::int64_t> steps = std::nullopt,
   RunOptions o;
   o.progress = false;
   o.log = nullptr;
-  o.steps = steps;
   if (restart) o.restart = restart->string();
-  return run_scene(s, o);
+  SceneOverrides overrides;  // as `tridem run --steps` would
+  overrides.steps = steps;
+  return run_scene(apply_overrides(s, overrides), o);
 }
 
 void expect_same_outputs(const fs::path& a, const fs::path& b) {

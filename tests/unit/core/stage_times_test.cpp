@@ -18,9 +18,9 @@ namespace tridem {
 namespace {
 
 std::unique_ptr<Solver> pile_solver(Backend backend) {
-  SolverConfig config;
-  config.backend = backend;
-  return make_solver(test::jostling_pile(4, 3), config);
+  Scene s = test::jostling_pile(4, 3);
+  s.simulation.backend = backend;
+  return make_solver(s, SolverConfig{});
 }
 
 void expect_every_stage_timed(Backend backend) {
@@ -68,9 +68,8 @@ TEST(StageTimes, AStepStoppedByABlowUpIsNotCounted) {
   Scene s = test::empty_scene(1e3);
   s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
   s.triangles.push_back(test::triangle({0.3, 0.3}, {1.3, 0.3}, {0.3, 1.3}));
-  SolverConfig config;
-  config.backend = Backend::Cpu;
-  auto solver = make_solver(s, config);
+  s.simulation.backend = Backend::Cpu;
+  auto solver = make_solver(s, SolverConfig{});
   EXPECT_THROW(solver->advance(1), RunError);
   const StageTimes t = solver->stage_times();
   EXPECT_EQ(t.steps, 0);

@@ -1,4 +1,7 @@
+#include "io/output/atomic_file.hpp"
+#include "io/output/pvd_collection.hpp"
 #include "io_test_support.hpp"
+#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <gtest/gtest.h>
@@ -59,6 +62,22 @@ TEST(Pvd, SameStepTwiceIsListedOnce) {
   out.write_frame(s);
   out.write_frame(s);
   EXPECT_EQ(datasets(tmp.path() / "tridem.pvd").size(), 1u);
+}
+
+// The collection is replaced as checkpoints are (atomic_file.hpp): when the replacement
+// fails, the error names the file and no temporary file is left behind.
+TEST(Pvd, FailedReplacementNamesTheFileAndLeavesNoTemporary) {
+  test::TempDir tmp;
+  const auto pvd = tmp.path() / "tridem.pvd";
+  std::filesystem::create_directories(pvd / "in-the-way");  // a folder where the file goes
+  io::PvdCollection collection(pvd);
+  try {
+    collection.add(0.5, tmp.path() / "frames" / frame_file_name(5));
+    ADD_FAILURE() << "replaced a folder";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find(pvd.string()), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(io::temporary_path(pvd)));
 }
 
 }  // namespace

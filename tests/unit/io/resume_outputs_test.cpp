@@ -1,9 +1,10 @@
 // Taking over a stopped run's outputs: rows after the resume step and a row cut short by
 // the stop are dropped, the collection keeps only earlier frames, later frames go.
-#include "io/output/pvd_collection.hpp"
 #include "io/output/resume_outputs.hpp"
+#include "tridem/output.hpp"
 #include "unit/io/io_test_support.hpp"
 
+#include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
 
@@ -24,26 +25,42 @@ TEST(ResumeOutputs, TrimLogKeepsRowsUpToTheStepAndDropsACutRow) {
   EXPECT_EQ(test::read_file(dir.path() / "walls.csv"), "step,id\n");
 }
 
-TEST(ResumeOutputs, LaterFramesAndCollectionEntriesGo) {
+// Every writer cuts its own files back to the resume point: frames and their renderings,
+// both contact files, both collections and both logs.
+TEST(ResumeOutputs, EveryFormatKeepsItsFilesUpToTheResumePointOnly) {
   test::TempDir dir;
-  std::filesystem::create_directories(dir.path() / "frames");
-  for (int step : {0, 100, 200}) {
-    const auto frame = dir.path() / "frames" / ("frame_" + std::to_string(step) + ".vtu");
-    write(frame, "x");
+  Snapshot s = test::sample_snapshot();
+  {
+    OutputSet first(OutputSettings{}, dir.path());
+    for (int step : {0, 100, 200}) {
+      s.step = step;
+      s.time = 0.001 * step;
+      first.write_frame(s);
+      first.log(s);
+    }
   }
-  io::PvdCollection first(dir.path() / "tridem.pvd");
-  first.add(0.0, dir.path() / "frames" / "frame_0.vtu");
-  first.add(0.1, dir.path() / "frames" / "frame_100.vtu");
-  first.add(0.2, dir.path() / "frames" / "frame_200.vtu");
+  for (int step : {0, 100, 200})  // what `tridem render` writes beside a frame
+    write(dir.path() / "frames" / fmt::format("frame_{:09}.png", step), "png");
+  std::ofstream(dir.path() / "frames" / "frame_notes.png") << "mine";
 
-  io::remove_frames_after(dir.path(), 100);
-  EXPECT_TRUE(std::filesystem::exists(dir.path() / "frames" / "frame_100.vtu"));
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames" / "frame_200.vtu"));
-  io::PvdCollection resumed(dir.path() / "tridem.pvd");
-  resumed.restore(0.1);
-  const std::string pvd = test::read_file(dir.path() / "tridem.pvd");
-  EXPECT_NE(pvd.find("frame_100.vtu"), std::string::npos) << pvd;
-  EXPECT_EQ(pvd.find("frame_200.vtu"), std::string::npos) << pvd;
+  const OutputSet resumed(OutputSettings{}, dir.path(), Encoding::Binary, ResumePoint{100, 0.1});
+  for (const char* kept : {"frames/frame_000000100.vtu", "frames/frame_000000100.png",
+                           "contacts/contacts_000000100.csv", "contacts/contacts_000000100.vtp",
+                           "frames/frame_notes.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / kept)) << kept;
+  for (const char* gone : {"frames/frame_000000200.vtu", "frames/frame_000000200.png",
+                           "contacts/contacts_000000200.csv", "contacts/contacts_000000200.vtp"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / gone)) << gone;
+  for (const char* pvd : {"tridem.pvd", "contacts.pvd"}) {
+    const std::string text = test::read_file(dir.path() / pvd);
+    EXPECT_NE(text.find("_000000100."), std::string::npos) << pvd << ": " << text;
+    EXPECT_EQ(text.find("_000000200."), std::string::npos) << pvd << ": " << text;
+  }
+  for (const char* log : {"energy.csv", "walls.csv"}) {
+    const auto lines = test::read_lines(dir.path() / log);
+    ASSERT_FALSE(lines.empty()) << log;
+    EXPECT_EQ(lines.back().rfind("100,", 0), 0u) << log << ": " << lines.back();
+  }
 }
 
 }  // namespace

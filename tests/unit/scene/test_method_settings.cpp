@@ -94,16 +94,51 @@ TEST(SceneMethodSettings, DecompositionRefusals) {
 }
 
 /// The message make_solver gives for `scene`, or "" when it accepts it.
-std::string solver_refusal(const Scene& scene, Method method) {
-  SolverConfig config;
-  config.backend = Backend::Cpu;
-  config.method = method;
+std::string solver_refusal(Scene scene, Method method) {
+  scene.simulation.backend = Backend::Cpu;
+  scene.simulation.method = method;
   try {
-    make_solver(scene, config);
+    make_solver(scene, SolverConfig{});
   } catch (const SceneError& e) {
     return e.what();
   }
   return {};
+}
+
+TEST(SceneMethodSettings, OverridesReplaceTheScenesSettingsAndAreCheckedAgain) {
+  Scene s = test::empty_scene();
+  s.source = "pile.toml";
+  s.triangles.push_back(test::triangle({0, 0}, {1, 0}, {0, 1}));
+  s.simulation.method = Method::SingleDomain;
+  s.simulation.contact_test = ContactTest::DirectArea;
+  SceneOverrides o;
+  o.out_dir = "elsewhere";
+  o.backend = Backend::OpenMP;
+  o.steps = 7;
+  o.method = Method::Decomposition;
+  o.bbox_prefilter = false;
+  const Scene applied = apply_overrides(s, o);
+  EXPECT_EQ(applied.output.dir, "elsewhere");
+  EXPECT_EQ(applied.simulation.backend, Backend::OpenMP);
+  EXPECT_EQ(applied.simulation.steps, 7);
+  EXPECT_EQ(applied.simulation.method, Method::Decomposition);
+  EXPECT_EQ(applied.simulation.contact_test, ContactTest::DirectArea);
+  EXPECT_FALSE(applied.simulation.bbox_prefilter);
+  // `--method grid` on a scene set up for the paper's direct-area test: refused by the
+  // overrides themselves, naming the scene and the setting.
+  SceneOverrides grid;
+  grid.method = Method::Grid;
+  try {
+    apply_overrides(s, grid);
+    ADD_FAILURE() << "grid with the direct-area test must be refused";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("pile.toml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("contact_test = \"direct-area\""), std::string::npos)
+        << e.what();
+  }
+  SceneOverrides no_steps;
+  no_steps.steps = 0;
+  EXPECT_THROW(apply_overrides(s, no_steps), SceneError);
 }
 
 TEST(SceneMethodSettings, SolverChecksTheMethodItIsGiven) {

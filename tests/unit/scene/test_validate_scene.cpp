@@ -1,4 +1,5 @@
 // validate_scene on scenes built in code: same rules as the reader, messages by particle id.
+#include "core/particle_model.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
 
@@ -6,6 +7,8 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace tridem {
 namespace {
@@ -67,6 +70,44 @@ TEST(SceneValidate, RefusesBadTriangles) {
       },
       {"particle id 2", "fixed"});
   expect_refused([](Scene& s) { s.triangles.clear(); }, {"no triangles"});
+}
+
+// The solver's particle model refuses a triangle by the same rule and message as
+// validate_scene: a scene built in code and never validated cannot reach a solver with a
+// triangle the reader would refuse (the two once had their own checks, and the model
+// accepted a fixed triangle with a velocity).
+TEST(SceneValidate, ParticleModelRefusesByTheSameRules) {
+  const std::vector<std::function<void(Scene&)>> spoils = {
+      [](Scene& s) { s.triangles[2].material = 1; },
+      [](Scene& s) { s.triangles[1].material = -1; },
+      [](Scene& s) {
+        s.triangles[1].vertices[2] = {4, 0};
+      },
+      [](Scene& s) { s.triangles[0].vertices[0].x = NAN; },
+      [](Scene& s) { s.triangles[0].velocity.y = INFINITY; },
+      [](Scene& s) {
+        s.triangles[2].motion = Motion::Fixed;
+        s.triangles[2].angular_velocity = 1;
+      },
+      [](Scene& s) { s.triangles.clear(); },
+  };
+  for (std::size_t k = 0; k < spoils.size(); ++k) {
+    Scene s = valid_scene();
+    spoils[k](s);
+    std::string validated, modelled;
+    try {
+      validate_scene(s);
+    } catch (const SceneError& e) {
+      validated = e.what();
+    }
+    try {
+      build_particle_model(s);
+    } catch (const SceneError& e) {
+      modelled = e.what();
+    }
+    EXPECT_FALSE(validated.empty()) << "spoil " << k;
+    EXPECT_EQ(modelled, validated) << "spoil " << k;
+  }
 }
 
 TEST(SceneValidate, RefusesBadMaterials) {

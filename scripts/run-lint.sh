@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Style and static checks on what a change touched, not on the whole tree (which predates
+# .clang-format and is not reformatted): clang-format (.clang-format) on the changed lines
+# of C++ and CUDA files, clang-tidy (.clang-tidy) on the changed C++ sources, with the
+# headers they include. The change is measured from the merge base with origin/main (or
+# main); on main itself, from the previous commit. Uncommitted changes count too.
+#   scripts/run-lint.sh [BASE] [BUILD_DIR]      (BUILD_DIR holds compile_commands.json;
+#                                                default build/)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+base="${1:-}"
+build="${2:-build}"
+
+pick() {  # the first of these programs that exists
+  for p in "$@"; do command -v "$p" >/dev/null 2>&1 && { echo "$p"; return; }; done
+  echo "lint: none of $* is installed (scripts/install-deps.sh installs them)" >&2
+  exit 1
+}
+clang_format=$(pick clang-format-14 clang-format)
+git_clang_format=$(pick git-clang-format-14 git-clang-format)
+clang_tidy=$(pick clang-tidy-14 clang-tidy)
+
+head=$(git rev-parse HEAD)
+if [ -z "$base" ]; then
+  for ref in origin/main main; do
+    if git rev-parse -q --verify "$ref^{commit}" >/dev/null; then
+      candidate=$(git merge-base HEAD "$ref")
+      if [ "$candidate" != "$head" ]; then base=$candidate; break; fi
+    fi
+  done
+fi
+[ -n "$base" ] || base=$(git rev-parse -q --verify HEAD~1 || true)
+if [ -z "$base" ]; then
+  echo "lint: no earlier commit to compare with; nothing to check"
+  exit 0
+fi
+echo "lint: changes since $(git rev-parse --short "$base")"
+
+status=0
+# clang-format: only the lines the change touched.
+formatting=$("$git_clang_format" --binary "$clang_format" --diff --extensions cpp,hpp,cu,cuh \
+  "$base" -- app src include tests bench 2>&1 || true)
+case "$formatting" in
+  "" | *"no modified files to format"* | *"did not modify any files"*)
+    echo "lint: clang-format: the changed lines are formatted" ;;
+  *)
+    echo "$formatting"
+    echo "lint: clang-format: the changed lines above differ from .clang-format's style;" \
+         "fix them with: git clang-format $base"
+    status=1 ;;
+esac
+
+# clang-tidy: the changed C++ sources that the build compiles.
+commands="$build/compile_commands.json"
+if [ ! -f "$commands" ]; then
+  echo "lint: $commands is missing: configure the build first (cmake -S . -B $build)" >&2
+  exit 1
+fi
+files=()
+while IFS= read -r f; do
+  [ -f "$f" ] && grep -qF "\"file\": \"$PWD/$f\"" "$commands" && files+=("$f")
+done < <(git diff --name-only --diff-filter=ACMR "$base" -- '*.cpp')
+if [ ${#files[@]} -eq 0 ]; then
+  echo "lint: clang-tidy: no changed C++ source to check"
+else
+  echo "lint: clang-tidy on ${#files[@]} changed file(s)"
+  "$clang_tidy" -p "$build" --quiet "${files[@]}" || status=1
+fi
+exit $status

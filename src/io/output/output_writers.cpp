@@ -1,0 +1,160 @@
+// The output formats of a run, each an OutputWriter: what it writes, when, and which files
+// of an output directory are its own.
+#include "io/output/log_rows.hpp"
+#include "io/output/output_writer.hpp"
+#include "io/output/pvd_collection.hpp"
+#include "io/output/resume_outputs.hpp"
+#include "io/output/step_files.hpp"
+#include "tridem/error.hpp"
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <string>
+#include <system_error>
+#include <utility>
+
+namespace tridem::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A format of one file per frame.
+struct StepFileFormat {
+  StepFiles files;
+  std::string_view extension;
+  std::string_view collection;  ///< the .pvd listing the files, or empty for none
+  /// Files derived from these (`tridem render`'s PNGs), cleaned up with them; or empty.
+  std::string_view renderings;
+};
+
+/// The files of a StepFileFormat: written by `write`, or only cleaned up when it is empty
+/// (a format the settings turn off still removes an earlier run's files).
+class StepFileWriter final : public OutputWriter {
+ public:
+  using Write = std::function<void(const fs::path&, const Snapshot&)>;
+  StepFileWriter(fs::path dir, StepFileFormat format, Write write)
+      : dir_(std::move(dir)), format_(format), write_(std::move(write)) {
+    if (!format_.collection.empty()) collection_.emplace(dir_ / format_.collection);
+  }
+
+  void start(const std::optional<ResumePoint>& resume) override {
+    const std::optional<std::int64_t> after =
+        resume ? std::optional<std::int64_t>(resume->step) : std::nullopt;
+    format_.files.remove(dir_, format_.extension, after);
+    if (!format_.renderings.empty()) format_.files.remove(dir_, format_.renderings, after);
+    if (!collection_) return;
+    if (resume) {
+      collection_->restore(resume->time);
+    } else {
+      std::error_code ec;
+      fs::remove(collection_->file(), ec);
+    }
+  }
+
+  void frame(const Snapshot& s) override {
+    if (!write_) return;
+    // Made on first use so that a run without frames leaves no empty folders.
+    if (!folder_made_) make_directory(dir_ / format_.files.folder);
+    folder_made_ = true;
+    const fs::path file = format_.files.path(dir_, s.step, format_.extension);
+    write_(file, s);
+    if (collection_) collection_->add(s.time, file);
+  }
+
+ private:
+  fs::path dir_;
+  StepFileFormat format_;
+  Write write_;
+  std::optional<PvdCollection> collection_;
+  bool folder_made_ = false;
+};
+
+/// A CSV log with one block of rows per logging step, flushed each time so that a long
+/// run can be watched and its rows survive a crash.
+class CsvLog final : public OutputWriter {
+ public:
+  using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
+  CsvLog(fs::path file, std::string_view header, Rows rows)
+      : file_(std::move(file)), header_(header), rows_(std::move(rows)) {}
+
+  void start(const std::optional<ResumePoint>& resume) override {
+    if (resume) {
+      trim_log(file_, header_, resume->step);
+      out_.emplace(file_, OutFile::Mode::Append);
+      return;
+    }
+    out_.emplace(file_);
+    out_->write(header_);
+    out_->flush();
+  }
+
+  void log(const Snapshot& s, const LogInputs& in) override {
+    rows_(*out_, s, in);
+    out_->flush();
+  }
+
+ private:
+  fs::path file_;
+  std::string_view header_;
+  Rows rows_;
+  std::optional<OutFile> out_;
+};
+
+/// final.csv: the state the run ends (or stops) with.
+class FinalCsv final : public OutputWriter {
+ public:
+  explicit FinalCsv(fs::path file) : file_(std::move(file)) {}
+  void start(const std::optional<ResumePoint>& resume) override {
+    // A restarted run keeps the file until it writes its own.
+    std::error_code ec;
+    if (!resume) fs::remove(file_, ec);
+  }
+  void final_state(const Snapshot& s) override { write_final_csv(file_, s); }
+
+ private:
+  fs::path file_;
+};
+
+}  // namespace
+
+std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& settings,
+                                                        const fs::path& dir, Encoding encoding) {
+  using Write = StepFileWriter::Write;
+  std::vector<std::unique_ptr<OutputWriter>> w;
+  w.push_back(std::make_unique<StepFileWriter>(
+      dir, StepFileFormat{kFrameFiles, ".vtu", "tridem.pvd", ".png"},
+      [encoding](const fs::path& f, const Snapshot& s) { write_vtu_frame(f, s, encoding); }));
+  const bool contacts = settings.contacts;
+  w.push_back(std::make_unique<StepFileWriter>(dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
+                                               contacts ? Write(write_contacts_csv) : Write()));
+  w.push_back(std::make_unique<StepFileWriter>(
+      dir, StepFileFormat{kContactFiles, ".vtp", "contacts.pvd", {}},
+      contacts ? Write([encoding](const fs::path& f, const Snapshot& s) {
+        write_contacts_vtp(f, s, encoding);
+      })
+               : Write()));
+  w.push_back(std::make_unique<CsvLog>(
+      dir / "energy.csv", kEnergyHeader, [](OutFile& out, const Snapshot& s, const LogInputs& in) {
+        write_energy_row(out, compute_energy(s, in.gravity, in.budget));
+      }));
+  w.push_back(std::make_unique<CsvLog>(
+      dir / "walls.csv", kWallsHeader,
+      [](OutFile& out, const Snapshot& s, const LogInputs&) { write_wall_rows(out, s); }));
+  w.push_back(std::make_unique<FinalCsv>(dir / "final.csv"));
+  return w;
+}
+
+void make_directory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  // An existing regular file of that name is not always reported as an error.
+  if (!ec && !fs::is_directory(dir, ec) && !ec)
+    ec = std::make_error_code(std::errc::not_a_directory);
+  if (ec)
+    throw RunError(
+        fmt::format("cannot create output directory '{}': {}", dir.string(), ec.message()));
+}
+
+}  // namespace tridem::io
