@@ -1,6 +1,7 @@
 // Bodies of several triangles on the serial and OpenMP solvers: no contact inside a body,
 // momentum of colliding bodies, free rotation with the exact inertia, OpenMP equal to
 // serial bit for bit, and the CUDA backend's refusal.
+#include "core/initial_overlaps.hpp"
 #include "core/particle_model.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
@@ -164,6 +165,19 @@ TEST(Bodies, CheckpointIsRefusedNotWrong) {
   auto solver = make_solver(colliding_pair(), on(Backend::Cpu));
   SolverState state;
   EXPECT_THROW(solver->save_state(state), RunError);
+}
+
+}  // namespace
+}  // namespace tridem
+
+namespace tridem {
+namespace {
+
+TEST(Bodies, RelaxOverlapsRefusesBodies) {
+  std::string text = std::string(kHead) + ngon(5, 0.01, {0, 0}, {0, 0}, 0);
+  text.insert(text.find("dt = 1e-6\n"), "relax_overlaps = true\n");
+  Scene scene = parse_scene(text, "s");
+  EXPECT_THROW(relax_initial_overlaps(scene), SceneError);
 }
 
 }  // namespace
