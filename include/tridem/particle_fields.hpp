@@ -144,7 +144,7 @@ namespace particle_field {
     }                                                                                        \
   };
 TRIDEM_GPU_PARTICLE_FIELDS(TRIDEM_FIELD_TAG)
-#undef TRIDEM_FIELD_TAG
+// TRIDEM_FIELD_TAG stays defined: body_fields.hpp makes its tags with it.
 
 }  // namespace particle_field
 

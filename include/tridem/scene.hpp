@@ -5,6 +5,7 @@
 #include "tridem/vec2.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -58,6 +59,16 @@ struct TriangleSpec {
   Motion motion = Motion::Free;
 };
 
+/// A rigid body of several triangles ([[body]]): its members are Scene::triangles
+/// [first, first + count), which move as one (one mass, one inertia, one pose) and never
+/// touch each other. The members' own velocity and motion are ignored; the body's apply.
+struct BodySpec {
+  std::size_t first = 0, count = 0;
+  Vec2d velocity{};              ///< of the body's centroid, m/s
+  double angular_velocity = 0;   ///< rad/s, about the body's centroid
+  Motion motion = Motion::Free;
+};
+
 struct SimulationSettings {
   std::int64_t steps = 0;
   std::optional<double> dt;            ///< unset: dt = safety · dt_crit
@@ -106,6 +117,17 @@ struct Scene {
   OutputSettings output;
   std::vector<Material> materials;
   std::vector<TriangleSpec> triangles; ///< explicit ones in file order, then generated
+  /// Empty: every triangle is a body of its own (every scene without [[body]]). Otherwise
+  /// one entry per body in id order ([[triangle]]s and [[body]]s in file order, then the
+  /// generated triangles, one body each), covering `triangles` contiguously in order.
+  std::vector<BodySpec> bodies;
+
+  /// True when some body has more than one member.
+  bool has_bodies() const {
+    for (const BodySpec& b : bodies)
+      if (b.count > 1) return true;
+    return false;
+  }
 };
 
 }  // namespace tridem

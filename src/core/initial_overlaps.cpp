@@ -126,6 +126,11 @@ std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSp
 RelaxReport relax_initial_overlaps(Scene& scene, int max_iterations) {
   RelaxReport report;
   if (scene.triangles.empty()) return report;
+  // It moves triangles one by one, which would tear a body's members apart (issue 13).
+  if (scene.has_bodies())
+    throw SceneError(scene.source + ": [simulation] relax_overlaps = true does not work with "
+                                    "[[body]] blocks of several triangles yet; move the "
+                                    "overlapping particles apart in the file instead");
   Layout layout(scene.triangles);
   const std::size_t n = layout.tri.size();
   // A wall does not move; grains share a push in inverse proportion to their masses.

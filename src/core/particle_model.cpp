@@ -58,6 +58,14 @@ ParticleModel build_particle_model(const Scene& scene) {
     m.velocity[i] = fixed ? Vec2d{} : spec.velocity;
     m.angular_velocity[i] = fixed ? 0.0 : spec.angular_velocity;
   }
+  m.bodies = build_body_model(scene, m.centroid, m.mass, m.inertia, m.longest_edge);
+  for (std::size_t i = 0; i < m.bodies.body.size(); ++i) {
+    const auto b = static_cast<std::size_t>(m.bodies.body[i]);
+    m.motion[i] = m.bodies.motion[b];
+    m.velocity[i] = m.bodies.velocity[b] +
+                    cross(m.bodies.angular_velocity[b], m.bodies.member_offset[i]);
+    m.angular_velocity[i] = m.bodies.angular_velocity[b];
+  }
   return m;
 }
 

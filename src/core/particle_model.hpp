@@ -2,6 +2,7 @@
 // The mechanical model of each triangle, built once from a scene in double precision:
 // body-frame vertex offsets, mass, inertia and sizes. Solvers copy it into their own real
 // type and layout.
+#include "core/body_model.hpp"
 #include "physics/contact_laws.hpp"
 #include "tridem/scene.hpp"
 
@@ -19,6 +20,9 @@ struct ParticleModel {
   std::vector<Motion> motion;
   std::vector<Vec2d> velocity;
   std::vector<double> angular_velocity;
+  /// Bodies of several triangles; empty without them. A member's motion, velocity and
+  /// angular velocity above are then its body's rigid motion at its centroid.
+  BodyModel bodies;
 
   std::size_t size() const { return centroid.size(); }
 };

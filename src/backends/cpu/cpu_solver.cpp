@@ -45,6 +45,20 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                    [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
   });
   walls_move_ = walls_move(model);
+  if (!model.bodies.empty()) {
+    const BodyModel& bm = model.bodies;
+    n_bodies_ = bm.size();
+    auto fill = [this, &bm](auto field, std::size_t count) {
+      using Field = decltype(field);
+      for_each_array(this->column(field), [&](auto& v, int k) {
+        v.resize(count);
+        for (std::size_t i = 0; i < count; ++i) v[i] = Field::template initial<Real>(bm, i, k);
+      });
+    };
+    for_each_body_field([&](auto field) { fill(field, n_bodies_); });
+    for_each_member_field([&](auto field) { fill(field, n_); });
+    place_members();
+  }
   for (const auto& law : contact_law_table(scene.materials))
     laws_.push_back(physics::SceneContactLaw::cast<Real>(law));
   // Room for a dense packing's pairs up front; the lists only grow past it.
@@ -92,9 +106,12 @@ void CpuSolver<Real>::run_stage(Stage stage) {
     case Stage::Geometry: return update_geometry();
     case Stage::PairList: return find_pairs();
     case Stage::PairForces: return compute_pair_forces();
-    case Stage::Gather: return accumulate();
-    case Stage::Check: return check_runaway();
-    case Stage::Integrate: return integrate();
+    case Stage::Gather:
+      accumulate();
+      if (n_bodies_ > 0) gather_bodies();
+      return;
+    case Stage::Check: return n_bodies_ > 0 ? check_body_runaway() : check_runaway();
+    case Stage::Integrate: return n_bodies_ > 0 ? integrate_bodies() : integrate();
   }
 }
 
@@ -162,8 +179,14 @@ void CpuSolver<Real>::compute_pair_forces() {
     const Vec2d origin{x_[e], y_[e]};
     const physics::Body<Real> a = body(emitter, origin);
     const auto dt = static_cast<Real>(dt_);
+    const std::int32_t* body_of = n_bodies_ > 0 ? member_body_.data() : nullptr;
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
+      if (physics::same_body(body_of, e, j)) {  // exact zeros, no history
+        result_[s] = physics::PairForce<Real>{};
+        slip_[s] = physics::PairSlip<Real>{};
+        continue;
+      }
       physics::PairSlip<Real> slip = old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
       result_[s] = physics::SceneContactLaw::force(a, body(j, origin), law, dt, slip);
@@ -236,7 +259,8 @@ void CpuSolver<Real>::integrate() {
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
     const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
-    add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p);
+    add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p,
+                    motion_[i] == Motion::Free);
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
@@ -252,7 +276,7 @@ void CpuSolver<Real>::integrate() {
 // in one row) and, for a free particle, what local damping took from it.
 template <class Real>
 void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>& before,
-                                      const physics::Pose<double>& after) {
+                                      const physics::Pose<double>& after, bool free) {
   auto wall_velocity = [this](std::int64_t j, Vec2d& v, double& w) {
     if (!walls_move_ || motion_[j] == Motion::Free) return false;
     v = {vx_[j], vy_[j]};
@@ -261,8 +285,98 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
   };
   tridem::add_step_energy(energy_, static_cast<std::int64_t>(i), pairs_.offset.data(),
                           pairs_.partner.data(), result_.data(), wall_velocity,
-                          motion_[i] == Motion::Free, before, after, Vec2<Real>{fx_[i], fy_[i]},
+                          free, before, after, Vec2<Real>{fx_[i], fy_[i]},
                           torque_[i], inv_mass_[i], gravity_, local_damping_, dt_);
+}
+
+// Each body sums its members' loads in ascending member order: OpenMP equals serial.
+template <class Real>
+void CpuSolver<Real>::gather_bodies() {
+  const auto nb = static_cast<std::int64_t>(n_bodies_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t b = 0; b < nb; ++b) {
+    Vec2d f{};
+    double t = 0;
+    for (std::int64_t i = body_first_[b]; i < body_last_[b]; ++i)
+      physics::add_member_load(f, t, Vec2<Real>{fx_[i], fy_[i]}, torque_[i],
+                               Vec2d{x_[i] - body_x_[b], y_[i] - body_y_[b]});
+    body_fx_[b] = f.x;
+    body_fy_[b] = f.y;
+    body_torque_[b] = t;
+  }
+}
+
+template <class Real>
+physics::Pose<double> CpuSolver<Real>::advanced_body_pose(std::size_t b) const {
+  return physics::stepped_pose(body_pose(b), body_motion_[b] == Motion::Free,
+                               Vec2d{body_fx_[b], body_fy_[b]}, body_torque_[b],
+                               body_inv_mass_[b], body_inv_inertia_[b], gravity_,
+                               local_damping_, dt_);
+}
+
+template <class Real>
+void CpuSolver<Real>::check_body_runaway() const {
+  const auto nb = static_cast<std::int64_t>(n_bodies_);
+  std::int64_t bad = nb;
+#pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
+  for (std::int64_t b = 0; b < nb; ++b) {
+    if (body_motion_[b] != Motion::Free) continue;
+    const physics::Pose<double> p = advanced_body_pose(static_cast<std::size_t>(b));
+    if (physics::runaway_step(p, body_half_size_[b], dt_)) bad = std::min(bad, b);
+  }
+  if (bad < nb) {
+    const auto b = static_cast<std::size_t>(bad);
+    const physics::Pose<double> p = advanced_body_pose(b);
+    throw RunError("body id " + std::to_string(bad) + ": " +
+                   runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b],
+                                   norm(p.v), dt_, limit_));
+  }
+}
+
+// Two loops: every body's step (its members' rows of energy read the walls' member
+// velocities, which the second loop rewrites), then every member placed on its body.
+template <class Real>
+void CpuSolver<Real>::integrate_bodies() {
+  const auto nb = static_cast<std::int64_t>(n_bodies_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t b = 0; b < nb; ++b) {
+    const auto ub = static_cast<std::size_t>(b);
+    const physics::Pose<double> before = body_pose(ub);
+    const physics::Pose<double> after = advanced_body_pose(ub);
+    const bool free = body_motion_[b] == Motion::Free;
+    for (std::int64_t i = body_first_[b]; i < body_last_[b]; ++i)
+      add_step_energy(static_cast<std::size_t>(i), before, after, false);
+    if (free && local_damping_ > 0)  // the body's, booked on its first member
+      energy_[kDissipatedLocal][static_cast<std::size_t>(body_first_[b])] +=
+          physics::local_damping_dissipation(before, after, Vec2d{body_fx_[b], body_fy_[b]},
+                                             body_torque_[b], body_inv_mass_[b], gravity_,
+                                             local_damping_, dt_);
+    body_x_[b] = after.c.x;
+    body_y_[b] = after.c.y;
+    body_theta_[b] = after.theta;
+    if (!free) continue;
+    body_vx_[b] = after.v.x;
+    body_vy_[b] = after.v.y;
+    body_w_[b] = after.w;
+  }
+  place_members();
+}
+
+template <class Real>
+void CpuSolver<Real>::place_members() {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto b = static_cast<std::size_t>(member_body_[i]);
+    const physics::Pose<double> p =
+        physics::member_pose(body_pose(b), Vec2d{member_dx_[i], member_dy_[i]});
+    x_[i] = p.c.x;
+    y_[i] = p.c.y;
+    theta_[i] = p.theta;
+    vx_[i] = p.v.x;
+    vy_[i] = p.v.y;
+    w_[i] = p.w;
+  }
 }
 
 template <class Real>

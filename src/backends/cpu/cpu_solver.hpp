@@ -11,6 +11,8 @@
 #include "decomposition/decomposed_pairs.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
+#include "physics/rigid_body.hpp"
+#include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/solver.hpp"
 
@@ -49,6 +51,10 @@ class CpuSolver final : public Solver {
 
   /// The columns of a per-particle field, by its tag (generic code: snapshots, states).
   TRIDEM_PARTICLE_FIELDS(TRIDEM_MEMBER_COLUMN_ACCESSOR)
+  /// The per-body and per-member columns (tridem/body_fields.hpp); empty without bodies.
+  TRIDEM_BODY_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
+  TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
+  std::size_t bodies() const { return n_bodies_; }
 
  private:
   void update_geometry();
@@ -59,7 +65,17 @@ class CpuSolver final : public Solver {
   void check_runaway() const;
   void integrate();
   void add_step_energy(std::size_t i, const physics::Pose<double>& before,
-                       const physics::Pose<double>& after);
+                       const physics::Pose<double>& after, bool free);
+  // Bodies of several members (n_bodies_ > 0): the gather, check and integration run per
+  // body; the triangles follow their bodies.
+  void gather_bodies();
+  void check_body_runaway() const;
+  void integrate_bodies();
+  void place_members();
+  physics::Pose<double> body_pose(std::size_t b) const {
+    return {{body_x_[b], body_y_[b]}, body_theta_[b], {body_vx_[b], body_vy_[b]}, body_w_[b]};
+  }
+  physics::Pose<double> advanced_body_pose(std::size_t b) const;
 
   /// Body i as pair_force sees it, in the frame whose origin is at `origin`.
   physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
@@ -85,6 +101,9 @@ class CpuSolver final : public Solver {
   // The per-particle fields (tridem/particle_fields.hpp) as member_ vectors: offset_x_,
   // x_, fx_, energy_, rel_x_, lo_x_, ...
   TRIDEM_PARTICLE_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
+  std::size_t n_bodies_ = 0;  ///< bodies, when some has several members; else 0
+  TRIDEM_BODY_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
+  TRIDEM_MEMBER_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
   std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity

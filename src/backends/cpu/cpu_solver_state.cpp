@@ -5,11 +5,21 @@
 #include "backends/cpu/cpu_solver.hpp"
 
 #include "core/history_rows.hpp"
+#include "tridem/error.hpp"
 
 namespace tridem {
 
+namespace {
+// Not yet: the per-body state is not in the checkpoint format (issue 13).
+constexpr const char* kBodiesNotCheckpointed =
+    "checkpoints and restarts of scenes with [[body]] blocks of several triangles are not "
+    "supported yet: leave checkpoint_every at 0 (the per-body state is not in the checkpoint "
+    "format)";
+}  // namespace
+
 template <class Real>
 void CpuSolver<Real>::save_state(SolverState& out) const {
+  if (n_bodies_ > 0) throw RunError(kBodiesNotCheckpointed);
   out.step = step_;
   out.time = time_;
   // The checkpointed fields are double in every precision: copied exactly.
@@ -19,6 +29,7 @@ void CpuSolver<Real>::save_state(SolverState& out) const {
 
 template <class Real>
 void CpuSolver<Real>::load_state(const SolverState& in) {
+  if (n_bodies_ > 0) throw RunError(kBodiesNotCheckpointed);
   validate_solver_state(in, n_, description());
   step_ = in.step;
   time_ = in.time;

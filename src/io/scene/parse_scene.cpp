@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace tridem {
 namespace {
 
@@ -48,7 +50,7 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
   static constexpr std::string_view kKnown[] = {"simulation", "output", "material", "triangle",
-                                                "generate"};
+                                                "body",       "generate"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -59,8 +61,17 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
   if (first)
     throw SceneError(fmt::format(
         "{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-        "[[material]], [[triangle]], [[generate]])",
+        "[[material]], [[triangle]], [[body]], [[generate]])",
         where(source, first->source()), first->str()));
+}
+
+/// The body of one triangle, `triangles[index]` (the last one by default).
+BodySpec lone_body(const std::vector<TriangleSpec>& triangles, std::size_t index) {
+  const TriangleSpec& t = triangles[index];
+  return {index, 1, t.velocity, t.angular_velocity, t.motion};
+}
+BodySpec lone_body(const std::vector<TriangleSpec>& triangles) {
+  return lone_body(triangles, triangles.size() - 1);
 }
 
 }  // namespace
@@ -92,16 +103,46 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
     scene.materials.push_back(
         scene_detail::parse_material(*materials[i], source, i + 1, scene.materials));
 
-  // Ids: explicit triangles in file order, then each generator's output in file order.
+  // Ids: explicit [[triangle]]s and [[body]]s in file order (a body's members take
+  // consecutive triangle ids), then each generator's output in file order.
   const auto triangles = blocks(root, "triangle", source);
+  const auto bodies = blocks(root, "body", source);
   const auto generators = blocks(root, "generate", source);
+  struct Explicit {
+    const toml::table* table;
+    bool body;
+    std::size_t number;  // 1-based among its kind
+  };
+  std::vector<Explicit> in_file_order;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    in_file_order.push_back({triangles[i], false, i + 1});
+  for (std::size_t i = 0; i < bodies.size(); ++i) in_file_order.push_back({bodies[i], true, i + 1});
+  std::stable_sort(in_file_order.begin(), in_file_order.end(),
+                   [](const Explicit& a, const Explicit& b) {
+                     return scene_detail::precedes(a.table->source().begin,
+                                                   b.table->source().begin);
+                   });
+  const bool with_bodies = !bodies.empty();
   scene.triangles.reserve(triangles.size());
   scene_detail::Provenance provenance;
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    scene.triangles.push_back(scene_detail::parse_triangle(*triangles[i], source, i + 1,
-                                                           scene.triangles.size(),
+  for (const Explicit& e : in_file_order) {
+    const std::string at = where(source, e.table->source());
+    if (e.body) {
+      const BodySpec body =
+          scene_detail::parse_body(*e.table, source, e.number, scene.bodies.size(),
+                                   scene.materials, scene.triangles);
+      for (std::size_t k = 0; k < body.count; ++k)
+        provenance.explicit_origin.push_back(fmt::format(
+            "body id {}, [[body]] #{} at {}, its triangle {} of {}", scene.bodies.size(),
+            e.number, at, k + 1, body.count));
+      scene.bodies.push_back(body);
+      continue;
+    }
+    const std::size_t id = with_bodies ? scene.bodies.size() : scene.triangles.size();
+    scene.triangles.push_back(scene_detail::parse_triangle(*e.table, source, e.number, id,
                                                            scene.materials));
-    provenance.triangle_where.push_back(where(source, triangles[i]->source()));
+    provenance.explicit_origin.push_back(fmt::format("[[triangle]] #{} at {}", e.number, at));
+    if (with_bodies) scene.bodies.push_back(lone_body(scene.triangles));
   }
   for (std::size_t i = 0; i < generators.size(); ++i) {
     const std::size_t first = scene.triangles.size();
@@ -110,6 +151,10 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
     provenance.generators.push_back({first, scene.triangles.size() - first, i + 1,
                                      where(source, generators[i]->source())});
   }
+  if (with_bodies)  // each generated triangle is a body of its own
+    for (std::size_t i = scene.bodies.back().first + scene.bodies.back().count;
+         i < scene.triangles.size(); ++i)
+      scene.bodies.push_back(lone_body(scene.triangles, i));
   if (scene.triangles.empty())
     throw SceneError(fmt::format(
         "{}: the scene has no triangles; add [[triangle]] or [[generate]] blocks", source));

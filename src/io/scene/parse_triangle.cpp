@@ -21,6 +21,24 @@ Motion read_motion(TableReader& r) {
 
 }  // namespace
 
+Movement read_movement(TableReader& r, std::string_view what) {
+  Movement m;
+  m.velocity = r.vec2("velocity").value_or(Vec2d{});
+  m.angular_velocity = r.real("angular_velocity").value_or(0.0);
+  m.motion = read_motion(r);
+  if (m.motion == Motion::Fixed) {
+    // A fixed grain with a velocity is contradictory; refusing beats guessing which was meant.
+    if (m.velocity.x != 0 || m.velocity.y != 0)
+      r.fail("velocity", fmt::format("a fixed {} can't have a velocity (use motion = "
+                                     "\"prescribed\" for a moving wall)", what));
+    if (m.angular_velocity != 0)
+      r.fail("angular_velocity", fmt::format("a fixed {} can't have an angular velocity (use "
+                                             "motion = \"prescribed\" for a moving wall)",
+                                             what));
+  }
+  return m;
+}
+
 TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
                             std::size_t number, std::size_t id,
                             const std::vector<Material>& materials) {
@@ -30,18 +48,10 @@ TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
   t.vertices = r.required(r.points<3>("vertices"), "vertices");
   if (auto problem = shape_problem(t.vertices)) r.fail("vertices", *problem);
   make_counter_clockwise(t.vertices);
-  t.velocity = r.vec2("velocity").value_or(Vec2d{});
-  t.angular_velocity = r.real("angular_velocity").value_or(0.0);
-  t.motion = read_motion(r);
-  if (t.motion == Motion::Fixed) {
-    // A fixed grain with a velocity is contradictory; refusing beats guessing which was meant.
-    if (t.velocity.x != 0 || t.velocity.y != 0)
-      r.fail("velocity", "a fixed triangle can't have a velocity (use motion = \"prescribed\" "
-                         "for a moving wall)");
-    if (t.angular_velocity != 0)
-      r.fail("angular_velocity", "a fixed triangle can't have an angular velocity (use "
-                                 "motion = \"prescribed\" for a moving wall)");
-  }
+  const Movement m = read_movement(r, "triangle");
+  t.velocity = m.velocity;
+  t.angular_velocity = m.angular_velocity;
+  t.motion = m.motion;
   r.reject_unknown_keys();
   return t;
 }

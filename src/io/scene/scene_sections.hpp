@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tridem::scene_detail {
@@ -26,6 +27,21 @@ TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
                             std::size_t number, std::size_t id,
                             const std::vector<Material>& materials);
 
+/// How a [[triangle]] or [[body]] moves: velocity, angular_velocity, fixed / motion.
+struct Movement {
+  Vec2d velocity{};
+  double angular_velocity = 0;
+  Motion motion = Motion::Free;
+};
+/// Reads them from `reader`'s table; `what` ("triangle", "body") names it in refusals.
+Movement read_movement(TableReader& reader, std::string_view what);
+
+/// One [[body]] block: `number` is its 1-based position among them, `id` its body id.
+/// Appends its members to `triangles` and returns the body (first = their first index).
+BodySpec parse_body(const toml::table& table, const std::string& source, std::size_t number,
+                    std::size_t id, const std::vector<Material>& materials,
+                    std::vector<TriangleSpec>& triangles);
+
 /// Appends the triangles of one [[generate]] block to `out` (whose size is the first id).
 void parse_generate(const toml::table& table, const std::string& source, std::size_t number,
                     const std::vector<Material>& materials, std::vector<TriangleSpec>& out);
@@ -33,7 +49,9 @@ void parse_generate(const toml::table& table, const std::string& source, std::si
 /// Where each particle id of a scene file came from, so that a refusal about a pair of
 /// particles (an initial overlap) says which blocks to edit.
 struct Provenance {
-  std::vector<std::string> triangle_where;  ///< per [[triangle]], its "file:line:col"
+  /// per explicit particle id: "[[triangle]] #2 at file:line:col" or
+  /// "[[body]] #1 at file:line:col, its triangle 3 of 4"
+  std::vector<std::string> explicit_origin;
   struct Generated {
     std::size_t first = 0, count = 0;  ///< ids [first, first + count)
     std::size_t number = 0;            ///< 1-based among the [[generate]] blocks

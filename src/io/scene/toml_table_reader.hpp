@@ -70,9 +70,12 @@ class TableReader {
 
   const std::string& context() const { return context_; }
 
+  /// The point [x, y] at `n`, an element of the value of `key` (`what` describes the
+  /// expected value in refusals).
+  Vec2d point_at(const toml::node& n, std::string_view key, std::string_view what) const;
+
  private:
   [[noreturn]] void fail_missing(std::string_view key) const;
-  Vec2d point_at(const toml::node& n, std::string_view key, std::string_view what) const;
   double number_at(const toml::node& n, std::string_view key) const;
 
   const toml::table& table_;

@@ -117,8 +117,8 @@ void check_overlaps(const Scene& scene, const Refuser& refuse,
 namespace scene_detail {
 
 std::string Provenance::describe(std::size_t id) const {
-  if (id < triangle_where.size())
-    return fmt::format("particle id {} ([[triangle]] #{} at {})", id, id + 1, triangle_where[id]);
+  if (id < explicit_origin.size())
+    return fmt::format("particle id {} ({})", id, explicit_origin[id]);
   for (const Generated& g : generators)
     if (id >= g.first && id < g.first + g.count)
       return fmt::format("particle id {} ([[generate]] #{} at {}, its triangle {} of {})", id,

@@ -1,0 +1,73 @@
+#pragma once
+// The per-body state of scenes with bodies of several triangles, described once in the
+// form of particle_fields.hpp (same entry F(member, name, Type, count, Role, initial,
+// labels), same tags and generators), so that the CUDA buffers, snapshots and checkpoints
+// can be generated from these lists as the per-particle ones are. `initial` reads the
+// BodyModel m (core/body_model.hpp): body b = i in the body lists, triangle i in the
+// member list. The solvers keep these columns only when the scene has bodies.
+//
+// C++17: the CUDA sources may include it.
+#include "tridem/particle_fields.hpp"
+
+#include <cstdint>
+
+namespace tridem {
+
+// clang-format off
+#define TRIDEM_BODY_MODEL_FIELDS(F)                                                          \
+  F(body_first, first, std::int64_t, 1, Model, m.first[i], nullptr)                          \
+  F(body_last, last, std::int64_t, 1, Model, m.first[i + 1], nullptr)                        \
+  F(body_inv_mass, inv_mass, double, 1, Model,                                               \
+    m.motion[i] == Motion::Free ? 1.0 / m.mass[i] : 0.0, nullptr)                            \
+  F(body_inv_inertia, inv_inertia, double, 1, Model,                                         \
+    m.motion[i] == Motion::Free ? 1.0 / m.inertia[i] : 0.0, nullptr)                         \
+  F(body_half_size, half_size, double, 1, Model, m.half_size[i], nullptr)                    \
+  F(body_motion, motion, Motion, 1, Model, m.motion[i], nullptr)
+
+#define TRIDEM_BODY_STATE_FIELDS(F)                                                          \
+  F(body_x, x, double, 1, State, m.centroid[i].x, nullptr)                                   \
+  F(body_y, y, double, 1, State, m.centroid[i].y, nullptr)                                   \
+  F(body_theta, theta, double, 1, State, 0.0, nullptr)                                       \
+  F(body_vx, vx, double, 1, State, m.velocity[i].x, nullptr)                                 \
+  F(body_vy, vy, double, 1, State, m.velocity[i].y, nullptr)                                 \
+  F(body_w, omega, double, 1, State, m.angular_velocity[i], nullptr)
+
+/* the members' contact forces summed, and their torque about the body's centroid */
+#define TRIDEM_BODY_FORCE_FIELDS(F)                                                          \
+  F(body_fx, fx, double, 1, Force, 0.0, nullptr)                                             \
+  F(body_fy, fy, double, 1, Force, 0.0, nullptr)                                             \
+  F(body_torque, torque, double, 1, Force, 0.0, nullptr)
+
+#define TRIDEM_BODY_FIELDS(F)                                                                \
+  TRIDEM_BODY_MODEL_FIELDS(F) TRIDEM_BODY_STATE_FIELDS(F) TRIDEM_BODY_FORCE_FIELDS(F)
+
+/* per triangle: its body and its centroid's offset from the body's at theta = 0 */
+#define TRIDEM_MEMBER_FIELDS(F)                                                              \
+  F(member_body, body, std::int32_t, 1, Model, m.body[i], nullptr)                           \
+  F(member_dx, member_dx, double, 1, Model, m.member_offset[i].x, nullptr)                   \
+  F(member_dy, member_dy, double, 1, Model, m.member_offset[i].y, nullptr)
+// clang-format on
+
+namespace body_field {
+TRIDEM_BODY_FIELDS(TRIDEM_FIELD_TAG)
+TRIDEM_MEMBER_FIELDS(TRIDEM_FIELD_TAG)
+}  // namespace body_field
+
+#define TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR(member_, name_, Type_, count_, Role_, initial_, \
+                                           labels_)                                        \
+  auto& column(::tridem::body_field::member_) { return member_##_; }                       \
+  const auto& column(::tridem::body_field::member_) const { return member_##_; }
+#define TRIDEM_VISIT_BODY_FIELD(member_, name_, Type_, count_, Role_, initial_, labels_) \
+  f(::tridem::body_field::member_{});
+
+/// f(field) for every per-body field, and for every per-member (per-triangle) field.
+template <class F>
+void for_each_body_field(F&& f) {
+  TRIDEM_BODY_FIELDS(TRIDEM_VISIT_BODY_FIELD)
+}
+template <class F>
+void for_each_member_field(F&& f) {
+  TRIDEM_MEMBER_FIELDS(TRIDEM_VISIT_BODY_FIELD)
+}
+
+}  // namespace tridem

@@ -1,0 +1,179 @@
+// Bodies of several triangles on the serial and OpenMP solvers: no contact inside a body,
+// momentum of colliding bodies, free rotation with the exact inertia, OpenMP equal to
+// serial bit for bit, and the CUDA backend's refusal.
+#include "core/initial_overlaps.hpp"
+#include "core/particle_model.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+#include "tridem/snapshot.hpp"
+#include "tridem/solver.hpp"
+#include "tridem/solver_state.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace tridem {
+namespace {
+
+constexpr const char* kHead =
+    "[simulation]\nsteps = 1\ndt = 1e-6\n[[material]]\nname = \"m\"\ndensity = 2500\n"
+    "penalty = 1e8\nfriction = 0.5\nrestitution = 0.5\n";
+
+std::string ngon(int n, double radius, Vec2d c, Vec2d v, double w, double phase = 0) {
+  std::string s = "[[body]]\nmaterial = \"m\"\npolygon = [";
+  for (int k = 0; k < n; ++k) {
+    const double t = phase + 2 * std::numbers::pi * k / n;
+    s += fmt::format("{}[{:.17g}, {:.17g}]", k ? ", " : "", c.x + radius * std::cos(t),
+                     c.y + radius * std::sin(t));
+  }
+  return s + fmt::format("]\nvelocity = [{}, {}]\nangular_velocity = {}\n", v.x, v.y, w);
+}
+
+// dt_crit is still estimated per member triangle (issue 13: per body remains to do): a
+// regular polygon's fan of slivers gives a bound far below what these contact-free runs
+// need, so they run with --force.
+std::unique_ptr<Solver> solver_on(Scene scene, Backend b, bool force = false) {
+  scene.simulation.backend = b;
+  SolverConfig c;
+  c.force = force;
+  return make_solver(scene, c);
+}
+
+struct Momentum {
+  Vec2d p{};
+  double l = 0;  // about the origin
+};
+
+Momentum momentum(const Snapshot& s) {
+  Momentum m;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    m.p += Vec2d{s.vx[i], s.vy[i]} * s.mass[i];
+    m.l += s.mass[i] * cross(Vec2d{s.x[i], s.y[i]}, Vec2d{s.vx[i], s.vy[i]}) +
+           s.inertia[i] * s.omega[i];
+  }
+  return m;
+}
+
+TEST(Bodies, FiftyMembersAtRestFeelNoContact) {
+  const Scene scene = parse_scene(std::string(kHead) + ngon(52, 0.01, {0, 0}, {0, 0}, 0), "s");
+  auto solver = solver_on(scene, Backend::Cpu, true);
+  ASSERT_EQ(solver->size(), 50u);
+  solver->advance(200);
+  Snapshot s;
+  solver->snapshot(s, true);
+  EXPECT_TRUE(s.contacts.empty() || [&] {
+    for (const auto& c : s.contacts)
+      if (c.fx != 0 || c.fy != 0) return false;
+    return true;
+  }());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_EQ(s.fx[i], 0.0) << i;
+    EXPECT_EQ(s.fy[i], 0.0) << i;
+    EXPECT_EQ(s.torque[i], 0.0) << i;
+    EXPECT_EQ(s.vx[i], 0.0) << i;
+    EXPECT_EQ(s.omega[i], 0.0) << i;
+  }
+}
+
+Scene colliding_pair() {
+  return parse_scene(std::string(kHead) + ngon(5, 0.01, {0, 0}, {0.5, 0.05}, 10) +
+                         ngon(7, 0.012, {0.0235, 0.004}, {-0.4, 0}, -5, 0.3),
+                     "s");
+}
+
+TEST(Bodies, CollidingBodiesConserveMomentum) {
+  const Scene scene = colliding_pair();
+  auto solver = solver_on(scene, Backend::Cpu);
+  Snapshot s0, s1;
+  solver->snapshot(s0, false);
+  const Momentum before = momentum(s0);
+  bool touched = false;
+  for (int k = 0; k < 60; ++k) {
+    solver->advance(100);
+    solver->snapshot(s1, false);
+    for (std::size_t i = 0; i < s1.size(); ++i) touched = touched || s1.fx[i] != 0;
+  }
+  ASSERT_TRUE(touched);
+  const Momentum after = momentum(s1);
+  // They changed direction: the collision happened and carried momentum across.
+  EXPECT_NE(s1.vx[0], s0.vx[0]);
+  const double scale = std::abs(before.p.x) + 1e-3;
+  EXPECT_NEAR(after.p.x, before.p.x, 1e-12 * scale);
+  EXPECT_NEAR(after.p.y, before.p.y, 1e-12 * scale);
+  EXPECT_NEAR(after.l, before.l, 1e-10 * std::abs(before.l));
+}
+
+TEST(Bodies, OpenMPEqualsSerialBitForBit) {
+  const Scene scene = colliding_pair();
+  auto serial = solver_on(scene, Backend::Cpu);
+  auto omp = solver_on(scene, Backend::OpenMP);
+  serial->advance(4000);
+  omp->advance(4000);
+  Snapshot a, b;
+  serial->snapshot(a, false);
+  omp->snapshot(b, false);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a.x[i], b.x[i]);
+    EXPECT_EQ(a.y[i], b.y[i]);
+    EXPECT_EQ(a.theta[i], b.theta[i]);
+    EXPECT_EQ(a.vx[i], b.vx[i]);
+    EXPECT_EQ(a.omega[i], b.omega[i]);
+    EXPECT_EQ(a.fx[i], b.fx[i]);
+  }
+}
+
+TEST(Bodies, FreeRotationKeepsAngularMomentumWithTheExactInertia) {
+  const Scene scene = parse_scene(std::string(kHead) + ngon(9, 0.01, {0.3, -0.2}, {0.1, 0}, 40), "s");
+  const ParticleModel model = build_particle_model(scene);
+  const double l_body = model.bodies.inertia[0] * 40 +
+                        model.bodies.mass[0] * cross(model.bodies.centroid[0], Vec2d{0.1, 0});
+  auto solver = solver_on(scene, Backend::Cpu, true);
+  Snapshot s;
+  for (int k = 0; k < 5; ++k) {
+    solver->advance(1000);
+    solver->snapshot(s, false);
+    // The members' angular momenta add up to the body's, I ω + M c × v, at every step.
+    EXPECT_NEAR(momentum(s).l, l_body, 1e-12 * std::abs(l_body));
+    EXPECT_EQ(s.omega[0], 40.0);
+  }
+  // The body turned: 5000 steps of 1 µs at 40 rad/s.
+  EXPECT_NEAR(s.theta[0], 0.2, 1e-12);
+}
+
+TEST(Bodies, CudaBackendRefusesBodies) {
+  const Scene scene = colliding_pair();
+  try {
+    solver_on(scene, Backend::Cuda);
+    FAIL() << "accepted";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not run bodies of several triangles"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Bodies, CheckpointIsRefusedNotWrong) {
+  auto solver = solver_on(colliding_pair(), Backend::Cpu);
+  SolverState state;
+  EXPECT_THROW(solver->save_state(state), RunError);
+}
+
+}  // namespace
+}  // namespace tridem
+
+namespace tridem {
+namespace {
+
+TEST(Bodies, RelaxOverlapsRefusesBodies) {
+  std::string text = std::string(kHead) + ngon(5, 0.01, {0, 0}, {0, 0}, 0);
+  text.insert(text.find("dt = 1e-6\n"), "relax_overlaps = true\n");
+  Scene scene = parse_scene(text, "s");
+  EXPECT_THROW(relax_initial_overlaps(scene), SceneError);
+}
+
+}  // namespace
+}  // namespace tridem
