@@ -64,8 +64,8 @@ struct TriangleSpec {
 /// touch each other. The members' own velocity and motion are ignored; the body's apply.
 struct BodySpec {
   std::size_t first = 0, count = 0;
-  Vec2d velocity{};              ///< of the body's centroid, m/s
-  double angular_velocity = 0;   ///< rad/s, about the body's centroid
+  Vec2d velocity{};             ///< of the body's centroid, m/s
+  double angular_velocity = 0;  ///< rad/s, about the body's centroid
   Motion motion = Motion::Free;
 };
 

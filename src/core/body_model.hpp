@@ -19,8 +19,8 @@ struct BodyModel {
   std::vector<Vec2d> velocity;
   std::vector<double> angular_velocity;
   // Per triangle:
-  std::vector<std::int32_t> body;     ///< the body it belongs to
-  std::vector<Vec2d> member_offset;   ///< its centroid minus the body's, at theta = 0
+  std::vector<std::int32_t> body;    ///< the body it belongs to
+  std::vector<Vec2d> member_offset;  ///< its centroid minus the body's, at theta = 0
 
   std::size_t size() const { return centroid.size(); }
   bool empty() const { return centroid.empty(); }

@@ -62,8 +62,8 @@ ParticleModel build_particle_model(const Scene& scene) {
   for (std::size_t i = 0; i < m.bodies.body.size(); ++i) {
     const auto b = static_cast<std::size_t>(m.bodies.body[i]);
     m.motion[i] = m.bodies.motion[b];
-    m.velocity[i] = m.bodies.velocity[b] +
-                    cross(m.bodies.angular_velocity[b], m.bodies.member_offset[i]);
+    m.velocity[i] =
+        m.bodies.velocity[b] + cross(m.bodies.angular_velocity[b], m.bodies.member_offset[i]);
     m.angular_velocity[i] = m.bodies.angular_velocity[b];
   }
   return m;

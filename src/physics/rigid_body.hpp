@@ -5,8 +5,8 @@
 #include "tridem/hd.hpp"
 #include "tridem/vec2.hpp"
 
-#include <math.h>
 #include <cstdint>
+#include <math.h>
 
 namespace tridem::physics {
 

@@ -127,7 +127,8 @@ TEST(Bodies, OpenMPEqualsSerialBitForBit) {
 }
 
 TEST(Bodies, FreeRotationKeepsAngularMomentumWithTheExactInertia) {
-  const Scene scene = parse_scene(std::string(kHead) + ngon(9, 0.01, {0.3, -0.2}, {0.1, 0}, 40), "s");
+  const Scene scene =
+      parse_scene(std::string(kHead) + ngon(9, 0.01, {0.3, -0.2}, {0.1, 0}, 40), "s");
   const ParticleModel model = build_particle_model(scene);
   const double l_body = model.bodies.inertia[0] * 40 +
                         model.bodies.mass[0] * cross(model.bodies.centroid[0], Vec2d{0.1, 0});

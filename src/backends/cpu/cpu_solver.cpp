@@ -284,9 +284,9 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
     return true;
   };
   tridem::add_step_energy(energy_, static_cast<std::int64_t>(i), pairs_.offset.data(),
-                          pairs_.partner.data(), result_.data(), wall_velocity,
-                          free, before, after, Vec2<Real>{fx_[i], fy_[i]},
-                          torque_[i], inv_mass_[i], gravity_, local_damping_, dt_);
+                          pairs_.partner.data(), result_.data(), wall_velocity, free, before, after,
+                          Vec2<Real>{fx_[i], fy_[i]}, torque_[i], inv_mass_[i], gravity_,
+                          local_damping_, dt_);
 }
 
 // Each body sums its members' loads in ascending member order: OpenMP equals serial.
@@ -309,9 +309,8 @@ void CpuSolver<Real>::gather_bodies() {
 template <class Real>
 physics::Pose<double> CpuSolver<Real>::advanced_body_pose(std::size_t b) const {
   return physics::stepped_pose(body_pose(b), body_motion_[b] == Motion::Free,
-                               Vec2d{body_fx_[b], body_fy_[b]}, body_torque_[b],
-                               body_inv_mass_[b], body_inv_inertia_[b], gravity_,
-                               local_damping_, dt_);
+                               Vec2d{body_fx_[b], body_fy_[b]}, body_torque_[b], body_inv_mass_[b],
+                               body_inv_inertia_[b], gravity_, local_damping_, dt_);
 }
 
 template <class Real>
@@ -327,9 +326,9 @@ void CpuSolver<Real>::check_body_runaway() const {
   if (bad < nb) {
     const auto b = static_cast<std::size_t>(bad);
     const physics::Pose<double> p = advanced_body_pose(b);
-    throw RunError("body id " + std::to_string(bad) + ": " +
-                   runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b],
-                                   norm(p.v), dt_, limit_));
+    throw RunError(
+        "body id " + std::to_string(bad) + ": " +
+        runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b], norm(p.v), dt_, limit_));
   }
 }
 

@@ -15,7 +15,8 @@ constexpr std::string_view kTrianglesShape =
 
 std::vector<Vec2d> read_polygon(TableReader& r, const toml::array& array) {
   std::vector<Vec2d> out;
-  for (const toml::node& element : array) out.push_back(r.point_at(element, "polygon", kPolygonShape));
+  for (const toml::node& element : array)
+    out.push_back(r.point_at(element, "polygon", kPolygonShape));
   return out;
 }
 
@@ -51,18 +52,18 @@ BodySpec parse_body(const toml::table& table, const std::string& source, std::si
   if (polygon) {
     const toml::array* array = polygon->as_array();
     if (!array)
-      r.fail("polygon", fmt::format("expected {}, got {}", kPolygonShape,
-                                    describe_type(polygon->type())));
+      r.fail("polygon",
+             fmt::format("expected {}, got {}", kPolygonShape, describe_type(polygon->type())));
     PolygonTriangulation cut = triangulate_polygon(read_polygon(r, *array));
     if (cut.problem) r.fail("polygon", *cut.problem);
     shapes = std::move(cut.triangles);
   } else {
     const toml::array* array = explicit_triangles->as_array();
     if (!array || array->empty())
-      r.fail("triangles", fmt::format("expected {} (at least one), got {}", kTrianglesShape,
-                                      array ? "an empty array"
-                                            : std::string(describe_type(
-                                                  explicit_triangles->type()))));
+      r.fail("triangles",
+             fmt::format("expected {} (at least one), got {}", kTrianglesShape,
+                         array ? "an empty array"
+                               : std::string(describe_type(explicit_triangles->type()))));
     shapes = read_triangles(r, *array);
   }
   const Movement m = read_movement(r, "body");

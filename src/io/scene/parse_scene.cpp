@@ -49,8 +49,8 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 }
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
-  static constexpr std::string_view kKnown[] = {"simulation", "output", "material", "triangle",
-                                                "body",       "generate"};
+  static constexpr std::string_view kKnown[] = {"simulation", "output", "material",
+                                                "triangle",   "body",   "generate"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -59,10 +59,10 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
       first = &key;
   }
   if (first)
-    throw SceneError(fmt::format(
-        "{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-        "[[material]], [[triangle]], [[body]], [[generate]])",
-        where(source, first->source()), first->str()));
+    throw SceneError(
+        fmt::format("{}: unknown top-level table or key '{}' (expected [simulation], [output], "
+                    "[[material]], [[triangle]], [[body]], [[generate]])",
+                    where(source, first->source()), first->str()));
 }
 
 /// The body of one triangle, `triangles[index]` (the last one by default).
@@ -117,30 +117,28 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   for (std::size_t i = 0; i < triangles.size(); ++i)
     in_file_order.push_back({triangles[i], false, i + 1});
   for (std::size_t i = 0; i < bodies.size(); ++i) in_file_order.push_back({bodies[i], true, i + 1});
-  std::stable_sort(in_file_order.begin(), in_file_order.end(),
-                   [](const Explicit& a, const Explicit& b) {
-                     return scene_detail::precedes(a.table->source().begin,
-                                                   b.table->source().begin);
-                   });
+  std::stable_sort(
+      in_file_order.begin(), in_file_order.end(), [](const Explicit& a, const Explicit& b) {
+        return scene_detail::precedes(a.table->source().begin, b.table->source().begin);
+      });
   const bool with_bodies = !bodies.empty();
   scene.triangles.reserve(triangles.size());
   scene_detail::Provenance provenance;
   for (const Explicit& e : in_file_order) {
     const std::string at = where(source, e.table->source());
     if (e.body) {
-      const BodySpec body =
-          scene_detail::parse_body(*e.table, source, e.number, scene.bodies.size(),
-                                   scene.materials, scene.triangles);
+      const BodySpec body = scene_detail::parse_body(
+          *e.table, source, e.number, scene.bodies.size(), scene.materials, scene.triangles);
       for (std::size_t k = 0; k < body.count; ++k)
-        provenance.explicit_origin.push_back(fmt::format(
-            "body id {}, [[body]] #{} at {}, its triangle {} of {}", scene.bodies.size(),
-            e.number, at, k + 1, body.count));
+        provenance.explicit_origin.push_back(
+            fmt::format("body id {}, [[body]] #{} at {}, its triangle {} of {}",
+                        scene.bodies.size(), e.number, at, k + 1, body.count));
       scene.bodies.push_back(body);
       continue;
     }
     const std::size_t id = with_bodies ? scene.bodies.size() : scene.triangles.size();
-    scene.triangles.push_back(scene_detail::parse_triangle(*e.table, source, e.number, id,
-                                                           scene.materials));
+    scene.triangles.push_back(
+        scene_detail::parse_triangle(*e.table, source, e.number, id, scene.materials));
     provenance.explicit_origin.push_back(fmt::format("[[triangle]] #{} at {}", e.number, at));
     if (with_bodies) scene.bodies.push_back(lone_body(scene.triangles));
   }

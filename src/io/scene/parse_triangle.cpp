@@ -30,7 +30,8 @@ Movement read_movement(TableReader& r, std::string_view what) {
     // A fixed grain with a velocity is contradictory; refusing beats guessing which was meant.
     if (m.velocity.x != 0 || m.velocity.y != 0)
       r.fail("velocity", fmt::format("a fixed {} can't have a velocity (use motion = "
-                                     "\"prescribed\" for a moving wall)", what));
+                                     "\"prescribed\" for a moving wall)",
+                                     what));
     if (m.angular_velocity != 0)
       r.fail("angular_velocity", fmt::format("a fixed {} can't have an angular velocity (use "
                                              "motion = \"prescribed\" for a moving wall)",

@@ -62,8 +62,7 @@ PolygonTriangulation triangulate_polygon(const std::vector<Vec2d>& outline) {
     const Point& c = f->vertex(2)->point();
     if (polygon.bounded_side(CGAL::centroid(a, b, c)) != CGAL::ON_BOUNDED_SIDE) continue;
     // CGAL's faces are counter-clockwise.
-    out.triangles.push_back(
-        {Vec2d{a.x(), a.y()}, Vec2d{b.x(), b.y()}, Vec2d{c.x(), c.y()}});
+    out.triangles.push_back({Vec2d{a.x(), a.y()}, Vec2d{b.x(), b.y()}, Vec2d{c.x(), c.y()}});
   }
   if (out.triangles.empty()) out.problem = "the polygon is degenerate (no area)";
   return out;

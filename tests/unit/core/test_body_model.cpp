@@ -14,7 +14,8 @@ namespace {
 
 std::string scene_with(const std::string& body) {
   return "[simulation]\nsteps = 1\n[[material]]\nname = \"m\"\ndensity = 2500\n"
-         "penalty = 1e9\n[[body]]\nmaterial = \"m\"\n" + body;
+         "penalty = 1e9\n[[body]]\nmaterial = \"m\"\n" +
+         body;
 }
 
 TEST(BodyModel, SquareOfTwoTriangles) {
@@ -76,10 +77,10 @@ TEST(BodyModel, LoneTriangleIsItsOwnBodyBitForBit) {
 }
 
 TEST(BodyModel, MembersStartWithTheRigidMotion) {
-  const Scene s = parse_scene(
-      scene_with("triangles = [[[0, 0], [1, 0], [0, 1]], [[1, 0], [1, 1], [0, 1]]]\n"
-                 "velocity = [1, 0]\nangular_velocity = 2\nmotion = \"prescribed\"\n"),
-      "s.toml");
+  const Scene s =
+      parse_scene(scene_with("triangles = [[[0, 0], [1, 0], [0, 1]], [[1, 0], [1, 1], [0, 1]]]\n"
+                             "velocity = [1, 0]\nangular_velocity = 2\nmotion = \"prescribed\"\n"),
+                  "s.toml");
   const ParticleModel m = build_particle_model(s);
   for (std::size_t i = 0; i < 2; ++i) {
     const Vec2d r = m.centroid[i] - m.bodies.centroid[0];

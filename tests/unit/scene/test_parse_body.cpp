@@ -18,9 +18,7 @@ std::string with_body(std::string_view body) {
   return std::string(kSceneHead) + "[[body]]\nmaterial = \"m\"\n" + std::string(body);
 }
 
-double area_of(const std::array<Vec2d, 3>& v) {
-  return 0.5 * cross(v[1] - v[0], v[2] - v[0]);
-}
+double area_of(const std::array<Vec2d, 3>& v) { return 0.5 * cross(v[1] - v[0], v[2] - v[0]); }
 
 double total_area(const std::vector<TriangleSpec>& t, std::size_t first, std::size_t count) {
   double a = 0;
@@ -44,10 +42,10 @@ TEST(SceneBodies, ConvexPolygonIsCutIntoCounterClockwiseMembers) {
 
 TEST(SceneBodies, ClockwiseNonConvexPolygonKeepsOnlyItsInside) {
   // An L of area 3, written clockwise: its hull (area 4) must not be filled.
-  const Scene s = parse_scene(
-      with_body("polygon = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
-                "velocity = [1, 2]\nangular_velocity = 3\n"),
-      "s.toml");
+  const Scene s =
+      parse_scene(with_body("polygon = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
+                            "velocity = [1, 2]\nangular_velocity = 3\n"),
+                  "s.toml");
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].count, 4u);
   EXPECT_DOUBLE_EQ(total_area(s.triangles, 0, 4), 3.0);
@@ -96,8 +94,7 @@ TEST(SceneBodies, BadBodiesAreRefusedNamingTheBody) {
                  {"bad.toml:9:", "[[body]] #1 (body id 0)", "'polygon'", "intersects itself"});
   expect_refused(with_body("polygon = [[0, 0], [1, 0], [2, 0]]\n"),
                  {"[[body]] #1 (body id 0)", "'polygon'", "degenerate"});
-  expect_refused(with_body("polygon = [[0, 0], [1, 0]]\n"),
-                 {"[[body]] #1", "at least 3 points"});
+  expect_refused(with_body("polygon = [[0, 0], [1, 0]]\n"), {"[[body]] #1", "at least 3 points"});
   expect_refused(with_body("polygon = [[0, 0], [1, 0], [1, 1], [1, 0]]\n"),
                  {"[[body]] #1", "repeats an earlier point"});
   expect_refused(with_body("polygon = [[0, 0], [1, 0], [1]]\n"), {"[[body]] #1", "'polygon'"});
@@ -126,8 +123,7 @@ TEST(SceneBodies, OverlappingMembersAreRefusedNamingTheBody) {
 }
 
 TEST(PolygonTriangulation, SquareWithCollinearPointsKeepsItsArea) {
-  const auto cut =
-      scene_detail::triangulate_polygon({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}});
+  const auto cut = scene_detail::triangulate_polygon({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}});
   ASSERT_FALSE(cut.problem);
   double a = 0;
   for (const auto& t : cut.triangles) {
