@@ -12,10 +12,15 @@
 
 namespace tridem {
 
+namespace {
+/// What backend = auto picks when the GPU is out: absent, or unable to run the scene.
+Backend fastest_cpu_backend() { return omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu; }
+}  // namespace
+
 Backend resolve_backend(Backend requested) {
   if (requested != Backend::Auto) return requested;
   if (cuda_available()) return Backend::Cuda;
-  return omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu;
+  return fastest_cpu_backend();
 }
 
 namespace {
@@ -89,7 +94,7 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
       throw RunError(
           "the cuda backend does not run bodies of several triangles ([[body]]) yet: use "
           "--backend cpu or openmp for this scene");
-    backend = omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu;
+    backend = fastest_cpu_backend();
   }
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(

@@ -236,16 +236,29 @@ physics::Pose<double> CpuSolver<Real>::advanced_pose(std::size_t i) const {
 }
 
 // Check first, write second (integrate): a blow-up leaves the last good state in place.
+// The lowest index among n moving things (particles or bodies) whose next pose runs away,
+// n when none: the lowest, so that OpenMP reports what the serial solver reports.
 template <class Real>
-void CpuSolver<Real>::check_runaway() const {
-  const auto n = static_cast<std::int64_t>(n_);
+template <class IsFree, class Advanced, class HalfSize>
+std::int64_t CpuSolver<Real>::first_runaway(std::int64_t n, IsFree is_free, Advanced advanced,
+                                            HalfSize half_size) const {
   std::int64_t bad = n;
 #pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (motion_[i] != Motion::Free) continue;
-    const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
-    if (physics::runaway_step(p, static_cast<double>(half_size_[i]), dt_)) bad = std::min(bad, i);
+    if (!is_free(i)) continue;
+    const physics::Pose<double> p = advanced(static_cast<std::size_t>(i));
+    if (physics::runaway_step(p, half_size(i), dt_)) bad = std::min(bad, i);
   }
+  return bad;
+}
+
+template <class Real>
+void CpuSolver<Real>::check_runaway() const {
+  const auto n = static_cast<std::int64_t>(n_);
+  const std::int64_t bad = first_runaway(
+      n, [this](std::int64_t i) { return motion_[i] == Motion::Free; },
+      [this](std::size_t i) { return advanced_pose(i); },
+      [this](std::int64_t i) { return static_cast<double>(half_size_[i]); });
   if (bad < n) {
     const auto i = static_cast<std::size_t>(bad);
     const physics::Pose<double> p = advanced_pose(i);
@@ -316,13 +329,10 @@ physics::Pose<double> CpuSolver<Real>::advanced_body_pose(std::size_t b) const {
 template <class Real>
 void CpuSolver<Real>::check_body_runaway() const {
   const auto nb = static_cast<std::int64_t>(n_bodies_);
-  std::int64_t bad = nb;
-#pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
-  for (std::int64_t b = 0; b < nb; ++b) {
-    if (body_motion_[b] != Motion::Free) continue;
-    const physics::Pose<double> p = advanced_body_pose(static_cast<std::size_t>(b));
-    if (physics::runaway_step(p, body_half_size_[b], dt_)) bad = std::min(bad, b);
-  }
+  const std::int64_t bad = first_runaway(
+      nb, [this](std::int64_t b) { return body_motion_[b] == Motion::Free; },
+      [this](std::size_t b) { return advanced_body_pose(b); },
+      [this](std::int64_t b) { return body_half_size_[b]; });
   if (bad < nb) {
     const auto b = static_cast<std::size_t>(bad);
     const physics::Pose<double> p = advanced_body_pose(b);

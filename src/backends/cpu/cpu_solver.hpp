@@ -63,6 +63,9 @@ class CpuSolver final : public Solver {
   [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
   void check_runaway() const;
+  template <class IsFree, class Advanced, class HalfSize>
+  std::int64_t first_runaway(std::int64_t n, IsFree is_free, Advanced advanced,
+                             HalfSize half_size) const;
   void integrate();
   void add_step_energy(std::size_t i, const physics::Pose<double>& before,
                        const physics::Pose<double>& after, bool free);
