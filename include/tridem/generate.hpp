@@ -12,9 +12,18 @@
 
 namespace tridem {
 
-/// Hard upper limit on one generator's output: beyond it a scene is almost certainly a
-/// units mistake, and the memory (~100 bytes per triangle) would not be there anyway.
+/// Hard upper limit on one generator's output, and on all generators of a scene together:
+/// beyond it a scene is almost certainly a units mistake, and the memory (~100 bytes per
+/// triangle) would not be there anyway.
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+// The fuzzer counts an input that takes over 10 s as a hang. Under its sanitizers a valid
+// scene of a few thousand triangles around one large free triangle (a grid of coarse cells)
+// takes that long, which is cost, not a hang; fuzz builds cap the scene so that a timeout
+// means a real hang.
+inline constexpr std::size_t kMaxGeneratedTriangles = 2'000;
+#else
 inline constexpr std::size_t kMaxGeneratedTriangles = 200'000'000;
+#endif
 
 /// Equilateral triangles of edge `size` on a triangular tiling (alternating up/down in
 /// rows), spaced so that facing edges of neighbours are gap·size apart; every triangle lies

@@ -2,6 +2,7 @@
 // which sections are read (materials before the triangles that name them).
 #include "io/scene/scene_sections.hpp"
 #include "tridem/error.hpp"
+#include "tridem/generate.hpp"
 #include "tridem/scene_io.hpp"
 
 #include <fmt/format.h>
@@ -148,6 +149,11 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
                                  scene.triangles);
     provenance.generators.push_back({first, scene.triangles.size() - first, i + 1,
                                      where(source, generators[i]->source())});
+    if (scene.triangles.size() > kMaxGeneratedTriangles)
+      throw SceneError(fmt::format(
+          "{}: [[generate]] #{} brings the scene to {} triangles, more than the limit of {} "
+          "(check units of region and size)",
+          source, i + 1, scene.triangles.size(), kMaxGeneratedTriangles));
   }
   if (with_bodies)  // each generated triangle is a body of its own
     for (std::size_t i = scene.bodies.back().first + scene.bodies.back().count;
