@@ -48,6 +48,13 @@ struct StageTimes {
 /// How to run a scene on this machine: what the scene cannot say because it depends on
 /// the machine, not on the simulation. Backend, precision, method and every other setting
 /// come from the Scene alone (after the command line's overrides: apply_overrides).
+/// How the openmp backend uses its threads (backends/cpu/thread_choice.hpp).
+enum class ThreadUse {
+  Always,       ///< every step on the threads (benchmarks, and tests of the parallel path)
+  Measured,     ///< each step the faster way, threads or one, timed during the run
+  Alternating,  ///< threads and one in turn, step by step (tests: both ways give the same bits)
+};
+
 struct SolverConfig {
   /// OpenMP threads of the openmp backend; 0 = the runtime's default. Applied to the
   /// solver's own parallel regions only: the caller's OpenMP settings are left as they were.
@@ -56,6 +63,9 @@ struct SolverConfig {
   /// CUDA numbers them, after CUDA_VISIBLE_DEVICES); other backends refuse anything else.
   int device = 0;
   bool force = false;  ///< run even with dt above dt_crit
+  /// Always for a solver made in code; tridem run measures (core/run.cpp): on cores that
+  /// other programs share, threads can cost more than they give.
+  ThreadUse thread_use = ThreadUse::Always;
 };
 
 class Solver {

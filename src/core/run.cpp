@@ -72,6 +72,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   config.threads = options.threads;
   config.device = options.device;
   config.force = options.force;
+  config.thread_use = ThreadUse::Measured;  // threads only where they pay on these cores
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
   const auto solver = make_solver(scene, model, ts, config);

@@ -27,6 +27,25 @@ TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
   EXPECT_GT(serial.contacts.size(), 30u) << "the pile must be in contact at the last step";
 }
 
+// tridem run lets the openmp backend switch between its threads and one thread at any step
+// (backends/cpu/thread_choice.hpp): both ways must give the same bits, step after step.
+TEST(CpuParity, SwitchingBetweenThreadsAndOneThreadEachStepReproducesSerial) {
+  const Scene s = test::jostling_pile(20, 12);
+  const Snapshot serial = test::run_to(s, Backend::Cpu, 301);
+  Scene omp = s;
+  omp.simulation.backend = Backend::OpenMP;
+  SolverConfig config;
+  config.threads = 2;
+  config.thread_use = ThreadUse::Alternating;
+  auto solver = make_solver(omp, config);
+  solver->advance(301);
+  Snapshot switching;
+  solver->snapshot(switching, true);
+  test::expect_identical(serial, switching);
+  EXPECT_NE(solver->statistics().find("150 of 301 steps on one thread"), std::string::npos)
+      << solver->statistics();
+}
+
 // --threads is the solver's own: a program that makes a solver with N threads keeps its
 // own OpenMP setting (it was once set globally from the constructor).
 TEST(CpuParity, SolverThreadsLeaveTheCallersSettingAlone) {

@@ -14,6 +14,7 @@
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -25,7 +26,9 @@ template <class Real>
 CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
                            const SolverConfig& config, bool parallel)
     : n_(model.size()),
+      openmp_(parallel),
       parallel_(parallel),
+      choice_(parallel, config.thread_use),
       threads_(parallel ? config.threads : 0),
       method_(scene.simulation.method),
       dt_(ts.chosen),
@@ -77,7 +80,7 @@ std::string CpuSolver<Real>::description() const {
   const std::string real =
       precision_description(sizeof(Real) == 8 ? Precision::Double : Precision::Float);
   const std::string method = method_description(method_, filter_.test, filter_.bbox_prefilter);
-  if (parallel_)
+  if (openmp_)
     return fmt::format("{} ({} threads), {}, {}", backend_name(Backend::OpenMP),
                        threads_ > 0 ? threads_ : omp_get_max_threads(), real, method);
   return fmt::format("{} (serial), {}, {}", backend_name(Backend::Cpu), real, method);
@@ -85,14 +88,23 @@ std::string CpuSolver<Real>::description() const {
 
 template <class Real>
 std::string CpuSolver<Real>::statistics() const {
-  return decomposed_ ? decomposed_->decomposition().summary() : std::string();
+  std::string s = decomposed_ ? decomposed_->decomposition().summary() : std::string();
+  const std::int64_t one = choice_.steps() - choice_.parallel_steps();
+  if (openmp_ && one > 0)
+    s += fmt::format("{}{} of {} steps on one thread, timed faster than the threads on "
+                     "these cores ({} switches)",
+                     s.empty() ? "" : "; ", one, choice_.steps(), choice_.switches());
+  return s;
 }
 
 template <class Real>
 void CpuSolver<Real>::advance(std::int64_t steps) {
   const ScopedOmpThreads threads(threads_);
   for (std::int64_t s = 0; s < steps; ++s) {
+    parallel_ = choice_.parallel();
+    const auto start = std::chrono::steady_clock::now();
     run_step(*this, kPipeline, stopwatch_);
+    choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
     ++step_;

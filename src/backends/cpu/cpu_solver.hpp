@@ -3,6 +3,7 @@
 // `parallel` off or on. Every stage writes only memory it owns (a pair's slot, a
 // particle's row), and every sum runs in a fixed order (pairs ascending), so the OpenMP
 // solver reproduces the serial one bit for bit; that is what the parity tests check.
+#include "backends/cpu/thread_choice.hpp"
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/single_domain.hpp"
 #include "core/particle_model.hpp"
@@ -88,7 +89,9 @@ class CpuSolver final : public Solver {
   physics::Pose<double> advanced_pose(std::size_t i) const;
 
   std::size_t n_;
-  bool parallel_;
+  bool openmp_;    ///< the openmp backend (else the serial reference)
+  bool parallel_;  ///< this step runs on the threads (choice_ decides, step by step)
+  ThreadChoice choice_;
   int threads_;  ///< OpenMP threads while advancing; 0 = the runtime's default
   Method method_;
   // Mixed precision (docs/model.md, "Precision"): the state and its integration are
