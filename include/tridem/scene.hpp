@@ -70,7 +70,10 @@ struct BodySpec {
 };
 
 struct SimulationSettings {
+  /// The run's length: `steps`, or, when `duration` > 0 (the key `time`), the steps that
+  /// reach that simulated time once dt is known (steps_to_reach, core/time_step.hpp).
   std::int64_t steps = 0;
+  double duration = 0;                 ///< [simulation] time, s; 0 = the run is `steps` long
   std::optional<double> dt;            ///< unset: dt = safety · dt_crit
   double safety = 0.1;                 ///< fraction of dt_crit used when dt is unset
   Vec2d gravity{};

@@ -75,6 +75,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   config.thread_use = ThreadUse::Measured;  // threads only where they pay on these cores
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
+  scene.simulation.steps = steps_to_reach(scene.simulation, ts.chosen);
   const auto solver = make_solver(scene, model, ts, config);
   const auto free = static_cast<std::size_t>(
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));

@@ -180,3 +180,20 @@ void check_time_step(const Scene& scene, const TimeStep& ts, bool force) {
 }
 
 }  // namespace tridem
+
+namespace tridem {
+
+std::int64_t steps_to_reach(const SimulationSettings& s, double dt) {
+  if (s.duration <= 0) return s.steps;
+  const double ratio = s.duration / dt;
+  // 2^53: beyond it a step count is no longer exact in the time a run keeps.
+  if (!(ratio < 9.007199254740992e15))
+    throw RunError(fmt::format("[simulation] time = {} s is {:.3g} steps of dt = {:.6g} s, more "
+                               "than a run can count: shorten the time or raise dt",
+                               s.duration, ratio, dt));
+  const double whole = std::round(ratio);
+  const bool reached = std::abs(ratio - whole) <= 1e-9 * std::max(1.0, whole);
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(reached ? whole : std::ceil(ratio)));
+}
+
+}  // namespace tridem

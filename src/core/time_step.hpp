@@ -43,6 +43,12 @@ struct TimeStep {
 
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model);
 
+/// The run's length in steps of `dt`: [simulation] steps, or for [simulation] time = T the
+/// fewest steps whose end reaches T (T/dt rounded up, a whole number of steps within
+/// rounding counting as reached). Throws RunError when T/dt is more steps than a run can
+/// count.
+std::int64_t steps_to_reach(const SimulationSettings& s, double dt);
+
 /// Throws RunError when the scene's dt exceeds dt_crit and `force` is false.
 void check_time_step(const Scene& scene, const TimeStep& ts, bool force);
 

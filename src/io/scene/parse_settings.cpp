@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <climits>
+#include <cmath>
 
 namespace tridem::scene_detail {
 
@@ -50,8 +51,20 @@ DecompositionSettings parse_decomposition(const toml::node& node, TableReader& p
 SimulationSettings parse_simulation(const toml::table& table, const std::string& source) {
   TableReader r(table, source, "[simulation]");
   SimulationSettings s;
-  s.steps = r.required(r.integer("steps"), "steps");
-  if (s.steps <= 0) r.fail("steps", fmt::format("must be > 0, got {}", s.steps));
+  const auto steps = r.integer("steps");
+  const auto duration = r.real("time");
+  if (steps && duration) r.fail("time", "and steps both set the run's length: give one of them");
+  if (!steps && !duration)
+    r.fail_table("missing required key 'steps' (the number of steps; or give time, the "
+                 "simulated seconds)");
+  if (steps) {
+    s.steps = *steps;
+    if (s.steps <= 0) r.fail("steps", fmt::format("must be > 0, got {}", s.steps));
+  } else {
+    s.duration = *duration;
+    if (!(std::isfinite(s.duration) && s.duration > 0))
+      r.fail("time", fmt::format("must be finite and > 0 (simulated seconds), got {}", s.duration));
+  }
   if (auto dt = r.real("dt")) {
     if (!(*dt > 0)) r.fail("dt", fmt::format("must be > 0, got {} (omit dt for automatic)", *dt));
     s.dt = *dt;

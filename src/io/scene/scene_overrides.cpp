@@ -7,7 +7,10 @@ namespace tridem {
 Scene apply_overrides(Scene scene, const SceneOverrides& o) {
   if (o.out_dir) scene.output.dir = *o.out_dir;
   if (o.backend) scene.simulation.backend = *o.backend;
-  if (o.steps) scene.simulation.steps = *o.steps;
+  if (o.steps) {  // --steps sets the length, whichever key the scene used
+    scene.simulation.steps = *o.steps;
+    scene.simulation.duration = 0;
+  }
   if (o.method) scene.simulation.method = *o.method;
   if (o.contact_test) scene.simulation.contact_test = *o.contact_test;
   if (o.bbox_prefilter) scene.simulation.bbox_prefilter = *o.bbox_prefilter;

@@ -29,7 +29,12 @@ class Refuser {
 
 void check_settings(const Scene& scene, const Refuser& refuse) {
   const SimulationSettings& s = scene.simulation;
-  if (s.steps <= 0) refuse(fmt::format("[simulation] steps must be > 0, got {}", s.steps));
+  if (s.duration != 0) {
+    if (!(std::isfinite(s.duration) && s.duration > 0))
+      refuse(fmt::format("[simulation] time must be finite and > 0, got {}", s.duration));
+  } else if (s.steps <= 0) {
+    refuse(fmt::format("[simulation] steps must be > 0, got {}", s.steps));
+  }
   if (s.dt && !(std::isfinite(*s.dt) && *s.dt > 0))
     refuse(fmt::format("[simulation] dt must be finite and > 0, got {}", *s.dt));
   if (!(s.safety > 0 && s.safety <= 1))
