@@ -43,7 +43,8 @@ struct Snapshot {
   /// step, torque about the body's centroid); column(body_field::...).
   TRIDEM_BODY_PUBLIC_COLUMNS(TRIDEM_BODY_SHOWN_FIELDS)
   std::vector<double> body_mass, body_inertia;  ///< 0 for fixed and prescribed bodies
-  std::vector<std::int64_t> body_first;  ///< n_bodies + 1: body b is [first[b], first[b+1])
+  /// n_bodies + 1 offsets: the members of body b are triangles [first[b], first[b+1]).
+  std::vector<std::int64_t> body_first;
 
   std::size_t body_count() const { return member_body.empty() ? size() : body_first.size() - 1; }
   std::int64_t body_of(std::size_t i) const {

@@ -17,4 +17,14 @@ namespace tridem {
 /// pairs per triangle after 200 steps), so benchmarks time early steps.
 Scene dense_pile(std::size_t n, double size = 0.01, double aspect = 1.0);
 
+/// A dense pile of rigid bodies of several triangles (issue 13's benchmark: 10^6 triangles
+/// in 10^5 bodies): about `n` triangles in regular `sides`-gons of circumradius `radius`,
+/// each a fan of `sides` triangles about its centre (so n / sides bodies), on a hexagonal
+/// lattice whose pitch is 0.998 of the circumdiameter, each body turned by a seeded random
+/// angle, so that neighbours overlap by at most 0.4 % of the radius where corners meet and
+/// stand a little apart elsewhere; a floor and two side walls (fixed triangles, bodies of
+/// one member), the sand-like material of dense_pile, gravity. The pile settles under
+/// gravity from its first steps.
+Scene body_pile(std::size_t n, double radius = 0.01, int sides = 10, unsigned seed = 1);
+
 }  // namespace tridem

@@ -48,15 +48,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (!model.bodies.empty()) {
     const BodyModel& bm = model.bodies;
     n_bodies_ = bm.size();
-    auto fill = [this, &bm](auto field, std::size_t count) {
-      using Field = decltype(field);
-      for_each_array(this->column(field), [&](auto& v, int k) {
-        v.resize(count);
-        for (std::size_t i = 0; i < count; ++i) v[i] = Field::template initial<Real>(bm, i, k);
-      });
-    };
-    for_each_body_field([&](auto field) { fill(field, n_bodies_); });
-    for_each_member_field([&](auto field) { fill(field, n_); });
+    for_each_body_field(
+        [&](auto field) { column(field) = initial_body_column(field, bm, n_bodies_); });
+    for_each_member_field([&](auto field) { column(field) = initial_body_column(field, bm, n_); });
     place_members();
   }
   for (const auto& law : contact_law_table(scene.materials))
