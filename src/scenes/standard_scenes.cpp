@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <random>
 #include <stdexcept>
 
 namespace tridem {
@@ -17,16 +15,6 @@ TriangleSpec fixed_triangle(Vec2d a, Vec2d b, Vec2d c) {
   t.vertices = {a, b, c};
   t.motion = Motion::Fixed;
   return t;
-}
-
-/// A body of one member: a triangle in a scene with bodies of several triangles.
-void add_lone(Scene& s, const TriangleSpec& t) {
-  BodySpec b;
-  b.first = s.triangles.size();
-  b.count = 1;
-  b.motion = t.motion;
-  s.triangles.push_back(t);
-  s.bodies.push_back(b);
 }
 
 }  // namespace
@@ -62,47 +50,35 @@ Scene dense_pile(std::size_t n, double size, double aspect) {
   return s;
 }
 
-Scene body_pile(std::size_t n, double radius, int sides, unsigned seed) {
-  if (sides < 3 || !(radius > 0)) throw std::invalid_argument("body_pile: sides >= 3, radius > 0");
-  Scene s;
+Scene body_pile(std::size_t n, double size, int members) {
+  if (members < 1) throw std::invalid_argument("body_pile: members >= 1");
+  Scene s = dense_pile(n, size);
   s.source = "body_pile";
-  s.simulation.steps = 100;
-  s.simulation.gravity = {0, -9.81};
-  s.materials.push_back({"sand", 2650, 1e8, 1e7, 0.5, 0.3});
-  const std::size_t bodies = std::max<std::size_t>(1, (n + sides / 2) / sides);
-  // A hexagonal lattice about square: columns × rows of pitch p and row height p·√3/2.
-  const double pitch = 2 * radius * 0.998, row_height = pitch * std::sqrt(3.0) / 2;
-  const auto columns = static_cast<std::size_t>(
-      std::max(1.0, std::ceil(std::sqrt(static_cast<double>(bodies) * row_height / pitch))));
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> turn(0, 2 * std::numbers::pi);
-  const double wedge = 2 * std::numbers::pi / sides;
-  for (std::size_t k = 0; k < bodies; ++k) {
-    const std::size_t row = k / columns, column = k % columns;
-    const Vec2d c{radius + static_cast<double>(column) * pitch + (row % 2 ? 0.5 * pitch : 0.0),
-                  radius + static_cast<double>(row) * row_height};
-    const double phase = turn(rng);
+  const std::size_t grains = s.triangles.size() - 3;  // dense_pile's walls come last
+  // dense_pile's lattice rows: every grain's lowest vertex is on its row's base line.
+  const double row_height = size * std::sqrt(3.0) / 2;
+  auto row_of = [&](const TriangleSpec& t) {
+    const double low = std::min({t.vertices[0].y, t.vertices[1].y, t.vertices[2].y});
+    return std::llround(low / row_height);
+  };
+  for (std::size_t i = 0; i < grains;) {
     BodySpec b;
-    b.first = s.triangles.size();
-    b.count = static_cast<std::size_t>(sides);
-    for (int m = 0; m < sides; ++m) {
-      const double a0 = phase + m * wedge, a1 = a0 + wedge;
-      TriangleSpec t;
-      t.vertices = {c, c + Vec2d{std::cos(a0), std::sin(a0)} * radius,
-                    c + Vec2d{std::cos(a1), std::sin(a1)} * radius};
-      s.triangles.push_back(t);
+    b.first = i;
+    const long long row = row_of(s.triangles[i]);
+    while (i < grains && b.count < static_cast<std::size_t>(members) &&
+           row_of(s.triangles[i]) == row) {
+      ++b.count;
+      ++i;
     }
     s.bodies.push_back(b);
   }
-  const std::size_t rows = (bodies + columns - 1) / columns;
-  const double w = 2 * radius + (static_cast<double>(columns) - 0.5) * pitch;
-  const double h = 2 * radius + static_cast<double>(rows) * row_height;
-  const double depth = w + 4 * radius, skin = 0.001 * radius;  // walls touch the outer bodies
-  add_lone(s, fixed_triangle({w + depth, -skin}, {-depth, -skin}, {0.5 * w, -skin - depth}));
-  add_lone(s,
-           fixed_triangle({skin, -4 * radius}, {skin, h + 2 * radius}, {-depth + skin, 0.5 * h}));
-  add_lone(s, fixed_triangle({w - skin, h + 2 * radius}, {w - skin, -4 * radius},
-                             {w + depth - skin, 0.5 * h}));
+  for (std::size_t i = grains; i < s.triangles.size(); ++i) {
+    BodySpec wall;
+    wall.first = i;
+    wall.count = 1;
+    wall.motion = s.triangles[i].motion;
+    s.bodies.push_back(wall);
+  }
   return s;
 }
 

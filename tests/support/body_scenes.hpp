@@ -38,17 +38,18 @@ inline void add_polygon(Scene& s, Vec2d c, double r, int sides, double phase, Ve
 }
 
 /// Three polygons (5, 7 and 6 triangles) and a lone triangle flying into one another and
-/// onto a fixed slab of two triangles; no gravity, friction and damping. The first
-/// contacts come after about 1000 steps, and the bodies are in contact to step 4000.
+/// onto a fixed slab of two triangles; no gravity, friction and damping; dt = 1 µs. Measured
+/// on the CPU: the first contacts after 1000 steps, 2 touching pairs at steps 1500 and 2000,
+/// 4 at 3000 and 3500, none at 4000.
 inline Scene colliding_bodies() {
   Scene s = empty_scene(1e8, 2500, 0.5, 0.3);
   s.simulation.dt = 1e-6;
-  add_polygon(s, {0, 0}, 0.01, 5, 0.0, {0.5, -0.2}, 10);
-  add_polygon(s, {0.0235, 0.004}, 0.012, 7, 0.3, {-0.4, 0}, -5);
-  add_polygon(s, {0.004, 0.0215}, 0.01, 6, 0.1, {0, -0.5}, 3);
+  add_polygon(s, {0, 0}, 0.01, 5, 0.0, {1.5, -0.6}, 30);
+  add_polygon(s, {0.0235, 0.004}, 0.012, 7, 0.3, {-1.2, 0}, -15);
+  add_polygon(s, {0.004, 0.0215}, 0.01, 6, 0.1, {0, -1.5}, 9);
   const std::size_t lone = s.triangles.size();
   s.triangles.push_back(triangle({0.021, 0.019}, {0.031, 0.019}, {0.026, 0.027}));
-  add_body(s, lone, {-0.3, -0.4}, 0);
+  add_body(s, lone, {-0.9, -1.2}, 0);
   const std::size_t slab = s.triangles.size();
   s.triangles.push_back(triangle({-0.015, -0.02}, {0.04, -0.02}, {0.04, -0.0105}));
   s.triangles.push_back(triangle({-0.015, -0.02}, {0.04, -0.0105}, {-0.015, -0.0105}));
@@ -56,9 +57,10 @@ inline Scene colliding_bodies() {
   return s;
 }
 
-/// A pile of `bodies` decagons (10 triangles each) settling on a floor between walls.
-inline Scene settling_body_pile(std::size_t bodies = 40) {
-  Scene s = body_pile(bodies * 10, 0.01, 10, 3);
+/// The standard body_pile of about 400 triangles in bodies of 10: pre-stressed like
+/// dense_pile, it decompresses and settles on its floor, in contact from the first step.
+inline Scene settling_body_pile(std::size_t triangles = 400) {
+  Scene s = body_pile(triangles);
   s.source = "settling body pile";
   return s;
 }

@@ -2,10 +2,11 @@
 // The kernels of bodies of several triangles, after the members' own gather (gather_kernel
 // of step_kernels.cuh, without its per-particle runaway test): the per-body sum of the
 // members' loads with the runaway test of each body (thread per body, members in
-// ascending order: CpuSolver::gather_bodies' order), the body's step with its members'
-// energy rows (thread per body: CpuSolver::integrate_bodies), then every member placed on
-// its body with the geometry of the new state (thread per triangle: place_members, fused
-// with the Geometry stage as integrate_kernel is). Scenes without bodies never launch them.
+// ascending order: CpuSolver::gather_bodies' order), the members' energy rows (thread per
+// triangle) and the body's step (thread per body: CpuSolver::integrate_bodies), then every
+// member placed on its body with the geometry of the new state (thread per triangle:
+// place_members, fused with the Geometry stage as integrate_kernel is). Scenes without bodies never
+// launch them.
 #include "backends/cuda/body_buffers.cuh"
 #include "backends/cuda/step_kernels.cuh"
 #include "physics/rigid_body.hpp"
@@ -48,19 +49,16 @@ __global__ void body_gather_kernel(ParticleArrays<Real> p, BodyArrays b, StepPar
     atomicMin(&status->bad, k);
 }
 
-/// The step of each body (unless some body ran away or some pair overlaps too deep: then
-/// the last good state stays, as on the CPU), with its members' rows of energy (read
-/// before any member moves: place_members_kernel runs after) and the body's local damping,
-/// booked on its first member.
+/// The energy rows of every member (unless the step was refused): thread per triangle, as
+/// CpuSolver::integrate_bodies adds them (free = false: a member's row only; its body's
+/// local damping goes to another sum, in body_integrate_kernel), before any member moves,
+/// so the walls' member velocities read are those of the step.
 template <class Real>
-__global__ void body_integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, BodyArrays b,
-                                      StepParams<Real> sp, const StepStatus* status) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= b.n) return;
+__global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
+                                     StepParams<Real> sp, const StepStatus* status) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n) return;
   if (status->bad != INT_MAX || status->deep != INT_MAX) return;
-  const physics::Pose<double> before = body_pose(b, k);
-  const physics::Pose<double> after = advanced_body_pose(b, sp, k);
-  const bool free = b.body_motion[k] == Motion::Free;
   auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
     if (!sp.walls_move || p.free[j] != 0) return false;
     v = {p.vx[j], p.vy[j]};
@@ -68,10 +66,24 @@ __global__ void body_integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q
     return true;
   };
   double* const* sums = p.energy;
-  for (std::int64_t i = b.body_first[k]; i < b.body_last[k]; ++i)
-    tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, false, before,
-                            after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
-                            sp.gravity, sp.local_damping, sp.dt);
+  const physics::Pose<double> unused{};  // read only for a free particle's local damping
+  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, false, unused,
+                          unused, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
+                          sp.gravity, sp.local_damping, sp.dt);
+}
+
+/// The step of each body (unless some body ran away or some pair overlaps too deep: then
+/// the last good state stays, as on the CPU), with the body's local damping, booked on its
+/// first member.
+template <class Real>
+__global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, StepParams<Real> sp,
+                                      const StepStatus* status) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= b.n) return;
+  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  const physics::Pose<double> before = body_pose(b, k);
+  const physics::Pose<double> after = advanced_body_pose(b, sp, k);
+  const bool free = b.body_motion[k] == Motion::Free;
   if (free && sp.local_damping > 0)
     p.energy[kDissipatedLocal][b.body_first[k]] += physics::local_damping_dissipation(
         before, after, Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k], b.body_inv_mass[k],

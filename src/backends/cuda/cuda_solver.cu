@@ -215,12 +215,15 @@ void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status)
   TRIDEM_CUDA_CHECK_LAUNCH("body_gather_kernel");
 }
 
-// Bodies: every body's step (its members' energy rows read the members' velocities as
-// they were), then every member placed on its body, with the geometry of the new state.
+// Bodies: every member's energy row (reading the members' velocities as they were) and
+// every body's step, then every member placed on its body, with the geometry of the new
+// state.
 template <class Real>
 void CudaSolver<Real>::integrate(const ParticleArrays<Real>& p, StepStatus* status) {
+  member_energy_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status);
+  TRIDEM_CUDA_CHECK_LAUNCH("member_energy_kernel");
   body_integrate_kernel<Real>
-      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, step_pairs_, body_arrays(), params_, status);
+      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status);
   TRIDEM_CUDA_CHECK_LAUNCH("body_integrate_kernel");
   place_members_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, body_arrays(), status);
   TRIDEM_CUDA_CHECK_LAUNCH("place_members_kernel");
