@@ -36,10 +36,10 @@
 //   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
 //                     [simulation.decomposition] for --method=decomposition (default 1d,
 //                     capacity 256; rows and columns 2d only, chosen when not given)
-//   --scenes=LIST     dense_pile (default), body_pile, or both: body_pile(n) is the same
-//                     measure on about n triangles grouped in rigid decagons of 10 triangles
-//                     (issue 13: 10^6 triangles in 10^5 bodies against dense_pile(10^6));
-//                     its cases are body_pile/<backend>/n:<n>
+//   --scenes=LIST     dense_pile (default), body_pile, or both: body_pile(n) is dense_pile(n)
+//                     with its grains grouped into rigid bodies of 10 triangles (issue 13:
+//                     10^6 triangles in 10^5 bodies against dense_pile(10^6)); its cases
+//                     are body_pile/<backend>/n:<n>
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
