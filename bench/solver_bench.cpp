@@ -36,6 +36,10 @@
 //   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
 //                     [simulation.decomposition] for --method=decomposition (default 1d,
 //                     capacity 256; rows and columns 2d only, chosen when not given)
+//   --scenes=LIST     dense_pile (default), body_pile, or both: body_pile(n) is dense_pile(n)
+//                     with its grains grouped into rigid bodies of 10 triangles (issue 13:
+//                     10^6 triangles in 10^5 bodies against dense_pile(10^6)); its cases
+//                     are body_pile/<backend>/n:<n>
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
@@ -123,12 +127,19 @@ bool g_stage_timing = true;
 /// How pairs are found in every case (--method, --contact_test, --bbox_prefilter).
 tridem::SimulationSettings g_method;
 
-/// The scene of the last size asked for: built once per size, not once per repetition.
-const tridem::Scene& pile(std::size_t n) {
+/// Which standard pile a case measures.
+enum class Pile { Dense, Bodies };
+const char* pile_name(Pile p) { return p == Pile::Dense ? "dense_pile" : "body_pile"; }
+
+/// The scene of the last pile and size asked for: built once per size, not once per
+/// repetition.
+const tridem::Scene& pile(Pile kind, std::size_t n) {
   static std::size_t cached_n = 0;
+  static Pile cached_kind = Pile::Dense;
   static tridem::Scene scene;
-  if (cached_n != n) {
-    scene = tridem::dense_pile(n);
+  if (cached_n != n || cached_kind != kind) {
+    scene = kind == Pile::Dense ? tridem::dense_pile(n) : tridem::body_pile(n);
+    cached_kind = kind;
     scene.simulation.method = g_method.method;
     scene.simulation.contact_test = g_method.contact_test;
     scene.simulation.bbox_prefilter = g_method.bbox_prefilter;
@@ -138,18 +149,18 @@ const tridem::Scene& pile(std::size_t n) {
   return scene;
 }
 
-std::unique_ptr<tridem::Solver> make(const Variant& v, std::size_t n) {
-  tridem::Scene scene = pile(n);
+std::unique_ptr<tridem::Solver> make(const Variant& v, Pile kind, std::size_t n) {
+  tridem::Scene scene = pile(kind, n);
   scene.simulation.backend = v.backend;
   scene.simulation.precision = v.precision;
   return tridem::make_solver(scene, tridem::SolverConfig{});
 }
 
 /// A solver past its warm-up steps, or none (the case then reports why and is skipped).
-std::unique_ptr<tridem::Solver> warmed_up(benchmark::State& state, const Variant& v,
-                                          std::size_t n) {
+std::unique_ptr<tridem::Solver> warmed_up(benchmark::State& state, const Variant& v, std::size_t n,
+                                          Pile kind = Pile::Dense) {
   try {
-    auto solver = make(v, n);
+    auto solver = make(v, kind, n);
     solver->advance(kWarmupSteps);
     return solver;
   } catch (const std::exception& e) {
@@ -160,9 +171,9 @@ std::unique_ptr<tridem::Solver> warmed_up(benchmark::State& state, const Variant
   }
 }
 
-void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int64_t k) {
+void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std::int64_t k) {
   const Backend backend = v.backend;
-  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
+  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n, kind);
   if (!solver) return;
   solver->set_stage_timing(g_stage_timing);
   const tridem::StageTimes before = solver->stage_times();
@@ -188,6 +199,7 @@ void dense_pile_case(benchmark::State& state, Variant v, std::size_t n, std::int
   state.counters["steps_per_iter"] = static_cast<double>(k);
   state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  state.counters["bodies"] = static_cast<double>(snap.body_count());
   const tridem::StageTimes after = solver->stage_times();
   const auto steps = static_cast<double>(after.steps - before.steps);
   for (int s = 0; s < tridem::kStageCount && steps > 0; ++s) {
@@ -250,6 +262,25 @@ int main(int argc, char** argv) {
     start = comma + 1;
   }
   const bool frames = !take_flag(argc, argv, "frames").empty();
+  std::vector<Pile> piles;
+  {
+    const std::string scenes_flag = take_flag(argc, argv, "scenes");
+    const std::string scenes = scenes_flag.empty() ? "dense_pile" : scenes_flag;
+    for (std::size_t at = 0; at <= scenes.size();) {
+      const std::size_t comma = std::min(scenes.find(',', at), scenes.size());
+      const std::string name = scenes.substr(at, comma - at);
+      if (name == pile_name(Pile::Dense))
+        piles.push_back(Pile::Dense);
+      else if (name == pile_name(Pile::Bodies))
+        piles.push_back(Pile::Bodies);
+      else {
+        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile; got '" << name
+                  << "'\n";
+        return 2;
+      }
+      at = comma + 1;
+    }
+  }
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
   tridem::DecompositionSettings& d = g_method.decomposition;
   using tridem::bench::take_choice;
@@ -281,10 +312,13 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("tridem_build_type", TRIDEM_BENCH_BUILD_TYPE);
   benchmark::AddCustomContext("tridem_version", TRIDEM_VERSION);
   benchmark::AddCustomContext("gpu", tridem::cuda_device_description());
-  benchmark::AddCustomContext("scene", "dense_pile(n), method " +
-                                           tridem::method_description(g_method.method,
-                                                                      g_method.contact_test,
-                                                                      g_method.bbox_prefilter));
+  std::string scene_names;
+  for (Pile p : piles)
+    scene_names += std::string(scene_names.empty() ? "" : ", ") + pile_name(p) + "(n)";
+  benchmark::AddCustomContext("scene",
+                              scene_names + ", method " +
+                                  tridem::method_description(g_method.method, g_method.contact_test,
+                                                             g_method.bbox_prefilter));
 
   for (const std::size_t n : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000},
                               std::size_t{1000000}, std::size_t{10000000}}) {
@@ -292,14 +326,16 @@ int main(int argc, char** argv) {
     for (const Variant& v : variants) {
       const std::string size = "/n:" + std::to_string(n);
       const Work w = v.backend == Backend::Cuda ? gpu_work(n) : work(n);
-      auto* bm = benchmark::RegisterBenchmark(
-          (std::string("dense_pile/") + v.name() + method_tag + size).c_str(), dense_pile_case, v,
-          n, w.steps_per_iteration);
       const auto iters = std::max<std::int64_t>(
           1, std::llround(static_cast<double>(w.iterations) * iter_scale));
-      bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(
-          benchmark::kMillisecond);
-      if (n >= 1000000 && large_reps > 0) bm->Repetitions(large_reps);
+      for (const Pile kind : piles) {
+        auto* bm = benchmark::RegisterBenchmark(
+            (std::string(pile_name(kind)) + "/" + v.name() + method_tag + size).c_str(), pile_case,
+            v, kind, n, w.steps_per_iteration);
+        bm->Iterations(iters)->UseRealTime()->MeasureProcessCPUTime()->Unit(
+            benchmark::kMillisecond);
+        if (n >= 1000000 && large_reps > 0) bm->Repetitions(large_reps);
+      }
       if (!frames) continue;
       for (const bool contacts : {false, true}) {
         auto* fb = benchmark::RegisterBenchmark(

@@ -35,8 +35,10 @@ struct Checkpoint {
 };
 
 /// A hash of what defines the particles of a scene: their count, vertices, velocities,
-/// motions and materials' densities. Contact parameters, dt and outputs are left out, so
-/// that a run may go on with, say, a smaller dt after a blow-up.
+/// motions and materials' densities, and, when some body has several triangles, how the
+/// triangles are grouped into bodies and the bodies' velocities and motions. Contact
+/// parameters, dt and outputs are left out, so that a run may go on with, say, a smaller
+/// dt after a blow-up.
 std::uint64_t scene_fingerprint(const Scene& scene);
 
 /// The settings of `scene` (command-line overrides applied) that change its trajectory,

@@ -18,8 +18,13 @@
 //    as the solver accumulates them, so that a restarted run sums them in the same order
 //    and writes the same energy.csv: energy[k] has one entry per particle, or is empty
 //    for zeros (k indexes EnergyAccumulator).
+//  - Bodies of several triangles (tridem/body_fields.hpp): the pose and velocities of each
+//    body (body_x, ..., body_omega), one entry per body in Scene::bodies order, all empty
+//    when the scene has no body of several triangles. The members' per-particle state is
+//    stored as well (it is what the body's pose places them at, bit for bit).
 //  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
 //    would have given without the round trip.
+#include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
 
 #include <array>
@@ -37,19 +42,26 @@ struct SolverState {
   /// x, y, theta, vx, vy, omega, energy; column(field), for_each_field(f) in checkpoint
   /// order, kArraysPerParticle.
   TRIDEM_PUBLIC_COLUMNS(TRIDEM_CHECKPOINTED_FIELDS)
+  /// body_x, body_y, body_theta, body_vx, body_vy, body_omega: one entry per body, or
+  /// empty without bodies of several triangles; column(body_field), for_each_body_column(f).
+  TRIDEM_BODY_PUBLIC_COLUMNS(TRIDEM_BODY_CHECKPOINTED_FIELDS)
   TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_DECLARE_PAIR_COLUMN)
   TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_PAIR_COLUMN_ACCESSOR)
 
   std::size_t size() const { return x.size(); }
+  std::size_t bodies() const { return body_x.size(); }
+  /// Arrays per body.
+  static constexpr int kArraysPerBody = 0 TRIDEM_BODY_CHECKPOINTED_FIELDS(TRIDEM_PLUS_COUNT);
   std::size_t pairs() const { return pair_emitter.size(); }
   /// Bytes of one pair's history.
   static constexpr std::size_t kBytesPerPair = 0 TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_PAIR_BYTES);
 };
 
-/// Checks `state` against a solver of `particles` particles: array sizes, pair indices in
-/// range and distinct, pairs strictly sorted, values finite. Throws tridem::Error naming
-/// the first problem, prefixed by `source` (a file name, or the solver's name).
-void validate_solver_state(const SolverState& state, std::size_t particles,
+/// Checks `state` against a solver of `particles` particles and `bodies` bodies of several
+/// triangles (0 without): array sizes, pair indices in range and distinct, pairs strictly
+/// sorted, values finite. Throws tridem::Error naming the first problem, prefixed by
+/// `source` (a file name, or the solver's name).
+void validate_solver_state(const SolverState& state, std::size_t particles, std::size_t bodies,
                            const std::string& source);
 
 }  // namespace tridem

@@ -1,7 +1,8 @@
 #pragma once
-// Host columns of the per-particle fields (tridem/particle_fields.hpp) and how both
-// backends start them from a ParticleModel.
+// Host columns of the per-particle fields (tridem/particle_fields.hpp) and of the per-body
+// ones (tridem/body_fields.hpp), and how both backends start them from a ParticleModel.
 #include "core/particle_model.hpp"
+#include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
 
 #include <vector>
@@ -16,6 +17,26 @@ std::vector<typename Field::template type<Real>> initial_column(Field, const Par
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = Field::template initial<Real>(m, i, k);
   return v;
 }
+
+/// A per-body field (`count` = the bodies) or per-member one (`count` = the triangles) of
+/// the bodies' model, at its initial value.
+template <class Field>
+std::vector<typename Field::template type<double>> initial_body_column(Field, const BodyModel& m,
+                                                                       std::size_t count) {
+  std::vector<typename Field::template type<double>> v(count);
+  for (std::size_t i = 0; i < count; ++i) v[i] = Field::template initial<double>(m, i, 0);
+  return v;
+}
+
+/// The per-body and per-member fields on the host (the CUDA solver's copy for snapshots).
+struct BodyColumns {
+  template <class T>
+  using Column = std::vector<T>;
+  TRIDEM_BODY_FIELDS(TRIDEM_DECLARE_COLUMNS)
+  TRIDEM_MEMBER_FIELDS(TRIDEM_DECLARE_COLUMNS)
+  TRIDEM_BODY_FIELDS(TRIDEM_BODY_COLUMN_ACCESSOR)
+  TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_COLUMN_ACCESSOR)
+};
 
 /// The Model fields on the host: what the CUDA solver keeps there for snapshots.
 template <class Real>

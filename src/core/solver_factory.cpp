@@ -13,7 +13,7 @@
 namespace tridem {
 
 namespace {
-/// What backend = auto picks when the GPU is out: absent, or unable to run the scene.
+/// What backend = auto picks when no GPU is usable.
 Backend fastest_cpu_backend() { return omp_get_max_threads() > 1 ? Backend::OpenMP : Backend::Cpu; }
 }  // namespace
 
@@ -87,15 +87,7 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   check_method(scene);
   check_time_step(scene, ts, config.force);
   const Backend requested = scene.simulation.backend;
-  Backend backend = resolve_backend(requested);
-  if (backend == Backend::Cuda && !model.bodies.empty()) {
-    // Not yet on the GPU (issue 13): refused, never run as loose triangles.
-    if (requested != Backend::Auto)
-      throw RunError(
-          "the cuda backend does not run bodies of several triangles ([[body]]) yet: use "
-          "--backend cpu or openmp for this scene");
-    backend = fastest_cpu_backend();
-  }
+  const Backend backend = resolve_backend(requested);
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(
         "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "

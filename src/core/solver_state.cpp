@@ -27,7 +27,7 @@ void check_finite(const std::vector<double>& v, const char* what, const std::str
 
 }  // namespace
 
-void validate_solver_state(const SolverState& s, std::size_t particles,
+void validate_solver_state(const SolverState& s, std::size_t particles, std::size_t bodies,
                            const std::string& source) {
   if (s.step < 0) throw Error(fmt::format("{}: negative step {}", source, s.step));
   if (!std::isfinite(s.time) || s.time < 0)
@@ -40,6 +40,17 @@ void validate_solver_state(const SolverState& s, std::size_t particles,
       check_size(v.size(), particles, what.c_str(), source);
       check_finite(v, what.c_str(), source);
     });
+  });
+  SolverState::for_each_body_column([&](auto field) {
+    const std::vector<double>& v = s.column(field);
+    const std::string what = std::string("body ") + decltype(field)::name;
+    if (v.size() != bodies)
+      throw Error(fmt::format("{}: state has {} values of {} for {} bodies of several "
+                              "triangles (a checkpoint of another scene?)",
+                              source, v.size(), what, bodies));
+    for (std::size_t b = 0; b < v.size(); ++b)
+      if (!std::isfinite(v[b]))
+        throw Error(fmt::format("{}: {} of body {} is not finite ({})", source, what, b, v[b]));
   });
   const std::size_t m = s.pair_emitter.size();
   for_each_pair_history_field([&](auto field) {

@@ -2,7 +2,9 @@
 
 #include "tridem/generate.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace tridem {
 
@@ -45,6 +47,38 @@ Scene dense_pile(std::size_t n, double size, double aspect) {
   s.triangles.push_back(fixed_triangle({w + depth, -skin + 0}, {-depth, -skin}, {0.5 * w, -skin - depth}));
   s.triangles.push_back(fixed_triangle({skin, -2 * size}, {skin, h + size}, {-depth + skin, 0.5 * h}));
   s.triangles.push_back(fixed_triangle({w - skin, h + size}, {w - skin, -2 * size}, {w + depth - skin, 0.5 * h}));
+  return s;
+}
+
+Scene body_pile(std::size_t n, double size, int members) {
+  if (members < 1) throw std::invalid_argument("body_pile: members >= 1");
+  Scene s = dense_pile(n, size);
+  s.source = "body_pile";
+  const std::size_t grains = s.triangles.size() - 3;  // dense_pile's walls come last
+  // dense_pile's lattice rows: every grain's lowest vertex is on its row's base line.
+  const double row_height = size * std::sqrt(3.0) / 2;
+  auto row_of = [&](const TriangleSpec& t) {
+    const double low = std::min({t.vertices[0].y, t.vertices[1].y, t.vertices[2].y});
+    return std::llround(low / row_height);
+  };
+  for (std::size_t i = 0; i < grains;) {
+    BodySpec b;
+    b.first = i;
+    const long long row = row_of(s.triangles[i]);
+    while (i < grains && b.count < static_cast<std::size_t>(members) &&
+           row_of(s.triangles[i]) == row) {
+      ++b.count;
+      ++i;
+    }
+    s.bodies.push_back(b);
+  }
+  for (std::size_t i = grains; i < s.triangles.size(); ++i) {
+    BodySpec wall;
+    wall.first = i;
+    wall.count = 1;
+    wall.motion = s.triangles[i].motion;
+    s.bodies.push_back(wall);
+  }
   return s;
 }
 

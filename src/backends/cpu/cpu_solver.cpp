@@ -51,15 +51,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (!model.bodies.empty()) {
     const BodyModel& bm = model.bodies;
     n_bodies_ = bm.size();
-    auto fill = [this, &bm](auto field, std::size_t count) {
-      using Field = decltype(field);
-      for_each_array(this->column(field), [&](auto& v, int k) {
-        v.resize(count);
-        for (std::size_t i = 0; i < count; ++i) v[i] = Field::template initial<Real>(bm, i, k);
-      });
-    };
-    for_each_body_field([&](auto field) { fill(field, n_bodies_); });
-    for_each_member_field([&](auto field) { fill(field, n_); });
+    for_each_body_field(
+        [&](auto field) { column(field) = initial_body_column(field, bm, n_bodies_); });
+    for_each_member_field([&](auto field) { column(field) = initial_body_column(field, bm, n_); });
     place_members();
   }
   for (const auto& law : contact_law_table(scene.materials))
@@ -423,6 +417,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.resize(n_);
   copy_shown_fields(out, *this);
   fill_from_model(out, *this);
+  fill_bodies(out, *this, n_bodies_);
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.

@@ -9,28 +9,20 @@
 
 namespace tridem {
 
-namespace {
-// Not yet: the per-body state is not in the checkpoint format (issue 13).
-constexpr const char* kBodiesNotCheckpointed =
-    "checkpoints and restarts of scenes with [[body]] blocks of several triangles are not "
-    "supported yet: leave checkpoint_every at 0 (the per-body state is not in the checkpoint "
-    "format)";
-}  // namespace
-
 template <class Real>
 void CpuSolver<Real>::save_state(SolverState& out) const {
-  if (n_bodies_ > 0) throw RunError(kBodiesNotCheckpointed);
   out.step = step_;
   out.time = time_;
   // The checkpointed fields are double in every precision: copied exactly.
   SolverState::for_each_field([&](auto field) { out.column(field) = column(field); });
+  // Bodies: their own pose and velocities (empty columns without bodies).
+  SolverState::for_each_body_column([&](auto field) { out.column(field) = column(field); });
   append_history(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), old_slip_.data());
 }
 
 template <class Real>
 void CpuSolver<Real>::load_state(const SolverState& in) {
-  if (n_bodies_ > 0) throw RunError(kBodiesNotCheckpointed);
-  validate_solver_state(in, n_, description());
+  validate_solver_state(in, n_, n_bodies_, description());
   step_ = in.step;
   time_ = in.time;
   // The checkpointed fields are double in every precision: copied exactly; an empty Sum
@@ -46,6 +38,12 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   for_each_particle_field([&](auto field) {
     if constexpr (decltype(field)::role == FieldRole::Force)
       for_each_array(column(field), [](auto& v, int) { std::fill(v.begin(), v.end(), Real(0)); });
+  });
+  // Bodies: validated to be as many as this solver's (none without bodies).
+  SolverState::for_each_body_column([&](auto field) { column(field) = in.column(field); });
+  for_each_body_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::Force)
+      std::fill(column(field).begin(), column(field).end(), 0.0);
   });
 
   history_rows(in, n_, old_pairs_.offset, old_pairs_.partner, old_slip_);

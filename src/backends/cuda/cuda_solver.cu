@@ -1,5 +1,6 @@
 #include "backends/cuda/cuda_solver.cuh"
 
+#include "backends/cuda/body_kernels.cuh"
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/step_kernels.cuh"
 #include "broadphase/candidate_pairs.hpp"
@@ -88,6 +89,10 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   laws_.upload(laws);
   params_.laws = laws_.data();
   d_.upload_initial(model);
+  if (!model.bodies.empty()) {
+    n_bodies_ = model.bodies.size();
+    bodies_.upload_initial(model.bodies, n_);
+  }
 
   const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
@@ -100,7 +105,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   status_.allocate(1);
   host_status_.allocate(1);
   staging_.allocate(staging_bytes<Real>(n_));
-  update_geometry();
+  update_geometry(n_bodies_ > 0);
 }
 
 template <class Real>
@@ -110,13 +115,19 @@ CudaSolver<Real>::~CudaSolver() {
 }
 
 template <class Real>
-void CudaSolver<Real>::update_geometry() {
+void CudaSolver<Real>::update_geometry(bool place) {
   const StepStatus fresh{0, INT_MAX, INT_MAX};
   TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
                                     cudaMemcpyHostToDevice, stream_));
-  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{},
-                                                             params_, status_.data(), false);
-  TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+  if (place) {
+    place_members_kernel<Real>
+        <<<blocks(n_), kBlock, 0, stream_>>>(arrays(), body_arrays(), status_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("place_members_kernel");
+  } else {
+    integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{},
+                                                               params_, status_.data(), false);
+    TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+  }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   rebuild_ = true;
 }
@@ -154,17 +165,23 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       const PairArrays<Real>& q = step_pairs_;
       if (q.count == 0) return;
       constexpr int threads = PairKernelShape<Real>::threads;
-      pair_forces_kernel<Real><<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(
-          p, q, params_, status);
+      const int grid = (q.count + threads - 1) / threads;
+      if (n_bodies_ > 0)
+        pair_forces_kernel<Real, true>
+            <<<grid, threads, 0, stream_>>>(p, q, params_, status, bodies_.member_body.data());
+      else
+        pair_forces_kernel<Real><<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr);
       TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
       return;
     }
-    case Stage::Gather:  // with the Check stage's runaway test of every particle
+    case Stage::Gather:  // with the Check stage's runaway test of every particle (body)
+      if (n_bodies_ > 0) return gather(p, status);
       gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                               false);
       TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
       return;
     case Stage::Integrate:  // with the Geometry stage of the next step
+      if (n_bodies_ > 0) return integrate(p, status);
       integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                                  true);
       TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
@@ -175,13 +192,41 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
       // The CPU's order: its pair stage stops on a deep pair before the integrator looks.
       if (host->deep != INT_MAX) report_penetration(host->deep);
-      if (host->bad != INT_MAX) report_runaway(host->bad);
+      if (host->bad != INT_MAX) {
+        if (n_bodies_ > 0) report_body_runaway(host->bad);
+        report_runaway(host->bad);
+      }
       rebuild_ = host->rebuild != 0;
       results_ = true;
       return;
     case Stage::Geometry:  // fused into Integrate (and run by update_geometry at the start)
       return;
   }
+}
+
+// Bodies: the members' sums (free ones), then each free body's, with its runaway test.
+template <class Real>
+void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status) {
+  gather_kernel<Real, true>
+      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, false);
+  TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+  body_gather_kernel<Real>
+      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status, false);
+  TRIDEM_CUDA_CHECK_LAUNCH("body_gather_kernel");
+}
+
+// Bodies: every member's energy row (reading the members' velocities as they were) and
+// every body's step, then every member placed on its body, with the geometry of the new
+// state.
+template <class Real>
+void CudaSolver<Real>::integrate(const ParticleArrays<Real>& p, StepStatus* status) {
+  member_energy_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status);
+  TRIDEM_CUDA_CHECK_LAUNCH("member_energy_kernel");
+  body_integrate_kernel<Real>
+      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status);
+  TRIDEM_CUDA_CHECK_LAUNCH("body_integrate_kernel");
+  place_members_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, body_arrays(), status);
+  TRIDEM_CUDA_CHECK_LAUNCH("place_members_kernel");
 }
 
 template <class Real>
@@ -206,6 +251,28 @@ void CudaSolver<Real>::report_runaway(int i) const {
       Vec2<Real>{at(d_.fx), at(d_.fy)}, at(d_.torque), at(d_.inv_mass), at(d_.inv_inertia),
       params_.gravity, params_.local_damping, params_.dt);
   throw RunError(runaway_message(step_ + 1, i, x, y, norm(pose.v), params_.dt, limit_));
+}
+
+template <class Real>
+void CudaSolver<Real>::report_body_runaway(int k) const {
+  // As report_runaway, for body k: its failed step redone on the host.
+  auto at = [k](const auto& buffer) {
+    typename std::decay_t<decltype(buffer)>::value_type v;
+    TRIDEM_CUDA_CHECK(cudaMemcpy(&v, buffer.data() + k, sizeof v, cudaMemcpyDeviceToHost));
+    return v;
+  };
+  const double x = at(bodies_.body_x), y = at(bodies_.body_y);
+  const physics::Pose<double> pose = physics::stepped_pose(
+      physics::Pose<double>{{x, y},
+                            at(bodies_.body_theta),
+                            {at(bodies_.body_vx), at(bodies_.body_vy)},
+                            at(bodies_.body_w)},
+      true, Vec2d{at(bodies_.body_fx), at(bodies_.body_fy)}, at(bodies_.body_torque),
+      at(bodies_.body_inv_mass), at(bodies_.body_inv_inertia), params_.gravity,
+      params_.local_damping, params_.dt);
+  throw RunError(
+      "body id " + std::to_string(k) + ": " +
+      runaway_message(step_ + 1, at(bodies_.body_first), x, y, norm(pose.v), params_.dt, limit_));
 }
 
 template <class Real>
@@ -237,6 +304,11 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
     gather_kernel<Real><<<blocks(n), kBlock, 0, stream_>>>(arrays(), pairs_->arrays(), params_,
                                                            status_.data(), true);
     TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+    if (n_bodies_ > 0) {  // and those of fixed and prescribed bodies
+      body_gather_kernel<Real><<<blocks(n_bodies_), kBlock, 0, stream_>>>(
+          arrays(), body_arrays(), params_, status_.data(), true);
+      TRIDEM_CUDA_CHECK_LAUNCH("body_gather_kernel");
+    }
   }
   // The shown fields, each array into its own place of the staging buffer, one
   // synchronisation, then into the snapshot in double.
@@ -263,6 +335,8 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
     });
   });
   fill_from_model(out, host_model_);
+  if (n_bodies_ > 0) bodies_.download(host_bodies_, n_bodies_, n);  // after the sync above
+  fill_bodies(out, host_bodies_, n_bodies_);
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   std::vector<int> offset, partner;

@@ -3,13 +3,14 @@
 // state stays on the GPU; only snapshots (output steps) copy it back. One step is the
 // CPU solver's stages (kPipeline) with the same sums in the same order, so that both
 // agree to rounding and two runs of one scene agree bit for bit.
-#include "backends/cuda/device_buffer.cuh"
+#include "backends/cuda/body_buffers.cuh"
 #include "backends/cuda/decomposed_rows.cuh"
+#include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
 #include "backends/cuda/particle_buffers.cuh"
 #include "backends/cuda/stage_events.cuh"
-#include "core/stage_pipeline.hpp"
 #include "core/particle_model.hpp"
+#include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
 #include "tridem/solver.hpp"
 
@@ -58,8 +59,15 @@ class CudaSolver final : public Solver {
 
  private:
   ParticleArrays<Real> arrays() const { return d_.view(static_cast<int>(n_)); }
-  void update_geometry();
+  BodyArrays body_arrays() const { return bodies_.view(static_cast<int>(n_bodies_)); }
+  /// The geometry of the current state (and a rebuild); with `place`, the members placed
+  /// on their bodies first (at the start, as CpuSolver's constructor does).
+  void update_geometry(bool place = false);
+  // Bodies of several members (n_bodies_ > 0): the stages' kernels for them.
+  void gather(const ParticleArrays<Real>& p, StepStatus* status);
+  void integrate(const ParticleArrays<Real>& p, StepStatus* status);
   [[noreturn]] void report_runaway(int particle) const;
+  [[noreturn]] void report_body_runaway(int body) const;
   [[noreturn]] void report_penetration(int emitter) const;
 
   std::size_t n_;
@@ -80,6 +88,10 @@ class CudaSolver final : public Solver {
   /// for snapshots.
   ParticleBuffers<Real> d_;
   ModelColumns<Real> host_model_;
+  /// Bodies, when some has several members (tridem/body_fields.hpp); else 0 and empty.
+  std::size_t n_bodies_ = 0;
+  BodyBuffers bodies_;
+  mutable BodyColumns host_bodies_;  ///< a snapshot's copy of them
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   /// method = decomposition: the pair list is built by sub-domain, every step.
   std::unique_ptr<DecomposedRows<Real>> decomposed_;

@@ -19,6 +19,11 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
       array_at(d_.column(field), k).download(to);
     });
   });
+  // Bodies: their own pose and velocities (empty columns without bodies).
+  SolverState::for_each_body_column([&](auto field) {
+    out.column(field).resize(n_bodies_);
+    bodies_.column(field).download(out.column(field));
+  });
   std::vector<int> offset, partner;
   std::vector<physics::PairSlip<Real>> slip;
   pairs_->download(offset, partner, &slip, nullptr);
@@ -27,7 +32,7 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
 
 template <class Real>
 void CudaSolver<Real>::load_state(const SolverState& in) {
-  validate_solver_state(in, n_, description());
+  validate_solver_state(in, n_, n_bodies_, description());
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   // An empty Sum reads as zeros. Forces are recomputed by the next step; until then
   // nothing stale is shown.
@@ -45,6 +50,15 @@ void CudaSolver<Real>::load_state(const SolverState& in) {
         b.upload(std::vector<typename Field::template type<Real>>(n_));
       });
   });
+  // Bodies: validated to be as many as this solver's (none without bodies).
+  if (n_bodies_ > 0) {
+    SolverState::for_each_body_column(
+        [&](auto field) { bodies_.column(field).upload(in.column(field)); });
+    for_each_body_field([&](auto field) {
+      if constexpr (decltype(field)::role == FieldRole::Force)
+        bodies_.column(field).upload(std::vector<double>(n_bodies_, 0.0));
+    });
+  }
   step_ = in.step;
   time_ = in.time;
   std::vector<int> offset, partner;

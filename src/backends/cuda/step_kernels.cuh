@@ -9,6 +9,7 @@
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/local_frame.hpp"
+#include "physics/rigid_body.hpp"
 
 #include <climits>
 
@@ -40,13 +41,23 @@ struct PairKernelShape<float> {
   static constexpr int threads = 128, min_blocks = 6;
 };
 
-template <class Real>
+/// kBodies: a scene with bodies of several triangles, whose members of one body
+/// (`member_body`) add exact zeros and keep no history (physics::same_body, as on the CPU);
+/// a scene without them compiles the kernel without the filter.
+template <class Real, bool kBodies = false>
 __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
     pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
-                       StepStatus* status) {
+                       StepStatus* status, const std::int32_t* member_body) {
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
+  if constexpr (kBodies) {
+    if (physics::same_body(member_body, e, j)) {
+      q.result[s] = physics::PairForce<Real>{};
+      q.slip[s] = physics::PairSlip<Real>{};
+      return;
+    }
+  }
   physics::PairSlip<Real> slip = q.slip[s];
   const physics::LawParameters<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
   const Vec2d origin{p.x[e], p.y[e]};
@@ -74,7 +85,9 @@ __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>
 /// Sums the forces of free particles and flags the lowest one whose step would run away
 /// (the state is not written yet). With `prescribed`, sums those of the other particles
 /// instead: only output needs them (wall forces), and walls can touch thousands of grains.
-template <class Real>
+/// kBodies: the particles are members of bodies, whose runaway test is their body's
+/// (body_kernels.cuh), so none is made here.
+template <class Real, bool kBodies = false>
 __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                               StepStatus* status, bool prescribed) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -85,7 +98,7 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
   p.fx[i] = f.x;
   p.fy[i] = f.y;
   p.torque[i] = t;
-  if (prescribed) return;
+  if (prescribed || kBodies) return;
   if (physics::runaway_step(advanced_pose(p, sp, i), static_cast<double>(p.half_size[i]), sp.dt))
     atomicMin(&status->bad, i);
 }

@@ -51,9 +51,10 @@ Header read_header(std::span<const std::uint8_t> bytes, const std::string& sourc
   h.header_crc = r.u32("header checksum");
   if (h.header_crc != header_crc(bytes))
     throw RunError(fmt::format("{}: corrupt: the header's checksum does not match", source));
-  if (h.version != fmt_::kVersion)
-    throw RunError(fmt::format("{}: checkpoint format version {}; this tridem reads version {}",
-                               source, h.version, fmt_::kVersion));
+  if (h.version < fmt_::kOldestReadVersion || h.version > fmt_::kVersion)
+    throw RunError(fmt::format("{}: checkpoint format version {}; this tridem reads versions "
+                               "{} to {}",
+                               source, h.version, fmt_::kOldestReadVersion, fmt_::kVersion));
   if (h.precision > 1)
     throw RunError(fmt::format("{}: corrupt: unknown precision code {}", source, h.precision));
   return h;
@@ -71,7 +72,7 @@ void check_sizes(const Header& h, std::size_t file_size, const std::string& sour
     throw RunError(fmt::format("{}: corrupt: {} bytes after the announced end of the state",
                                source, actual - h.payload_size));
   if (h.particles > (h.payload_size / fmt_::kBytesPerParticle) ||
-      fmt_::fixed_payload_size(h.particles) > h.payload_size)
+      fmt_::fixed_payload_size(h.particles, h.version) > h.payload_size)
     throw RunError(fmt::format("{}: corrupt: {} particles do not fit in {} bytes of state",
                                source, h.particles, h.payload_size));
 }
@@ -88,8 +89,23 @@ std::vector<PhysicsSetting> read_settings(io::ByteReader& r) {
   return settings;
 }
 
-SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& source,
-                         std::vector<PhysicsSetting>& settings) {
+/// The bodies' block (version 5): their count, then each body field for all bodies.
+void read_bodies(io::ByteReader& r, SolverState& s, const std::string& source) {
+  const std::uint64_t b = r.u64("body count");
+  if (b > r.remaining() / fmt_::kBytesPerBody || b * fmt_::kBytesPerBody + 8 > r.remaining())
+    throw RunError(fmt::format("{}: corrupt: {} bodies do not fit in the {} bytes of state "
+                               "left after the particles",
+                               source, b, r.remaining()));
+  SolverState::for_each_body_column([&](auto field) {
+    std::vector<double>& v = s.column(field);
+    const std::string what = std::string("body ") + decltype(field)::name;
+    v.resize(b);
+    for (double& value : v) get(r, value, what.c_str());
+  });
+}
+
+SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version,
+                         const std::string& source, std::vector<PhysicsSetting>& settings) {
   SolverState s;
   s.step = r.i64("step");
   s.time = r.f64("time");
@@ -106,6 +122,7 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, const std::string& so
       for (double& value : v) get(r, value, what.c_str());
     });
   });
+  if (version >= fmt_::kBodiesVersion) read_bodies(r, s, source);  // version 4: no bodies
   const std::uint64_t m = r.u64("pair count");
   if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
     throw RunError(fmt::format("{}: corrupt: {} pairs of contact history do not fill the "
@@ -129,7 +146,8 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   const SolverState& s = c.state;
   const std::size_t n = s.size(), m = s.pairs();
   std::vector<std::uint8_t> payload;
-  payload.reserve(fmt_::fixed_payload_size(n) + m * fmt_::kBytesPerPair);
+  payload.reserve(fmt_::fixed_payload_size(n) + s.bodies() * fmt_::kBytesPerBody +
+                  m * fmt_::kBytesPerPair);
   io::ByteWriter p(payload);
   p.i64(s.step);
   p.f64(s.time);
@@ -144,6 +162,10 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
       if (decltype(field)::role == FieldRole::Sum)  // empty: zeros
         for (std::size_t i = v.size(); i < n; ++i) put(p, 0.0);
     });
+  });
+  p.u64(s.bodies());
+  SolverState::for_each_body_column([&](auto field) {
+    for (double value : s.column(field)) put(p, value);
   });
   p.u64(m);
   for_each_pair_history_field([&](auto field) {
@@ -180,8 +202,9 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   Checkpoint c;
   c.meta.precision = h.precision == 1 ? Precision::Float : Precision::Double;
   c.meta.scene_hash = h.scene_hash;
-  c.state = read_payload(r, static_cast<std::size_t>(h.particles), source, c.meta.settings);
-  validate_solver_state(c.state, c.state.size(), source);
+  c.state =
+      read_payload(r, static_cast<std::size_t>(h.particles), h.version, source, c.meta.settings);
+  validate_solver_state(c.state, c.state.size(), c.state.bodies(), source);
   return c;
 }
 

@@ -40,6 +40,19 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
     h.add(t.angular_velocity);
   }
   for (const Material& m : scene.materials) h.add(m.density);
+  // Bodies of several triangles group the triangles: another grouping is another scene.
+  // Added only when there are some, so every bodiless scene keeps its fingerprint.
+  if (scene.has_bodies()) {
+    h.add(std::uint64_t{scene.bodies.size()});
+    for (const BodySpec& b : scene.bodies) {
+      h.add(std::uint64_t{b.first});
+      h.add(std::uint64_t{b.count});
+      h.add(static_cast<std::uint64_t>(b.motion));
+      h.add(b.velocity.x);
+      h.add(b.velocity.y);
+      h.add(b.angular_velocity);
+    }
+  }
   return h.value();
 }
 

@@ -1,6 +1,7 @@
 // Checkpoint files: exact round trip, and refusal with a message (never a crash, never a
 // wrong state) of every truncation, flipped bits, another format, scene or precision.
 #include "io/checkpoint/crc32.hpp"
+#include "io/checkpoint/format.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
@@ -33,7 +34,35 @@ Checkpoint sample_checkpoint() {
   s.energy[kDissipatedDamping] = {0.25, 1e-300, 3};
   s.energy[kDissipatedFriction] = {-0.0, 0, 7.5};
   s.energy[kWallWork] = {-2, 0, 1.0 / 3};  // local damping left empty: zeros
+  // Two bodies (of particles 0-1 and 2, say): their block of version 5.
+  s.body_x = {0.5, -0.0};
+  s.body_y = {1e-300, 2};
+  s.body_theta = {-3, 0.25};
+  s.body_vx = {1.0 / 7, 0};
+  s.body_vy = {-9.5, std::numeric_limits<double>::denorm_min()};
+  s.body_omega = {12, -1};
   return c;
+}
+
+/// `c` (without bodies) as version 4 wrote it: the same layout without the bodies' count.
+std::vector<std::uint8_t> version_4_bytes(const Checkpoint& c) {
+  namespace layout = checkpoint_format;
+  auto bytes = encode_checkpoint(c);
+  std::size_t settings = 4;
+  for (const PhysicsSetting& p : c.meta.settings) settings += 8 + p.key.size() + p.value.size();
+  const std::size_t body_count_at =
+      layout::kHeaderSize + 16 + settings + layout::kBytesPerParticle * c.state.size();
+  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at),
+              bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at + 8));
+  auto put_u32 = [&](std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
+  };
+  const std::uint64_t payload = bytes.size() - layout::kHeaderSize;
+  for (int k = 0; k < 8; ++k) bytes[32 + k] = static_cast<std::uint8_t>(payload >> (8 * k));
+  put_u32(8, 4);
+  put_u32(layout::kPayloadCrcOffset, io::crc32(std::span(bytes).subspan(layout::kHeaderSize)));
+  put_u32(layout::kHeaderCrcOffset, io::crc32(std::span(bytes).first(layout::kHeaderCrcOffset)));
+  return bytes;
 }
 
 void expect_refused(std::span<const std::uint8_t> bytes, const std::string& fragment) {
@@ -67,6 +96,58 @@ TEST(CheckpointFile, RoundTripIsExact) {
   EXPECT_TRUE(std::signbit(back.state.energy[kDissipatedFriction][0]));
   EXPECT_EQ(back.state.energy[kDissipatedLocal], (std::vector<double>{0, 0, 0}));
   EXPECT_EQ(back.state.energy[kWallWork], c.state.energy[kWallWork]);
+  SolverState::for_each_body_column([&](auto field) {
+    EXPECT_EQ(back.state.column(field), c.state.column(field)) << decltype(field)::name;
+  });
+  EXPECT_TRUE(std::signbit(back.state.body_x[1]));
+}
+
+TEST(CheckpointFile, BodilessStateHasNoBodies) {
+  Checkpoint c = sample_checkpoint();
+  SolverState::for_each_body_column([&](auto field) { c.state.column(field).clear(); });
+  const Checkpoint back = decode_checkpoint(encode_checkpoint(c), "mem");
+  EXPECT_EQ(back.state.bodies(), 0u);
+  EXPECT_TRUE(back.state.body_omega.empty());
+  EXPECT_EQ(back.state.x, c.state.x);
+}
+
+// Version 4 (before bodies) is still read: the same state, with no bodies.
+TEST(CheckpointFile, Version4IsReadAsAStateWithoutBodies) {
+  Checkpoint c = sample_checkpoint();
+  SolverState::for_each_body_column([&](auto field) { c.state.column(field).clear(); });
+  const auto v4 = version_4_bytes(c);
+  EXPECT_EQ(v4.size() + 8, encode_checkpoint(c).size());
+  const Checkpoint back = decode_checkpoint(v4, "old.ckpt");
+  EXPECT_EQ(back.state.bodies(), 0u);
+  EXPECT_EQ(back.state.step, c.state.step);
+  EXPECT_EQ(back.state.x, c.state.x);
+  EXPECT_EQ(back.state.omega, c.state.omega);
+  EXPECT_EQ(back.state.energy[kWallWork], c.state.energy[kWallWork]);
+  EXPECT_EQ(back.state.pair_partner, c.state.pair_partner);
+  EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
+  EXPECT_EQ(back.meta.settings, c.meta.settings);
+  for (std::size_t size = 0; size < v4.size(); ++size)
+    expect_refused(std::span(v4).first(size), "truncated");
+}
+
+// A body count that the bytes left cannot hold is refused before anything is sized by it.
+TEST(CheckpointFile, LyingBodyCountIsRefused) {
+  Checkpoint c = sample_checkpoint();
+  auto bytes = encode_checkpoint(c);
+  std::size_t settings = 4;
+  for (const PhysicsSetting& p : c.meta.settings) settings += 8 + p.key.size() + p.value.size();
+  const std::size_t at = checkpoint_format::kHeaderSize + 16 + settings +
+                         checkpoint_format::kBytesPerParticle * c.state.size();
+  ASSERT_EQ(bytes[at], 2);  // the two bodies
+  bytes[at + 6] = 0x7f;
+  auto put_u32 = [&](std::size_t pos, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) bytes[pos + k] = static_cast<std::uint8_t>(v >> (8 * k));
+  };
+  put_u32(checkpoint_format::kPayloadCrcOffset,
+          io::crc32(std::span(bytes).subspan(checkpoint_format::kHeaderSize)));
+  put_u32(checkpoint_format::kHeaderCrcOffset,
+          io::crc32(std::span(bytes).first(checkpoint_format::kHeaderCrcOffset)));
+  expect_refused(bytes, "bodies do not fit");
 }
 
 TEST(CheckpointFile, WriteAndReadThroughDisk) {
@@ -106,16 +187,16 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
   // Versions 1 (before the physics settings), 2 (before the energy sums) and 3 (six edge
-  // slips per pair, before the contact of issue 10), and the next one (5), with a
+  // slips per pair, before the contact of issue 10), and the next one (6), with a
   // consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  for (const int version : {1, 2, 3, 5}) {
+  for (const int version : {1, 2, 3, 6}) {
     bytes[8] = static_cast<std::uint8_t>(version);
     const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
     for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
     expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
-                              "; this tridem reads version 4");
+                              "; this tridem reads versions 4 to 5");
   }
 }
 

@@ -1,6 +1,7 @@
 // The run loop's side of checkpoints: restarted runs continue the output files exactly
 // (rows written after the checkpoint by a run that died are replaced, not duplicated), an
 // interruption and a blow-up leave a loadable checkpoint and final.csv.
+#include "support/body_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
@@ -60,6 +61,39 @@ TEST(RunCheckpoint, RestartContinuesTheOutputsExactly) {
   EXPECT_EQ(s.steps, 100);
   EXPECT_EQ(s.last_step, 300);
   expect_same_outputs(dir.path() / "straight", dir.path() / "broken");
+}
+
+// A scene of bodies of several triangles (issue 13) through run_scene, as `tridem run
+// --restart` runs it: the restarted run's outputs equal the straight run's.
+TEST(RunCheckpoint, RestartOfABodySceneContinuesTheOutputsExactly) {
+  test::TempDir dir;
+  auto bodies = [&](const char* name) {
+    Scene s = test::colliding_bodies();
+    s.simulation.steps = 3000;
+    s.simulation.backend = Backend::Cpu;
+    s.output.dir = (dir.path() / name).string();
+    s.output.every = 500;
+    s.output.checkpoint_every = 1000;
+    return s;
+  };
+  run(bodies("straight"));
+  const Checkpoint end = read_checkpoint(dir.path() / "straight" / "checkpoint.ckpt");
+  EXPECT_EQ(end.state.step, 3000);
+  EXPECT_EQ(end.state.bodies(), 5u);
+  const Scene broken = bodies("broken");
+  run(broken, 2000);
+  const fs::path saved = dir.path() / "at2000.ckpt";
+  fs::copy_file(dir.path() / "broken" / "checkpoint.ckpt", saved);
+  EXPECT_GT(read_checkpoint(saved).state.pairs(), 0u) << "the bodies touch at the restart";
+  const RunSummary s = run(broken, std::nullopt, saved);
+  EXPECT_EQ(s.steps, 1000);
+  EXPECT_EQ(s.last_step, 3000);
+  for (const char* f : {"energy.csv", "final.csv", "tridem.pvd", "frames/frame_000003000.vtu"})
+    EXPECT_EQ(test::read_file(dir.path() / "straight" / f),
+              test::read_file(dir.path() / "broken" / f))
+        << f;
+  EXPECT_EQ(read_checkpoint(dir.path() / "broken" / "checkpoint.ckpt").state.body_x,
+            end.state.body_x);
 }
 
 TEST(RunCheckpoint, InterruptionWritesCheckpointAndFinal) {

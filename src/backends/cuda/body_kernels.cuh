@@ -1,0 +1,118 @@
+#pragma once
+// The kernels of bodies of several triangles, after the members' own gather (gather_kernel
+// of step_kernels.cuh, without its per-particle runaway test): the per-body sum of the
+// members' loads with the runaway test of each body (thread per body, members in
+// ascending order: CpuSolver::gather_bodies' order), the members' energy rows (thread per
+// triangle) and the body's step (thread per body: CpuSolver::integrate_bodies), then every
+// member placed on its body with the geometry of the new state (thread per triangle:
+// place_members, fused with the Geometry stage as integrate_kernel is). Scenes without bodies never
+// launch them.
+#include "backends/cuda/body_buffers.cuh"
+#include "backends/cuda/step_kernels.cuh"
+#include "physics/rigid_body.hpp"
+
+#include <climits>
+
+namespace tridem::cuda {
+
+__device__ inline physics::Pose<double> body_pose(const BodyArrays& b, int k) {
+  return {{b.body_x[k], b.body_y[k]}, b.body_theta[k], {b.body_vx[k], b.body_vy[k]}, b.body_w[k]};
+}
+
+template <class Real>
+__device__ inline physics::Pose<double> advanced_body_pose(const BodyArrays& b,
+                                                           const StepParams<Real>& sp, int k) {
+  return physics::stepped_pose(body_pose(b, k), b.body_motion[k] == Motion::Free,
+                               Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k],
+                               b.body_inv_mass[k], b.body_inv_inertia[k], sp.gravity,
+                               sp.local_damping, sp.dt);
+}
+
+/// Sums the members' loads of each free body and flags the lowest body whose step would
+/// run away (nothing is written yet). With `prescribed`, sums those of the other bodies
+/// instead: only output needs them, as gather_kernel's walls.
+template <class Real>
+__global__ void body_gather_kernel(ParticleArrays<Real> p, BodyArrays b, StepParams<Real> sp,
+                                   StepStatus* status, bool prescribed) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= b.n || (b.body_motion[k] == Motion::Free) == prescribed) return;
+  Vec2d f{};
+  double t = 0;
+  for (std::int64_t i = b.body_first[k]; i < b.body_last[k]; ++i)
+    physics::add_member_load(f, t, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i],
+                             Vec2d{p.x[i] - b.body_x[k], p.y[i] - b.body_y[k]});
+  b.body_fx[k] = f.x;
+  b.body_fy[k] = f.y;
+  b.body_torque[k] = t;
+  if (prescribed) return;
+  if (physics::runaway_step(advanced_body_pose(b, sp, k), b.body_half_size[k], sp.dt))
+    atomicMin(&status->bad, k);
+}
+
+/// The energy rows of every member (unless the step was refused): thread per triangle, as
+/// CpuSolver::integrate_bodies adds them (free = false: a member's row only; its body's
+/// local damping goes to another sum, in body_integrate_kernel), before any member moves,
+/// so the walls' member velocities read are those of the step.
+template <class Real>
+__global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
+                                     StepParams<Real> sp, const StepStatus* status) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n) return;
+  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
+    if (!sp.walls_move || p.free[j] != 0) return false;
+    v = {p.vx[j], p.vy[j]};
+    w = p.w[j];
+    return true;
+  };
+  double* const* sums = p.energy;
+  const physics::Pose<double> unused{};  // read only for a free particle's local damping
+  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, false, unused,
+                          unused, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
+                          sp.gravity, sp.local_damping, sp.dt);
+}
+
+/// The step of each body (unless some body ran away or some pair overlaps too deep: then
+/// the last good state stays, as on the CPU), with the body's local damping, booked on its
+/// first member.
+template <class Real>
+__global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, StepParams<Real> sp,
+                                      const StepStatus* status) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= b.n) return;
+  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  const physics::Pose<double> before = body_pose(b, k);
+  const physics::Pose<double> after = advanced_body_pose(b, sp, k);
+  const bool free = b.body_motion[k] == Motion::Free;
+  if (free && sp.local_damping > 0)
+    p.energy[kDissipatedLocal][b.body_first[k]] += physics::local_damping_dissipation(
+        before, after, Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k], b.body_inv_mass[k],
+        sp.gravity, sp.local_damping, sp.dt);
+  b.body_x[k] = after.c.x;
+  b.body_y[k] = after.c.y;
+  b.body_theta[k] = after.theta;
+  if (!free) return;
+  b.body_vx[k] = after.v.x;
+  b.body_vy[k] = after.v.y;
+  b.body_w[k] = after.w;
+}
+
+/// Every member at its body's pose (unless the step was refused), then the geometry of
+/// the state it leaves, with the rebuild flag (integrate_kernel's update_geometry).
+template <class Real>
+__global__ void place_members_kernel(ParticleArrays<Real> p, BodyArrays b, StepStatus* status) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n) return;
+  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  const physics::Pose<double> m =
+      physics::member_pose(body_pose(b, b.member_body[i]), Vec2d{b.member_dx[i], b.member_dy[i]});
+  p.x[i] = m.c.x;
+  p.y[i] = m.c.y;
+  p.theta[i] = m.theta;
+  p.vx[i] = m.v.x;
+  p.vy[i] = m.v.y;
+  p.w[i] = m.w;
+  update_geometry(p, i, status);
+}
+
+}  // namespace tridem::cuda
