@@ -41,16 +41,25 @@ void expect_bodies_agree(const test::SolverChoice& choice, const Scene& scene, s
       test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method, choice.precision));
   auto gpu = test::solver_for(scene, choice);
   const bool in_float = choice.precision == Precision::Float;
+  // In float, the scale of the bodies' loads: how far the serial solver's float loads are
+  // from its double ones (below).
+  auto cpu_double =
+      in_float ? test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method))
+               : nullptr;
   const double dx = in_float ? test::kFloatPositionTolerance : test::kPositionTolerance;
   const double da = in_float ? test::kFloatAngleTolerance : test::kAngleTolerance;
   const double dv = in_float ? test::kFloatVelocityTolerance : test::kVelocityTolerance;
   contacts = 0;
-  Snapshot a, b;
+  Snapshot a, b, r;
   for (std::int64_t s = every; s <= steps; s += every) {
     cpu->advance(every);
     gpu->advance(every);
     cpu->snapshot(a, true);
     gpu->snapshot(b, true);
+    if (cpu_double) {
+      cpu_double->advance(every);
+      cpu_double->snapshot(r, false);
+    }
     const std::string what = scene.source + ", step " + std::to_string(s);
     ASSERT_EQ(a.size(), b.size());
     ASSERT_EQ(a.body_count(), b.body_count());
@@ -73,9 +82,22 @@ void expect_bodies_agree(const test::SolverChoice& choice, const Scene& scene, s
     if (!in_float) {
       EXPECT_EQ(a.contacts.size(), b.contacts.size()) << what;
     }
-    // The bodies' loads, fixed bodies' included (summed on the GPU only for output).
+    // The bodies' loads, fixed bodies' included (summed on the GPU only for output). In
+    // double they agree to rounding. In float a load is a sum of float pair forces in a
+    // stiff packing: a position difference of 1e-10 m moves it by 1e-3 N, so a bound
+    // relative to the load is no bound (1e-4 of it failed on the H200 with positions equal
+    // to 1e-10 m: bench/results/gpu_bodies_2026-12-01_nvidia-h200). The GPU and the CPU
+    // in float differ by float rounding (fused multiply-adds, division), as float differs
+    // from double: the largest float-vs-double load difference of the serial solver at
+    // that step, four times, is the bound.
+    double spread = 0;
+    for (std::size_t k = 0; cpu_double && k < a.body_fx.size(); ++k)
+      spread = std::max({spread, std::abs(a.body_fx[k] - r.body_fx[k]),
+                         std::abs(a.body_fy[k] - r.body_fy[k])});
+    if (in_float) std::printf("%s: float against double, loads differ by up to %.3g N\n",
+                              what.c_str(), spread);
     for (std::size_t k = 0; k < a.body_fx.size(); ++k) {
-      const double scale = (in_float ? 1e-4 : 1e-6) * (1 + std::hypot(a.body_fx[k], a.body_fy[k]));
+      const double scale = 4 * spread + 1e-6 * (1 + std::hypot(a.body_fx[k], a.body_fy[k]));
       EXPECT_NEAR(a.body_fx[k], b.body_fx[k], scale) << what << ": body " << k;
       EXPECT_NEAR(a.body_fy[k], b.body_fy[k], scale) << what << ": body " << k;
     }
