@@ -10,6 +10,7 @@
 #include "tridem/particle_fields.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace tridem {
 
@@ -41,6 +42,10 @@ namespace tridem {
 #define TRIDEM_BODY_FIELDS(F)                                                                \
   TRIDEM_BODY_MODEL_FIELDS(F) TRIDEM_BODY_STATE_FIELDS(F) TRIDEM_BODY_FORCE_FIELDS(F)
 
+/* What a Snapshot shows of each body (State and Force), and what a checkpoint stores */
+#define TRIDEM_BODY_SHOWN_FIELDS(F) TRIDEM_BODY_STATE_FIELDS(F) TRIDEM_BODY_FORCE_FIELDS(F)
+#define TRIDEM_BODY_CHECKPOINTED_FIELDS(F) TRIDEM_BODY_STATE_FIELDS(F)
+
 /* per triangle: its body and its centroid's offset from the body's at theta = 0 */
 #define TRIDEM_MEMBER_FIELDS(F)                                                              \
   F(member_body, body, std::int32_t, 1, Model, m.body[i], nullptr)                           \
@@ -59,6 +64,24 @@ TRIDEM_MEMBER_FIELDS(TRIDEM_FIELD_TAG)
   const auto& column(::tridem::body_field::member_) const { return member_##_; }
 #define TRIDEM_VISIT_BODY_FIELD(member_, name_, Type_, count_, Role_, initial_, labels_) \
   f(::tridem::body_field::member_{});
+
+/// The members of a public struct of per-body double columns for the fields of LIST
+/// (Snapshot, SolverState): body_<name> (body_x, ..., body_omega, body_fx, ...), column(field)
+/// by the body_field tag, and for_each_body_column(f) in LIST's order.
+#define TRIDEM_DECLARE_BODY_PUBLIC_COLUMN(member_, name_, Type_, count_, Role_, initial_, \
+                                          labels_)                                        \
+  std::vector<double> body_##name_;
+#define TRIDEM_BODY_PUBLIC_COLUMN_ACCESSOR(member_, name_, Type_, count_, Role_, initial_, \
+                                           labels_)                                        \
+  auto& column(::tridem::body_field::member_) { return body_##name_; }                     \
+  const auto& column(::tridem::body_field::member_) const { return body_##name_; }
+#define TRIDEM_BODY_PUBLIC_COLUMNS(LIST)       \
+  LIST(TRIDEM_DECLARE_BODY_PUBLIC_COLUMN)      \
+  LIST(TRIDEM_BODY_PUBLIC_COLUMN_ACCESSOR)     \
+  template <class F>                           \
+  static void for_each_body_column(F&& f) {    \
+    LIST(TRIDEM_VISIT_BODY_FIELD)              \
+  }
 
 /// f(field) for every per-body field, and for every per-member (per-triangle) field.
 template <class F>

@@ -2,6 +2,7 @@
 // A host copy of the state at one step, in double precision whatever the solver's real
 // type: the one thing output writers and the renderer see. Solvers fill it only on output
 // steps, so the state otherwise stays on its backend.
+#include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/scene.hpp"
 
@@ -34,6 +35,21 @@ struct Snapshot {
   std::vector<Motion> motion;
   std::vector<ContactRecord> contacts;    ///< filled when contacts are requested
 
+  // Bodies of several triangles (tridem/body_fields.hpp). All EMPTY when the scene has no
+  // body of several triangles: every triangle is then its own body, of id its triangle id.
+  std::vector<std::int32_t> member_body;  ///< per triangle: its body (Scene::bodies order)
+  /// Per body: body_x, body_y, body_theta, body_vx, body_vy, body_omega (the centroid's
+  /// pose and velocities), body_fx, body_fy, body_torque (the members' contact load of the
+  /// step, torque about the body's centroid); column(body_field::...).
+  TRIDEM_BODY_PUBLIC_COLUMNS(TRIDEM_BODY_SHOWN_FIELDS)
+  std::vector<double> body_mass, body_inertia;  ///< 0 for fixed and prescribed bodies
+  std::vector<std::int64_t> body_first;  ///< n_bodies + 1: body b is [first[b], first[b+1])
+
+  std::size_t body_count() const { return member_body.empty() ? size() : body_first.size() - 1; }
+  std::int64_t body_of(std::size_t i) const {
+    return member_body.empty() ? static_cast<std::int64_t>(i) : member_body[i];
+  }
+
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n) {
     for_each_field([&](auto field) {
@@ -42,6 +58,15 @@ struct Snapshot {
     for (auto* v : {&x1, &y1, &x2, &y2, &x3, &y3, &mass, &inertia}) v->resize(n);
     material.resize(n);
     motion.resize(n);
+  }
+  /// Sizes the body columns for `bodies` bodies of the size() triangles; 0 empties them.
+  void resize_bodies(std::size_t bodies) {
+    const std::size_t members = bodies > 0 ? size() : 0;
+    member_body.resize(members);
+    for_each_body_column([&](auto field) { column(field).resize(bodies); });
+    body_mass.resize(bodies);
+    body_inertia.resize(bodies);
+    body_first.resize(bodies > 0 ? bodies + 1 : 0);
   }
 };
 

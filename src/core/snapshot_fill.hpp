@@ -50,6 +50,32 @@ inline void fill_from_model(Snapshot& out, const Columns& model) {
   out.motion.assign(model.column(pf::motion{}).begin(), model.column(pf::motion{}).end());
 }
 
+/// The body columns of a snapshot whose triangles are already in `out`, from storage
+/// `from` with column(body_field) for the body and member fields (host vectors), for
+/// `bodies` bodies; 0 (no body of several triangles) empties them.
+template <class Columns>
+inline void fill_bodies(Snapshot& out, const Columns& from, std::size_t bodies) {
+  namespace bf = body_field;
+  out.resize_bodies(bodies);
+  if (bodies == 0) return;
+  const auto& member_body = from.column(bf::member_body{});
+  out.member_body.assign(member_body.begin(), member_body.end());
+  Snapshot::for_each_body_column([&](auto field) {
+    const auto& values = from.column(field);
+    auto& to = out.column(field);
+    for (std::size_t b = 0; b < bodies; ++b) to[b] = static_cast<double>(values[b]);
+  });
+  const auto& inv_mass = from.column(bf::body_inv_mass{});
+  const auto& inv_inertia = from.column(bf::body_inv_inertia{});
+  const auto& first = from.column(bf::body_first{});
+  for (std::size_t b = 0; b < bodies; ++b) {
+    out.body_mass[b] = inv_mass[b] > 0 ? 1.0 / inv_mass[b] : 0.0;
+    out.body_inertia[b] = inv_inertia[b] > 0 ? 1.0 / inv_inertia[b] : 0.0;
+    out.body_first[b] = first[b];
+  }
+  out.body_first[bodies] = from.column(bf::body_last{})[bodies - 1];
+}
+
 /// The touching pairs of a pair list (rows by emitter) as contact records, in slot order.
 /// A pair's point is in its frame, relative to the emitter's centroid (cx, cy): placed
 /// back in double here.

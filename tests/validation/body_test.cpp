@@ -145,6 +145,68 @@ TEST(Bodies, FreeRotationKeepsAngularMomentumWithTheExactInertia) {
   EXPECT_NEAR(s.theta[0], 0.2, 1e-12);
 }
 
+// The snapshot's per-body columns (the contract outputs build on): ids, offsets, the
+// model's mass and inertia, the pose of the body, and its load the sum of its members'.
+TEST(Bodies, SnapshotShowsEachBody) {
+  const Scene scene = colliding_pair();
+  const ParticleModel model = build_particle_model(scene);
+  auto solver = solver_on(scene, Backend::Cpu);
+  Snapshot s;
+  solver->snapshot(s, false);
+  ASSERT_EQ(s.body_count(), 2u);
+  ASSERT_EQ(s.member_body.size(), s.size());
+  ASSERT_EQ(s.body_first.size(), 3u);
+  EXPECT_EQ(s.body_first[0], 0);
+  EXPECT_EQ(s.body_first[1], 3);  // a pentagon is 3 triangles
+  EXPECT_EQ(s.body_first[2], static_cast<std::int64_t>(s.size()));
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_EQ(s.body_of(i), i < 3 ? 0 : 1) << i;
+  }
+  for (std::size_t b = 0; b < 2; ++b) {
+    EXPECT_DOUBLE_EQ(s.body_mass[b], model.bodies.mass[b]);
+    EXPECT_DOUBLE_EQ(s.body_inertia[b], model.bodies.inertia[b]);
+    EXPECT_EQ(s.body_x[b], model.bodies.centroid[b].x);
+    EXPECT_EQ(s.body_y[b], model.bodies.centroid[b].y);
+  }
+  EXPECT_EQ(s.body_vx[0], 0.5);
+  EXPECT_EQ(s.body_omega[1], -5.0);
+  bool touched = false;
+  for (int k = 0; k < 60 && !touched; ++k) {
+    solver->advance(100);
+    solver->snapshot(s, false);
+    touched = s.body_fx[0] != 0;
+  }
+  ASSERT_TRUE(touched);
+  // Action and reaction between the two bodies; each body's force is its members'.
+  EXPECT_NEAR(s.body_fx[0], -s.body_fx[1], 1e-9 * std::abs(s.body_fx[0]));
+  for (std::size_t b = 0; b < 2; ++b) {
+    double fx = 0, fy = 0;
+    for (auto i = s.body_first[b]; i < s.body_first[b + 1]; ++i) {
+      fx += s.fx[static_cast<std::size_t>(i)];
+      fy += s.fy[static_cast<std::size_t>(i)];
+    }
+    EXPECT_EQ(s.body_fx[b], fx);
+    EXPECT_EQ(s.body_fy[b], fy);
+    // The members move with their body: the first member's angle is the body's.
+    EXPECT_EQ(s.theta[static_cast<std::size_t>(s.body_first[b])], s.body_theta[b]);
+  }
+}
+
+TEST(Bodies, SnapshotOfABodilessSceneHasNoBodyColumns) {
+  const Scene scene = parse_scene(std::string(kHead) +
+                                      "[[triangle]]\nmaterial = \"m\"\n"
+                                      "vertices = [[0, 0], [0.01, 0], [0, 0.01]]\n",
+                                  "s");
+  auto solver = solver_on(scene, Backend::Cpu);
+  Snapshot s;
+  solver->snapshot(s, false);
+  EXPECT_TRUE(s.member_body.empty());
+  EXPECT_TRUE(s.body_x.empty());
+  EXPECT_TRUE(s.body_first.empty());
+  EXPECT_EQ(s.body_count(), 1u);
+  EXPECT_EQ(s.body_of(0), 0);
+}
+
 TEST(Bodies, CudaBackendRefusesBodies) {
   const Scene scene = colliding_pair();
   try {
