@@ -31,7 +31,7 @@ TEST(OutputSet, CreatesDirectoryAndWritesEveryFile) {
   out.log(s);
   out.write_final(s);
   for (const char* file :
-       {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
+       {"energy.csv", "walls.csv", "final.csv", "bodies.csv", "tridem.pvd", "contacts.pvd",
         "frames/frame_000001200.vtu", "contacts/contacts_000001200.csv",
         "contacts/contacts_000001200.vtp"})
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
