@@ -49,7 +49,7 @@ std::string fixed_triangle(double ax, double ay, double bx, double by, double cx
 Scene heap_scene(Grain grain, unsigned seed) {
   std::string s = fmt::format(
       "[simulation]\nsteps = {}\ndt = {}\ngravity = [0, -9.81]\n"
-      "[[material]]\nname = \"grain\"\ndensity = 2500\npenalty = 1e6\nfriction = 0.5\n"
+      "[[material]]\nname = \"grain\"\ndensity = 2500\npenalty = 1e6\nfriction = 0.9\n"
       "restitution = 0.2\n",
       kSteps, kDt);
   // A floor far below catches the grains that fall off the platform.
@@ -179,10 +179,12 @@ TEST(AngleOfRepose, PentagonsStandSteeperThanDiscsOfTwelveTriangles) {
   // Both are heaps, not a spread layer: some dozens of grains stayed on the platform.
   EXPECT_GT(pentagons.grains, 30u);
   EXPECT_GT(discs.grains, 30u);
-  // The trend, with a margin: MARGIN_PLACEHOLDER
-  EXPECT_GT(pentagons.angle_fit, discs.angle_fit + 5) << report("pentagons", pentagons) << "\n"
+  // The trend, with a margin: the two heaps' angles were measured 7 to 9° apart by either
+  // measure (docs/validation-bodies.md); 4° is about half of that, and about twice what
+  // another arrangement of the same grains moved one heap's angle.
+  EXPECT_GT(pentagons.angle_fit, discs.angle_fit + 4) << report("pentagons", pentagons) << "\n"
                                                       << report("discs", discs);
-  EXPECT_GT(pentagons.angle_height, discs.angle_height + 5);
+  EXPECT_GT(pentagons.angle_height, discs.angle_height + 4);
 }
 
 }  // namespace

@@ -250,8 +250,9 @@ TEST(BodyColors, NeighboursInAChainAndAGridDiffer) {
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int ii = i + di, jj = j + dj;
-          if ((di || dj) && ii >= 0 && ii < nx && jj >= 0 && jj < ny)
+          if ((di || dj) && ii >= 0 && ii < nx && jj >= 0 && jj < ny) {
             EXPECT_NE(c[b], c[jj * nx + ii]) << i << "," << j << " and " << ii << "," << jj;
+          }
         }
     }
   // Each square's diagonal is inside its body; its four sides are outlines.
