@@ -64,11 +64,8 @@ void read_members(const std::filesystem::path& file, Snapshot& s,
   const std::size_t n = s.size();
   std::vector<std::int64_t> of(n);
   bool several = false;
-  for (std::size_t cell = 0; cell < n; ++cell) {
-    const auto k = static_cast<std::size_t>(ids[cell]);
-    of[k] = body[cell];
-    several = several || body[cell] != ids[cell];
-  }
+  for (std::size_t cell = 0; cell < n; ++cell) of[static_cast<std::size_t>(ids[cell])] = body[cell];
+  for (std::size_t k = 0; k < n; ++k) several = several || of[k] != static_cast<std::int64_t>(k);
   if (!several) return;
   s.member_body.resize(n);
   s.body_first.assign(1, 0);
