@@ -57,7 +57,8 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
 /// id order, and each triangle's body (member_body and body_first, when some body has
 /// several triangles; frames written before bodies have no `body` array and read as
 /// bodiless). theta, mass and inertia are not stored in frames and come back as 0; the
-/// other per-body columns and contacts are left empty. Throws Error on a file it cannot read or that is not such a frame.
+/// other per-body columns and contacts are left empty. Throws Error on a file it cannot read or
+/// that is not such a frame.
 Snapshot read_vtu_frame(const std::filesystem::path& file);
 
 /// Where a restarted run takes over the outputs of the run it continues.

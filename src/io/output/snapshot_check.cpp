@@ -39,8 +39,7 @@ void check_bodies(const Snapshot& s, std::string_view writing, bool members_only
     bad(fmt::format("body_first runs from {} to {}, not 0 to {}", s.body_first.front(),
                     s.body_first.back(), n));
   for (std::size_t b = 0; b < bodies; ++b) {
-    if (s.body_first[b] >= s.body_first[b + 1])
-      bad(fmt::format("body {} has no member", b));
+    if (s.body_first[b] >= s.body_first[b + 1]) bad(fmt::format("body {} has no member", b));
     for (auto i = s.body_first[b]; i < s.body_first[b + 1]; ++i)
       if (s.member_body[static_cast<std::size_t>(i)] != static_cast<std::int32_t>(b))
         bad(fmt::format("triangle {} is in body {}'s range but says body {}", i, b,

@@ -30,8 +30,10 @@ Snapshot bodies_snapshot() {
   s.step = 300;
   s.time = 0.003;
   s.resize(5);
-  const double v[5][6] = {{0, 0, 1, 0, 1, 1}, {0, 0, 1, 1, 0, 1},
-                          {1, 0, 2, 0, 2, 1}, {1, 0, 2, 1, 1, 1},
+  const double v[5][6] = {{0, 0, 1, 0, 1, 1},
+                          {0, 0, 1, 1, 0, 1},
+                          {1, 0, 2, 0, 2, 1},
+                          {1, 0, 2, 1, 1, 1},
                           {-1, -0.5, 3, -0.5, 1, -2}};
   for (std::size_t k = 0; k < 5; ++k) {
     s.x1[k] = v[k][0], s.y1[k] = v[k][1], s.x2[k] = v[k][2], s.y2[k] = v[k][3];
@@ -68,10 +70,9 @@ TEST(BodiesCsv, OneRowPerBodyFromTheBodyColumns) {
   EXPECT_EQ(lines[0], "id,x,y,theta,vx,vy,omega,mass,inertia,members");
   const double members[3] = {2, 2, 1};
   for (std::size_t b = 0; b < 3; ++b) {
-    const std::vector<double> expected = {double(b),        s.body_x[b],     s.body_y[b],
-                                          s.body_theta[b],  s.body_vx[b],    s.body_vy[b],
-                                          s.body_omega[b],  s.body_mass[b],  s.body_inertia[b],
-                                          members[b]};
+    const std::vector<double> expected = {
+        double(b),    s.body_x[b],     s.body_y[b],    s.body_theta[b],   s.body_vx[b],
+        s.body_vy[b], s.body_omega[b], s.body_mass[b], s.body_inertia[b], members[b]};
     EXPECT_EQ(test::numbers(lines[1 + b]), expected) << "body " << b;  // %.17g: exact
   }
 }
@@ -83,9 +84,8 @@ TEST(BodiesCsv, WithoutBodiesEachTriangleIsABodyOfOneMember) {
   const auto lines = test::read_lines(tmp.path() / "bodies.csv");
   ASSERT_EQ(lines.size(), 1 + s.size());
   for (std::size_t k = 0; k < s.size(); ++k) {
-    const std::vector<double> expected = {double(k), s.x[k],     s.y[k],    s.theta[k],
-                                          s.vx[k],   s.vy[k],    s.omega[k], s.mass[k],
-                                          s.inertia[k], 1};
+    const std::vector<double> expected = {double(k), s.x[k],     s.y[k],    s.theta[k],   s.vx[k],
+                                          s.vy[k],   s.omega[k], s.mass[k], s.inertia[k], 1};
     EXPECT_EQ(test::numbers(lines[1 + k]), expected) << "triangle " << k;
   }
 }
@@ -183,9 +183,9 @@ Pixel pixel(const std::filesystem::path& png, double fx, double fy) {
   EXPECT_EQ(cairo_surface_status(surface.get()), CAIRO_STATUS_SUCCESS);
   const int x = static_cast<int>(fx * cairo_image_surface_get_width(surface.get()));
   const int y = static_cast<int>(fy * cairo_image_surface_get_height(surface.get()));
-  const unsigned char* row = cairo_image_surface_get_data(surface.get()) +
-                             static_cast<std::ptrdiff_t>(y) *
-                                 cairo_image_surface_get_stride(surface.get());
+  const unsigned char* row =
+      cairo_image_surface_get_data(surface.get()) +
+      static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(surface.get());
   std::uint32_t argb;
   std::memcpy(&argb, row + 4 * x, sizeof argb);
   return {int(argb >> 16 & 255), int(argb >> 8 & 255), int(argb & 255)};
@@ -330,7 +330,8 @@ TEST(BodyOutputs, RunWritesBodiesFinalAndFramesOfAKnownScene) {
   const auto final_rows = test::read_lines(tmp.path() / "final.csv");
   ASSERT_EQ(final_rows.size(), 5u);
   const double body_of[4] = {0, 1, 1, 2};
-  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(test::numbers(final_rows[1 + k]).back(), body_of[k]);
+  for (std::size_t k = 0; k < 4; ++k)
+    EXPECT_EQ(test::numbers(final_rows[1 + k]).back(), body_of[k]);
 
   // The frames carry the body of each triangle.
   const Snapshot frame = read_vtu_frame(tmp.path() / "frames" / "frame_000000200.vtu");
