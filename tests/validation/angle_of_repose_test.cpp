@@ -192,9 +192,10 @@ TEST(AngleOfRepose, PentagonsStandSteeperThanDiscsOfTwelveTriangles) {
   // grains pack no denser than round ones, so more grains held is a steeper heap. The
   // margins are about half of the smallest differences measured.
   EXPECT_GT(pentagons.angle_height, discs.angle_height + 1.5)
-      << report("pentagons", pentagons) << "\n" << report("discs", discs);
-  EXPECT_GE(pentagons.grains, discs.grains + 6)
-      << report("pentagons", pentagons) << "\n" << report("discs", discs);
+      << report("pentagons", pentagons) << "\n"
+      << report("discs", discs);
+  EXPECT_GE(pentagons.grains, discs.grains + 6) << report("pentagons", pentagons) << "\n"
+                                                << report("discs", discs);
 }
 
 }  // namespace
