@@ -43,6 +43,9 @@ std::optional<std::filesystem::path> last_frame_file(const std::filesystem::path
 // Single-file writers. OutputSet calls them; tools and tests may call them alone. All
 // throw RunError naming the path and the system's reason when the file cannot be written.
 void write_final_csv(const std::filesystem::path& file, const Snapshot&);
+/// bodies.csv: one row per body (Snapshot::body_count()), in body-id order; without bodies
+/// of several triangles, one per triangle, from the triangle columns.
+void write_bodies_csv(const std::filesystem::path& file, const Snapshot&);
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot&,
                      Encoding = Encoding::Binary);
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
@@ -51,8 +54,11 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
 
 /// Reads back a frame written by write_vtu_frame, in either encoding. Recovers step, time,
 /// vertices, centroids (vertex mean), velocities, forces, torques, material and motion, in
-/// id order. theta, mass and inertia are not stored in frames and come back as 0; contacts
-/// are left empty. Throws Error on a file it cannot read or that is not such a frame.
+/// id order, and each triangle's body (member_body and body_first, when some body has
+/// several triangles; frames written before bodies have no `body` array and read as
+/// bodiless). theta, mass and inertia are not stored in frames and come back as 0; the
+/// other per-body columns and contacts are left empty. Throws Error on a file it cannot read or
+/// that is not such a frame.
 Snapshot read_vtu_frame(const std::filesystem::path& file);
 
 /// Where a restarted run takes over the outputs of the run it continues.
@@ -67,7 +73,7 @@ struct ResumePoint {
 ///   frames/frame_<step>.vtu        one per write_frame(), listed in tridem.pvd
 ///   contacts/contacts_<step>.csv   and .vtp, with each frame when settings.contacts,
 ///                                  the .vtp files listed in contacts.pvd
-///   final.csv                      from write_final()
+///   final.csv, bodies.csv          from write_final()
 /// The .pvd collections are replaced atomically after every frame, so they stay valid
 /// if the run dies. Every failure to create or write throws RunError.
 /// A fresh set removes the tridem files of an earlier run in `dir`; a resumed one keeps

@@ -42,8 +42,10 @@ inline constexpr Spellings<Motion, 3> kMotionNames{
     {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};
 
 /// tridem render --color.
-inline constexpr Spellings<RenderOptions::ColorBy, 2> kColorByNames{
-    {{"speed", RenderOptions::ColorBy::Speed}, {"material", RenderOptions::ColorBy::Material}}};
+inline constexpr Spellings<RenderOptions::ColorBy, 3> kColorByNames{
+    {{"speed", RenderOptions::ColorBy::Speed},
+     {"material", RenderOptions::ColorBy::Material},
+     {"body", RenderOptions::ColorBy::Body}}};
 
 /// The spelling of `value` in `table` (every enumerator has one).
 template <class Table, class E>

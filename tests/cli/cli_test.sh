@@ -47,7 +47,9 @@ expect_ok "$tridem" run pile.toml --quiet
 grep -q "^dt = .* x dt_crit" out.txt || fail "run does not print dt and its ratio"
 grep -q "^dt_crit set by particle" out.txt || fail "run does not say what sets dt_crit"
 grep -q "triangle-steps/s" out.txt || fail "run does not print the summary"
-[ "$(head -1 pile_out/final.csv)" = "id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3" ] || fail "final.csv header"
+[ "$(head -1 pile_out/final.csv)" = "id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3,body" ] || fail "final.csv header"
+[ "$(head -1 pile_out/bodies.csv)" = "id,x,y,theta,vx,vy,omega,mass,inertia,members" ] || fail "bodies.csv header"
+[ "$(wc -l <pile_out/bodies.csv)" = "$(wc -l <pile_out/final.csv)" ] || fail "bodies.csv: not one row per triangle without bodies"
 [ "$(head -1 pile_out/energy.csv)" = "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,dissipated_damping,dissipated_friction,dissipated_local,wall_work,total" ] || fail "energy.csv header"
 [ "$(head -1 pile_out/walls.csv)" = "step,time,id,fx,fy,torque" ] || fail "walls.csv header"
 [ "$(cut -d, -f1 pile_out/energy.csv | tail -n +2 | tr '\n' ' ')" = "0 100 200 " ] || fail "energy.csv steps"
@@ -103,6 +105,8 @@ fi
 # render draws the last frame to PNG.
 expect_ok "$tridem" render pile_out -o pile.png
 [ "$(head -c 8 pile.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] || fail "render did not write a PNG"
+expect_ok "$tridem" render pile_out -o pile_bodies.png --color body
+[ "$(head -c 8 pile_bodies.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] || fail "render --color body did not write a PNG"
 
 # Many output events (one per step) must not stall the time loop (it once did after 63).
 sed 's/every = 100/every = 1/' pile.toml >every_step.toml

@@ -1,3 +1,4 @@
+// final.csv: every triangle at the last step, and (the last column) the body it is in.
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "tridem/output.hpp"
@@ -6,14 +7,16 @@ namespace tridem {
 
 void write_final_csv(const std::filesystem::path& file, const Snapshot& s) {
   io::check_snapshot(s, file.string());
+  io::check_bodies(s, file.string());
   io::OutFile out(file);
-  // Users' scripts index these columns by name; never reorder or rename them.
-  out.write("id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3\n");
+  // Users' scripts index these columns by name; never reorder or rename them (`body` came
+  // with bodies of several triangles, issue 13: new columns go at the end).
+  out.write("id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3,body\n");
   for (std::size_t k = 0; k < s.size(); ++k)
     out.print("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-              "{:.17g},{:.17g},{:.17g}\n",
+              "{:.17g},{:.17g},{:.17g},{}\n",
               k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.x1[k], s.y1[k],
-              s.x2[k], s.y2[k], s.x3[k], s.y3[k]);
+              s.x2[k], s.y2[k], s.x3[k], s.y3[k], s.body_of(k));
   out.close();
 }
 

@@ -102,19 +102,21 @@ class CsvLog final : public OutputWriter {
   std::optional<OutFile> out_;
 };
 
-/// final.csv: the state the run ends (or stops) with.
+/// A file of the state the run ends (or stops) with: final.csv, bodies.csv.
 class FinalCsv final : public OutputWriter {
  public:
-  explicit FinalCsv(fs::path file) : file_(std::move(file)) {}
+  using Write = void (*)(const fs::path&, const Snapshot&);
+  FinalCsv(fs::path file, Write write) : file_(std::move(file)), write_(write) {}
   void start(const std::optional<ResumePoint>& resume) override {
     // A restarted run keeps the file until it writes its own.
     std::error_code ec;
     if (!resume) fs::remove(file_, ec);
   }
-  void final_state(const Snapshot& s) override { write_final_csv(file_, s); }
+  void final_state(const Snapshot& s) override { write_(file_, s); }
 
  private:
   fs::path file_;
+  Write write_;
 };
 
 }  // namespace
@@ -142,7 +144,8 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   w.push_back(std::make_unique<CsvLog>(
       dir / "walls.csv", kWallsHeader,
       [](OutFile& out, const Snapshot& s, const LogInputs&) { write_wall_rows(out, s); }));
-  w.push_back(std::make_unique<FinalCsv>(dir / "final.csv"));
+  w.push_back(std::make_unique<FinalCsv>(dir / "final.csv", write_final_csv));
+  w.push_back(std::make_unique<FinalCsv>(dir / "bodies.csv", write_bodies_csv));
   return w;
 }
 

@@ -2,6 +2,8 @@
 // so that line widths and text sizes are in pixels whatever the domain's size.
 #include "tridem/render.hpp"
 
+#include "io/output/body_colors.hpp"
+#include "io/output/body_outline.hpp"
 #include "io/output/colormap.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "tridem/error.hpp"
@@ -93,17 +95,24 @@ Layout layout(const Box& box, const RenderOptions& o, bool want_bar) {
   return l;
 }
 
-/// Thin next to a triangle, but never thicker than a pixel: dense packings stay coloured.
-double edge_width(const Snapshot& s, const Layout& l) {
+/// The mean length of the triangles' first edges, m; 0 when none is finite.
+double mean_edge(const Snapshot& s) {
   double sum = 0;
   std::size_t counted = 0;
   for (std::size_t k = 0; k < s.size(); ++k) {
-    const double e = std::hypot(s.x2[k] - s.x1[k], s.y2[k] - s.y1[k]) * l.scale;
+    const double e = std::hypot(s.x2[k] - s.x1[k], s.y2[k] - s.y1[k]);
     if (std::isfinite(e)) sum += e, ++counted;
   }
-  const double mean = counted ? sum / static_cast<double>(counted) : 10;
+  return counted ? sum / static_cast<double>(counted) : 0;
+}
+
+/// Thin next to a triangle, but never thicker than a pixel: dense packings stay coloured.
+double edge_width(const Snapshot& s, const Layout& l) {
+  const double mean = s.size() > 0 && mean_edge(s) > 0 ? mean_edge(s) * l.scale : 10;
   return std::clamp(0.06 * mean, 0.15, 1.0);
 }
+
+constexpr int kPalette = 12;  // categorical_color's distinct colours
 
 void draw_colorbar(cairo_t* cr, const Layout& l, double lo, double hi) {
   const double font = std::clamp(0.016 * l.width, 9.0, 16.0);
@@ -148,6 +157,7 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
     throw Error(fmt::format("cannot render '{}': the folder '{}' does not exist", png.string(),
                             folder.string()));
   io::check_snapshot(s, png.string());
+  io::check_bodies(s, png.string(), /*members_only=*/s.body_x.empty());
   if (o.width < 1 || o.width > kMaxSide || o.height < 0 || o.height > kMaxSide)
     throw Error(fmt::format("cannot render '{}': image size {}x{} is outside 1..{}",
                             png.string(), o.width, o.height, kMaxSide));
@@ -156,6 +166,13 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
                             o.margin));
 
   const bool by_speed = o.color_by == RenderOptions::ColorBy::Speed;
+  const bool by_body = o.color_by == RenderOptions::ColorBy::Body;
+  // Bodies within a tenth of a mean edge of each other count as neighbours.
+  const std::vector<int> body_color =
+      by_body ? io::body_colors(s, 0.1 * mean_edge(s), kPalette) : std::vector<int>();
+  // A body of several triangles is outlined as one polygon.
+  const std::vector<std::uint8_t> inner = io::inner_edges(s);
+  const bool outlines = !s.member_body.empty();
   std::vector<double> speed(s.size());
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t k = 0; k < s.size(); ++k) {
@@ -181,9 +198,12 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
   cairo_paint(cr);
   cairo_set_line_width(cr, edge_width(s, l));
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const auto finite = [&](std::size_t k) {
+    return std::isfinite(s.x1[k] + s.y1[k] + s.x2[k] + s.y2[k] + s.x3[k] + s.y3[k]);
+  };
   for (std::size_t k = 0; k < s.size(); ++k) {
     // A blown-up particle is left out rather than poisoning cairo's path.
-    if (!std::isfinite(s.x1[k] + s.y1[k] + s.x2[k] + s.y2[k] + s.x3[k] + s.y3[k])) continue;
+    if (!finite(k)) continue;
     cairo_move_to(cr, l.px(s.x1[k]), l.py(s.y1[k]));
     cairo_line_to(cr, l.px(s.x2[k]), l.py(s.y2[k]));
     cairo_line_to(cr, l.px(s.x3[k]), l.py(s.y3[k]));
@@ -192,10 +212,28 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
       set_color(cr, io::kWallGrey);
     else if (by_speed)
       set_color(cr, io::sequential_color(hi > lo ? (speed[k] - lo) / (hi - lo) : 0));
+    else if (by_body)
+      set_color(cr, io::categorical_color(body_color[static_cast<std::size_t>(s.body_of(k))]));
     else
       set_color(cr, io::categorical_color(s.material[k]));
     cairo_fill_preserve(cr);
+    // With bodies, the fill's own colour covers the seams between members; the outlines
+    // follow in a second pass, so that a neighbour's fill never hides them.
+    if (!outlines) cairo_set_source_rgb(cr, 0.12, 0.12, 0.12);
+    cairo_stroke(cr);
+  }
+  if (outlines) {
     cairo_set_source_rgb(cr, 0.12, 0.12, 0.12);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      if (!finite(k)) continue;
+      const double v[3][2] = {{s.x1[k], s.y1[k]}, {s.x2[k], s.y2[k]}, {s.x3[k], s.y3[k]}};
+      for (int e = 0; e < 3; ++e) {
+        if (inner[k] & (1u << e)) continue;
+        cairo_move_to(cr, l.px(v[e][0]), l.py(v[e][1]));
+        cairo_line_to(cr, l.px(v[(e + 1) % 3][0]), l.py(v[(e + 1) % 3][1]));
+      }
+    }
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_stroke(cr);
   }
   if (l.bar_width > 0) draw_colorbar(cr, l, lo, hi);

@@ -56,6 +56,34 @@ std::vector<std::int64_t> integers(const std::filesystem::path& file, std::strin
   return out;
 }
 
+/// member_body and body_first from each cell's body (cell order: `ids` gives the triangle),
+/// when some body has several triangles; a frame of lone triangles stays bodiless. The
+/// members of a body are consecutive triangles (the scene's numbering), which is checked.
+void read_members(const std::filesystem::path& file, Snapshot& s,
+                  const std::vector<std::int64_t>& body, const std::vector<std::int64_t>& ids) {
+  const std::size_t n = s.size();
+  std::vector<std::int64_t> of(n);
+  bool several = false;
+  for (std::size_t cell = 0; cell < n; ++cell) of[static_cast<std::size_t>(ids[cell])] = body[cell];
+  for (std::size_t k = 0; k < n; ++k) several = several || of[k] != static_cast<std::int64_t>(k);
+  if (!several) return;
+  s.member_body.resize(n);
+  s.body_first.assign(1, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int64_t expected = static_cast<std::int64_t>(s.body_first.size()) - 1;
+    if (k > 0 && of[k] == expected + 1) {
+      s.body_first.push_back(static_cast<std::int64_t>(k));
+    } else if (of[k] != expected) {
+      bad_frame(file, fmt::format("triangle {} is in body {}, but the members of a body are "
+                                  "consecutive triangles and bodies are numbered in their "
+                                  "order (body {} or {} expected)",
+                                  k, of[k], expected, expected + 1));
+    }
+    s.member_body[k] = static_cast<std::int32_t>(of[k]);
+  }
+  s.body_first.push_back(static_cast<std::int64_t>(n));
+}
+
 }  // namespace
 
 Snapshot read_vtu_frame(const std::filesystem::path& file) {
@@ -102,6 +130,10 @@ Snapshot read_vtu_frame(const std::filesystem::path& file) {
   const auto torque = cells("torque", 1);
   const auto material = integers(file, "material", cells("material", 1), 0, 2147483647.0);
   const auto motion = integers(file, "motion", cells("motion", 1), 0, 2);
+  // Frames written before bodies existed have no body array: each triangle its own body.
+  std::vector<std::int64_t> body;
+  if (io::find_array(f, "CellData", "body"))
+    body = integers(file, "body", cells("body", 1), 0, max_id);
 
   Snapshot s;
   if (const io::XmlDataArray* a = io::find_array(f, "FieldData", "step"))
@@ -131,6 +163,7 @@ Snapshot read_vtu_frame(const std::filesystem::path& file) {
     s.material[k] = static_cast<int>(material[cell]);
     s.motion[k] = static_cast<Motion>(motion[cell]);
   }
+  if (!body.empty()) read_members(file, s, body, ids);
   return s;
 }
 

@@ -29,6 +29,7 @@ std::vector<double> interleave3(const std::vector<double>& a, const std::vector<
 
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encoding encoding) {
   io::check_snapshot(s, file.string());
+  io::check_bodies(s, file.string(), /*members_only=*/s.body_x.empty());
   const std::size_t n = s.size();
 
   std::vector<double> points(9 * n);
@@ -39,11 +40,12 @@ void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encod
       points[9 * k + 3 * v + 1] = xy[2 * v + 1];
     }
   }
-  std::vector<std::int64_t> connectivity(3 * n), offsets(n), ids(n);
+  std::vector<std::int64_t> connectivity(3 * n), offsets(n), ids(n), body(n);
   for (std::size_t k = 0; k < 3 * n; ++k) connectivity[k] = static_cast<std::int64_t>(k);
   for (std::size_t k = 0; k < n; ++k) {
     offsets[k] = static_cast<std::int64_t>(3 * (k + 1));
     ids[k] = static_cast<std::int64_t>(k);
+    body[k] = s.body_of(k);
   }
   const std::vector<std::uint8_t> types(n, kVtkTriangle);
   std::vector<std::int32_t> material(n), motion(n);
@@ -71,6 +73,9 @@ void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encod
   io::write_data_array<double>(out, "torque", s.torque, 1, encoding, 8);
   io::write_data_array<std::int32_t>(out, "material", material, 1, encoding, 8);
   io::write_data_array<std::int32_t>(out, "motion", motion, 1, encoding, 8);
+  // The body of each triangle (its own id when it is a body of one member): ParaView
+  // colours by it, and `tridem render --color body` reads it back.
+  io::write_data_array<std::int64_t>(out, "body", body, 1, encoding, 8);
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
   io::end_vtk_file(out);
   out.close();

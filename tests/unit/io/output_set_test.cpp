@@ -30,10 +30,9 @@ TEST(OutputSet, CreatesDirectoryAndWritesEveryFile) {
   out.write_frame(s);
   out.log(s);
   out.write_final(s);
-  for (const char* file :
-       {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
-        "frames/frame_000001200.vtu", "contacts/contacts_000001200.csv",
-        "contacts/contacts_000001200.vtp"})
+  for (const char* file : {"energy.csv", "walls.csv", "final.csv", "bodies.csv", "tridem.pvd",
+                           "contacts.pvd", "frames/frame_000001200.vtu",
+                           "contacts/contacts_000001200.csv", "contacts/contacts_000001200.vtp"})
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
 }
 

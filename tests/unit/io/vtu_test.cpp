@@ -71,14 +71,18 @@ TEST(Vtu, EmptyFrameRoundTrips) {
 }
 
 /// Writes the sample snapshot as an ASCII frame whose id array reads `ids` instead of
-/// "0 1 2".
+/// "0 1 2", and so does its body array (each of its triangles is its own body): the cells
+/// of a frame reordered, all their data with them.
 void write_frame_with_ids(const std::filesystem::path& file, const std::string& ids) {
   write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
   std::string text = test::read_file(file);
-  const std::string header = "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  const auto at = text.find(header + "0 1 2");
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, header.size() + 5, header + ids);
+  for (const char* name : {"id", "body"}) {
+    const std::string header =
+        std::string("Name=\"") + name + "\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+    const auto at = text.find(header + "0 1 2");
+    ASSERT_NE(at, std::string::npos) << name;
+    text.replace(at, header.size() + 5, header + ids);
+  }
   std::ofstream(file, std::ios::binary) << text;
 }
 
@@ -92,6 +96,7 @@ TEST(Vtu, CellsOutOfIdOrderAreReordered) {
   EXPECT_EQ(r.vx[0], s.vx[1]);
   EXPECT_EQ(r.x1[1], s.x1[0]);
   EXPECT_EQ(r.material[0], s.material[1]);
+  EXPECT_TRUE(r.member_body.empty()) << "each triangle is still its own body";
 }
 
 TEST(Vtu, DuplicateIdIsRefused) {

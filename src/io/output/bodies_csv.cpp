@@ -1,0 +1,31 @@
+// bodies.csv: the state of every body at the last step. Without bodies of several
+// triangles every triangle is a body of one member, and its row is the triangle's own.
+#include "io/output/out_file.hpp"
+#include "io/output/snapshot_check.hpp"
+#include "tridem/output.hpp"
+
+namespace tridem {
+
+void write_bodies_csv(const std::filesystem::path& file, const Snapshot& s) {
+  io::check_snapshot(s, file.string());
+  io::check_bodies(s, file.string());
+  io::OutFile out(file);
+  // Users' scripts index these columns by name; never reorder or rename them.
+  out.write("id,x,y,theta,vx,vy,omega,mass,inertia,members\n");
+  const auto row = [&](std::size_t b, double x, double y, double theta, double vx, double vy,
+                       double omega, double mass, double inertia, std::int64_t members) {
+    out.print("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", b, x, y,
+              theta, vx, vy, omega, mass, inertia, members);
+  };
+  if (s.member_body.empty()) {
+    for (std::size_t k = 0; k < s.size(); ++k)
+      row(k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.mass[k], s.inertia[k], 1);
+  } else {
+    for (std::size_t b = 0; b < s.body_count(); ++b)
+      row(b, s.body_x[b], s.body_y[b], s.body_theta[b], s.body_vx[b], s.body_vy[b], s.body_omega[b],
+          s.body_mass[b], s.body_inertia[b], s.body_first[b + 1] - s.body_first[b]);
+  }
+  out.close();
+}
+
+}  // namespace tridem
