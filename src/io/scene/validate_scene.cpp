@@ -121,7 +121,7 @@ std::string Provenance::describe(std::size_t id) const {
     return fmt::format("particle id {} ({})", id, explicit_origin[id]);
   for (const Generated& g : generators)
     if (id >= g.first && id < g.first + g.count)
-      return fmt::format("particle id {} ([[generate]] #{} at {}, its triangle {} of {})", id,
+      return fmt::format("particle id {} ({} #{} at {}, its triangle {} of {})", id, g.section,
                          g.number, g.where, id - g.first + 1, g.count);
   return fmt::format("particle id {}", id);
 }
