@@ -74,9 +74,9 @@ struct GrainSpec {
   int material = 0;
   /// 2 points: the corners [min, max] of a rectangle; 3 or more: a simple polygon.
   std::vector<Vec2d> region;
-  int min_sides = 3, max_sides = 3;        ///< sides drawn uniformly in [min, max], 3..64
-  double min_aspect = 1, max_aspect = 1;   ///< aspect ratio drawn uniformly, >= 1
-  double angularity = 0;                   ///< in [0, 1): spread of the vertex angles
+  int min_sides = 3, max_sides = 3;       ///< sides drawn uniformly in [min, max], 3..64
+  double min_aspect = 1, max_aspect = 1;  ///< aspect ratio drawn uniformly, >= 1
+  double angularity = 0;                  ///< in [0, 1): spread of the vertex angles
   SizeDistribution sizes;
   std::size_t count = 0;        ///< grains to place; 0: use packing_fraction
   double packing_fraction = 0;  ///< in (0, 1): grains' total area / region area

@@ -20,7 +20,8 @@ constexpr const char* kScene =
     "penalty = 1e7\nfriction = 0.4\nrestitution = 0.5\n"
     "[[triangle]]\nmaterial = \"m\"\nvertices = [[0, 0], [1, 0], [0.5, 0.8]]\nvelocity = [1, 0]\n"
     "angular_velocity = 2\n"
-    "[[triangle]]\nmaterial = \"m\"\nvertices = [[1.05, 0], [2, 0], [1.6, 0.9]]\nvelocity = [-1, 0.5]\n"
+    "[[triangle]]\nmaterial = \"m\"\nvertices = [[1.05, 0], [2, 0], [1.6, 0.9]]\nvelocity = [-1, "
+    "0.5]\n"
     "[[generate]]\nkind = \"triangles\"\nmaterial = \"m\"\nregion = [[0, 1.5], [2, 3]]\n"
     "size = [0.2, 0.4]\ncount = 12\nseed = 4\nvelocity = [0, -2]\n";
 

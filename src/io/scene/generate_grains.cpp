@@ -94,7 +94,7 @@ std::size_t max_grains(const GrainSpec& spec, double region_area) {
 struct Grain {
   double size = 0;
   double reach = 0;
-  std::vector<Vec2d> outline;                   // about its centroid
+  std::vector<Vec2d> outline;                      // about its centroid
   std::vector<physics::Triangle<double>> members;  // about its centroid, counter-clockwise
 };
 
@@ -152,9 +152,9 @@ GeneratedGrains generate_grains(const GrainSpec& spec) {
   const scene_detail::PlacementRegion region = region_of(spec);
 
   std::mt19937_64 shapes(spec.seed);
-  const std::vector<double> sizes =
-      scene_detail::draw_sizes(shapes, spec.sizes, spec.count,
-                               spec.packing_fraction * region.area(), max_grains(spec, region.area()));
+  const std::vector<double> sizes = scene_detail::draw_sizes(shapes, spec.sizes, spec.count,
+                                                             spec.packing_fraction * region.area(),
+                                                             max_grains(spec, region.area()));
   std::vector<Grain> grains;
   grains.reserve(sizes.size());
   double widest = 0;
@@ -192,8 +192,8 @@ GeneratedGrains generate_grains(const GrainSpec& spec) {
           "(size {} m) found no free place in {} random positions (max_attempts): enlarge the "
           "region, ask for fewer or smaller grains, or raise max_attempts",
           n, grains.size(), placed_area / region.area(),
-          spec.count > 0 ? "" : fmt::format(", {} asked for", spec.packing_fraction), n + 1,
-          g.size, spec.max_attempts));
+          spec.count > 0 ? "" : fmt::format(", {} asked for", spec.packing_fraction), n + 1, g.size,
+          spec.max_attempts));
     placed_area += std::numbers::pi * g.size * g.size / 4;
   }
 

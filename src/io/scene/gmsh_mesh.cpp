@@ -93,8 +93,8 @@ ImportedParticles read_open_mesh(const std::string& name,
         gmsh::model::getPhysicalName(dim, tag, group_name);
         known += (known.empty() ? "\"" : ", \"") + group_name + "\"";
       }
-      throw SceneError(fmt::format("{}: no 2D physical group named \"{}\" (the mesh has {})",
-                                   name, body_groups[b], known.empty() ? "none" : known));
+      throw SceneError(fmt::format("{}: no 2D physical group named \"{}\" (the mesh has {})", name,
+                                   body_groups[b], known.empty() ? "none" : known));
     }
   }
 

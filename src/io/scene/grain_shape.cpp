@@ -34,10 +34,9 @@ Vec2d polygon_centroid(const std::vector<Vec2d>& p, double area) {
 std::vector<Vec2d> random_convex_outline(std::mt19937_64& rng, const GrainShapeRange& range,
                                          double size) {
   const int span = range.max_sides - range.min_sides + 1;
-  const int n = std::min(range.max_sides,
-                         range.min_sides + static_cast<int>(unit_double(rng) * span));
-  const double aspect =
-      range.min_aspect + (range.max_aspect - range.min_aspect) * unit_double(rng);
+  const int n =
+      std::min(range.max_sides, range.min_sides + static_cast<int>(unit_double(rng) * span));
+  const double aspect = range.min_aspect + (range.max_aspect - range.min_aspect) * unit_double(rng);
   const double turn = 2 * std::numbers::pi * unit_double(rng);
   const double sx = std::sqrt(aspect), sy = 1 / sx;
   const double c = std::cos(turn), s = std::sin(turn);

@@ -144,8 +144,8 @@ void parse_generate(const toml::table& table, const std::string& source, std::si
   }
   // Each triangle of these kinds is a body of its own.
   for (std::size_t k = 0; k < made.size(); ++k)
-    bodies.push_back({out.size() + k, 1, made[k].velocity, made[k].angular_velocity,
-                      made[k].motion});
+    bodies.push_back(
+        {out.size() + k, 1, made[k].velocity, made[k].angular_velocity, made[k].motion});
   if (out.empty()) {
     out = std::move(made);
   } else {

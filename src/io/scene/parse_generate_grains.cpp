@@ -34,8 +34,8 @@ void read_shape(TableReader& r, bool triangles, GrainSpec& spec) {
   } else {
     const auto sides = as_range(r, "sides", r.required(r.integers("sides"), "sides"));
     if (sides.first < 3 || sides.second > 64)
-      r.fail("sides", fmt::format("must be within [3, 64], got [{}, {}]", sides.first,
-                                  sides.second));
+      r.fail("sides",
+             fmt::format("must be within [3, 64], got [{}, {}]", sides.first, sides.second));
     spec.min_sides = static_cast<int>(sides.first);
     spec.max_sides = static_cast<int>(sides.second);
   }
@@ -69,15 +69,15 @@ void read_sizes(TableReader& r, GrainSpec& spec) {
                  "mass_fractions = [...]");
   if (!fractions) r.fail("sizes", "needs mass_fractions = [...], one per size");
   if (fractions->size() != sizes->size())
-    r.fail("mass_fractions", fmt::format("has {} values for {} sizes", fractions->size(),
-                                         sizes->size()));
+    r.fail("mass_fractions",
+           fmt::format("has {} values for {} sizes", fractions->size(), sizes->size()));
   double sum = 0;
   for (std::size_t k = 0; k < sizes->size(); ++k) {
     if (!((*sizes)[k] > 0))
       r.fail("sizes", fmt::format("size {} must be > 0, got {}", k + 1, (*sizes)[k]));
     if (!((*fractions)[k] > 0))
-      r.fail("mass_fractions", fmt::format("fraction {} must be > 0, got {}", k + 1,
-                                           (*fractions)[k]));
+      r.fail("mass_fractions",
+             fmt::format("fraction {} must be > 0, got {}", k + 1, (*fractions)[k]));
     sum += (*fractions)[k];
     spec.sizes.classes.push_back({(*sizes)[k], (*fractions)[k]});
   }

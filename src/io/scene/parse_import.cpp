@@ -64,8 +64,10 @@ void parse_import(const toml::table& table, const std::string& source, std::size
   std::optional<Format> format = r.choice_in<Format>("format", kFormatNames);
   if (!format) {
     const std::string ext = path.extension().string();
-    if (ext == ".csv") format = Format::Csv;
-    else if (ext == ".msh") format = Format::Gmsh;
+    if (ext == ".csv")
+      format = Format::Csv;
+    else if (ext == ".msh")
+      format = Format::Gmsh;
     else
       r.fail("file", fmt::format("cannot tell the format from the extension \"{}\": give "
                                  "format = \"csv\" or \"gmsh\"",
@@ -86,8 +88,8 @@ void parse_import(const toml::table& table, const std::string& source, std::size
   }
   const std::size_t n = in.vertices.size();
   if (n > kMaxGeneratedTriangles)
-    r.fail("file", fmt::format("holds {} triangles, more than the limit of {}", n,
-                               kMaxGeneratedTriangles));
+    r.fail("file",
+           fmt::format("holds {} triangles, more than the limit of {}", n, kMaxGeneratedTriangles));
   if (const std::string why = memory_shortfall(out.size() + n, available_memory_bytes());
       !why.empty())
     r.fail("file", why);

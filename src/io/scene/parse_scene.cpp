@@ -159,10 +159,10 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
     provenance.generators.push_back({first, scene.triangles.size() - first, e.number,
                                      where(source, e.table->source()), section});
     if (scene.triangles.size() > kMaxGeneratedTriangles)
-      throw SceneError(fmt::format(
-          "{}: {} #{} brings the scene to {} triangles, more than the limit of {} "
-          "(check units of region and size)",
-          source, section, e.number, scene.triangles.size(), kMaxGeneratedTriangles));
+      throw SceneError(
+          fmt::format("{}: {} #{} brings the scene to {} triangles, more than the limit of {} "
+                      "(check units of region and size)",
+                      source, section, e.number, scene.triangles.size(), kMaxGeneratedTriangles));
   }
   if (bodies.empty() && !scene.has_bodies()) scene.bodies.clear();
   if (scene.triangles.empty())

@@ -25,8 +25,8 @@ std::vector<std::string_view> split(std::string_view line) {
   std::size_t start = 0;
   for (;;) {
     const std::size_t comma = line.find(',', start);
-    std::string_view cell = line.substr(start, comma == std::string_view::npos ? line.npos
-                                                                               : comma - start);
+    std::string_view cell =
+        line.substr(start, comma == std::string_view::npos ? line.npos : comma - start);
     while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\t')) cell.remove_prefix(1);
     while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\t' || cell.back() == '\r'))
       cell.remove_suffix(1);
@@ -50,9 +50,9 @@ ImportedParticles read_particle_csv(const std::filesystem::path& file) {
   // A regular file only: a device or pipe (/dev/zero, a FIFO) could be read forever.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
-    throw SceneError(fmt::format("{}: cannot open the particle file: {}", name,
-                                 std::filesystem::exists(file, ec) ? "not a regular file"
-                                                                   : "no such file"));
+    throw SceneError(
+        fmt::format("{}: cannot open the particle file: {}", name,
+                    std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
   std::ifstream in(file);
   if (!in) throw SceneError(fmt::format("{}: cannot open the particle file", name));
   std::string line;

@@ -43,8 +43,7 @@ class PlacementGrid {
   bool any_near(Vec2d c, F f) const {
     const std::int64_t cx = column(c.x), cy = row(c.y);
     for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
-      for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1);
-           ++x)
+      for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1); ++x)
         for (std::size_t id = head_[index(x, y)]; id != kNone; id = next_[id])
           if (f(id)) return true;
     return false;
@@ -53,12 +52,12 @@ class PlacementGrid {
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::int64_t column(double x) const {
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((x - lo_.x) / cell_)),
-                                    0, nx_ - 1);
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((x - lo_.x) / cell_)), 0,
+                                    nx_ - 1);
   }
   std::int64_t row(double y) const {
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((y - lo_.y) / cell_)),
-                                    0, ny_ - 1);
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((y - lo_.y) / cell_)), 0,
+                                    ny_ - 1);
   }
   std::size_t index(std::int64_t x, std::int64_t y) const {
     return static_cast<std::size_t>(y * nx_ + x);

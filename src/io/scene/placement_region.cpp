@@ -32,8 +32,7 @@ bool point_in_polygon(const std::vector<Vec2d>& poly, Vec2d p) {
   bool in = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
     const Vec2d a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
-      in = !in;
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
   }
   return in;
 }

@@ -17,7 +17,8 @@ class PlacementRegion {
  public:
   /// 2 points: the corners of a rectangle (max > min on both axes); 3 or more: a simple
   /// polygon in either orientation. `problem` says why the points make no region.
-  static PlacementRegion make(const std::vector<Vec2d>& points, std::optional<std::string>& problem);
+  static PlacementRegion make(const std::vector<Vec2d>& points,
+                              std::optional<std::string>& problem);
 
   double area() const { return area_; }
   Vec2d lo() const { return lo_; }
@@ -34,9 +35,9 @@ class PlacementRegion {
   bool rectangle_ = true;
   Vec2d lo_{}, hi_{};
   double area_ = 0;
-  std::vector<Vec2d> outline_;                    // polygon only
+  std::vector<Vec2d> outline_;                   // polygon only
   std::vector<std::array<Vec2d, 3>> triangles_;  // polygon only, for sampling
-  std::vector<double> cumulative_area_;           // polygon only
+  std::vector<double> cumulative_area_;          // polygon only
 };
 
 }  // namespace tridem::scene_detail

@@ -25,8 +25,8 @@ double draw_size(std::mt19937_64& rng, const SizeDistribution& d,
   // The first class whose cumulative probability exceeds u; the last one catches the
   // rounding of the sum.
   const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), u);
-  const std::size_t k = std::min<std::size_t>(
-      static_cast<std::size_t>(it - cumulative.begin()), d.classes.size() - 1);
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(it - cumulative.begin()),
+                                              d.classes.size() - 1);
   return d.classes[k].size;
 }
 
@@ -44,8 +44,8 @@ double largest_size(const SizeDistribution& d) {
   return s;
 }
 
-std::vector<double> draw_sizes(std::mt19937_64& rng, const SizeDistribution& d,
-                               std::size_t count, double target_area, std::size_t cap) {
+std::vector<double> draw_sizes(std::mt19937_64& rng, const SizeDistribution& d, std::size_t count,
+                               double target_area, std::size_t cap) {
   std::vector<double> cumulative;
   if (!d.classes.empty()) {
     double sum = 0;

@@ -26,7 +26,7 @@ double largest_size(const SizeDistribution& d);
 /// Sizes for `count` grains, or (count = 0) grains until their total area reaches
 /// `target_area`, the last one included. `cap` bounds the count (the caller has refused a
 /// target that needs more).
-std::vector<double> draw_sizes(std::mt19937_64& rng, const SizeDistribution& d,
-                               std::size_t count, double target_area, std::size_t cap);
+std::vector<double> draw_sizes(std::mt19937_64& rng, const SizeDistribution& d, std::size_t count,
+                               double target_area, std::size_t cap);
 
 }  // namespace tridem::scene_detail

@@ -101,8 +101,7 @@ std::optional<std::vector<std::int64_t>> TableReader::integers(std::string_view 
   };
   const auto* array = n->as_array();
   if (!array) return std::vector<std::int64_t>{integer_at(*n)};
-  if (array->empty())
-    fail(key, "expected an integer or an array of integers, got an empty array");
+  if (array->empty()) fail(key, "expected an integer or an array of integers, got an empty array");
   std::vector<std::int64_t> out;
   for (const toml::node& element : *array) out.push_back(integer_at(element));
   return out;

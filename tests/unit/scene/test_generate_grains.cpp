@@ -21,7 +21,8 @@ using test::kSceneHead;
 
 double body_area(const GeneratedGrains& g, const BodySpec& b) {
   double a = 0;
-  for (std::size_t k = b.first; k < b.first + b.count; ++k) a += 0.5 * test::twice_area(g.triangles[k].vertices);
+  for (std::size_t k = b.first; k < b.first + b.count; ++k)
+    a += 0.5 * test::twice_area(g.triangles[k].vertices);
   return a;
 }
 double size_of(const GeneratedGrains& g, const BodySpec& b) {
@@ -207,8 +208,8 @@ bool inside_polygon(const std::vector<Vec2d>& poly, Vec2d p) {
 TEST(SceneGrains, InsideANonConvexPolygonalRegion) {
   // A U: two arms joined at the bottom, with a notch 0.2 wide between them. Grains
   // straddling the notch would have all vertices inside and still cross its edges.
-  const std::vector<Vec2d> u{{0, 0}, {1, 0}, {1, 1}, {0.6, 1}, {0.6, 0.3}, {0.4, 0.3}, {0.4, 1},
-                             {0, 1}};
+  const std::vector<Vec2d> u{{0, 0},     {1, 0},     {1, 1},   {0.6, 1},
+                             {0.6, 0.3}, {0.4, 0.3}, {0.4, 1}, {0, 1}};
   GrainSpec s = polygons_in_box(0, 0.06);
   s.region = u;
   s.packing_fraction = 0.35;
@@ -299,16 +300,21 @@ TEST(SceneGrains, RefusalsNameTheKey) {
   const std::string region = "region = [[0, 0], [1, 1]]\n";
   expect_refused(with_grains("kind = \"polygons\"\n" + region + "size = 0.1\ncount = 5\n"),
                  {"bad.toml:7:1", "[[generate]] #1", "missing required key 'sides'"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "sides = 4\nsize = 0.1\ncount = 5\n"),
-                 {"key 'sides'", "applies only to kind = \"polygons\""});
-  expect_refused(with_grains("kind = \"polygons\"\n" + region + "sides = [3, 80]\nsize = 0.1\ncount = 5\n"),
-                 {"key 'sides'", "within [3, 64]"});
-  expect_refused(with_grains("kind = \"polygons\"\n" + region + "sides = [6, 4]\nsize = 0.1\ncount = 5\n"),
-                 {"key 'sides'", "min must not exceed max"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "aspect_ratio = 0.5\nsize = 0.1\ncount = 5\n"),
+  expect_refused(
+      with_grains("kind = \"triangles\"\n" + region + "sides = 4\nsize = 0.1\ncount = 5\n"),
+      {"key 'sides'", "applies only to kind = \"polygons\""});
+  expect_refused(
+      with_grains("kind = \"polygons\"\n" + region + "sides = [3, 80]\nsize = 0.1\ncount = 5\n"),
+      {"key 'sides'", "within [3, 64]"});
+  expect_refused(
+      with_grains("kind = \"polygons\"\n" + region + "sides = [6, 4]\nsize = 0.1\ncount = 5\n"),
+      {"key 'sides'", "min must not exceed max"});
+  expect_refused(with_grains("kind = \"triangles\"\n" + region +
+                             "aspect_ratio = 0.5\nsize = 0.1\ncount = 5\n"),
                  {"key 'aspect_ratio'", ">= 1"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "angularity = 1\nsize = 0.1\ncount = 5\n"),
-                 {"key 'angularity'", "[0, 1)"});
+  expect_refused(
+      with_grains("kind = \"triangles\"\n" + region + "angularity = 1\nsize = 0.1\ncount = 5\n"),
+      {"key 'angularity'", "[0, 1)"});
   expect_refused(with_grains("kind = \"triangles\"\n" + region +
                              "sizes = [0.1, 0.2]\nmass_fractions = [0.5, 0.4]\ncount = 5\n"),
                  {"key 'mass_fractions'", "must sum to 1, they sum to 0.9"});
@@ -323,12 +329,15 @@ TEST(SceneGrains, RefusalsNameTheKey) {
   expect_refused(with_grains("kind = \"triangles\"\nregion = [[0, 0], [1, 1], [1, 0], [0, 1]]\n"
                              "size = 0.1\ncount = 5\n"),
                  {"key 'region'", "intersects itself"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "size = 0.1\ncount = 5\ngap = 0.1\n"),
-                 {"unknown key 'gap'"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "size = 2\ncount = 1\nmax_attempts = 50\n"),
-                 {"key 'count'", "placed 0 of 1 grains", "50 random positions"});
-  expect_refused(with_grains("kind = \"triangles\"\n" + region + "size = 1e-6\npacking_fraction = 0.5\n"),
-                 {"key 'packing_fraction'", "more than the limit"});
+  expect_refused(
+      with_grains("kind = \"triangles\"\n" + region + "size = 0.1\ncount = 5\ngap = 0.1\n"),
+      {"unknown key 'gap'"});
+  expect_refused(
+      with_grains("kind = \"triangles\"\n" + region + "size = 2\ncount = 1\nmax_attempts = 50\n"),
+      {"key 'count'", "placed 0 of 1 grains", "50 random positions"});
+  expect_refused(
+      with_grains("kind = \"triangles\"\n" + region + "size = 1e-6\npacking_fraction = 0.5\n"),
+      {"key 'packing_fraction'", "more than the limit"});
 }
 
 }  // namespace

@@ -33,12 +33,11 @@ TEST(SceneImport, CsvColumnsByNameWithBodiesAndVelocities) {
   // clockwise triangle.
   const auto v = [](double rx, double ry) { return std::array<double, 2>{1 - 3 * ry, 2 + 3 * rx}; };
   const auto a = v(2.0 / 3 - 0.5, 1.0 / 3 - 0.5), b = v(1.0 / 3 - 0.5, 2.0 / 3 - 0.5);
-  const std::string csv = fmt::format(
-      "omega,body,x1,y1,x2,y2,x3,y3,vx,vy\n"
-      "3,7,0,0,1,0,1,1,{:.17g},{:.17g}\n"
-      "0.5,2,5,0,5,1,6,0,-1,0\n"
-      "3,7,0,0,1,1,0,1,{:.17g},{:.17g}\n",
-      a[0], a[1], b[0], b[1]);
+  const std::string csv = fmt::format("omega,body,x1,y1,x2,y2,x3,y3,vx,vy\n"
+                                      "3,7,0,0,1,0,1,1,{:.17g},{:.17g}\n"
+                                      "0.5,2,5,0,5,1,6,0,-1,0\n"
+                                      "3,7,0,0,1,1,0,1,{:.17g},{:.17g}\n",
+                                      a[0], a[1], b[0], b[1]);
   const Scene s = parse_scene(importing(write_file("bodies.csv", csv)), "s.toml");
   ASSERT_EQ(s.triangles.size(), 3u);
   ASSERT_EQ(s.bodies.size(), 2u);
@@ -77,8 +76,9 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
                  {"[[import]] #1", "key 'file'", "missing_col.csv:1", "lacks column 'y3'"});
   expect_refused(importing(write_file("unknown_col.csv", "x1,y1,x2,y2,x3,y3,vz\n0,0,1,0,0,1,0\n")),
                  {"unknown column 'vz'"});
-  expect_refused(importing(write_file("bad_number.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0,0,1,x,0,1\n")),
-                 {"bad_number.csv:3", "column 'x2'", "\"x\""});
+  expect_refused(
+      importing(write_file("bad_number.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0,0,1,x,0,1\n")),
+      {"bad_number.csv:3", "column 'x2'", "\"x\""});
   expect_refused(importing(write_file("short_row.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0\n")),
                  {"short_row.csv:2", "5 values for the header's 6 columns"});
   expect_refused(importing(write_file("flat.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,2,0\n")),
@@ -89,13 +89,13 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
   expect_refused(importing(write_file("empty.csv", "x1,y1,x2,y2,x3,y3\n")), {"no triangles"});
   expect_refused(importing("/nonexistent/particles.csv"), {"key 'file'", "cannot open"});
   expect_refused(importing(write_file("p.txt", "")), {"key 'file'", "give format = \"csv\""});
-  expect_refused(importing(write_file("p2.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n"),
-                           "bodies = [\"a\"]\n"),
-                 {"key 'bodies'", "applies only to a Gmsh mesh"});
+  expect_refused(
+      importing(write_file("p2.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n"), "bodies = [\"a\"]\n"),
+      {"key 'bodies'", "applies only to a Gmsh mesh"});
   // Imported triangles overlap-checked like any: the message names the [[import]].
-  expect_refused(importing(write_file("overlap.csv",
-                                      "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n")),
-                 {"[[import]] #1", "overlap"});
+  expect_refused(
+      importing(write_file("overlap.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n")),
+      {"[[import]] #1", "overlap"});
 }
 
 const std::string kMesh = std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh";
@@ -116,9 +116,12 @@ TEST(SceneImport, GmshMeshGroupsBecomeBodies) {
       EXPECT_GT(area_of(s.triangles[k]), 0);
       a += area_of(s.triangles[k]);
     }
-    if (b.count > 1 && std::abs(a - 1) < 1e-12) square = a, ++bodies;
-    else if (b.count > 1) pentagon = a, ++bodies;
-    else lone += a;
+    if (b.count > 1 && std::abs(a - 1) < 1e-12)
+      square = a, ++bodies;
+    else if (b.count > 1)
+      pentagon = a, ++bodies;
+    else
+      lone += a;
   }
   EXPECT_EQ(bodies, 2u);
   EXPECT_NEAR(square, 1, 1e-12);
