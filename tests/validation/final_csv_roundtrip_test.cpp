@@ -45,7 +45,7 @@ TEST(FinalCsvRoundTrip, ReadingFinalCsvBackReproducesTheState) {
   Scene again = parse_scene(
       "[simulation]\nsteps = 1\ndt = 2e-5\n[[material]]\nname = \"m\"\ndensity = 2500\n"
       "penalty = 1e7\nfriction = 0.4\nrestitution = 0.5\n[[import]]\nfile = \"final.csv\"\n"
-      "material = \"m\"\n",
+      "material = \"m\"\nkeep_overlaps = true\n",  // the contacts' overlaps are the state
       (dir / "again.toml").string());
   again.simulation.backend = Backend::Cpu;
   const Snapshot after = state_of(*make_solver(again, SolverConfig{}));

@@ -53,7 +53,7 @@ double area_of(const std::array<Vec2d, 3>& v) { return 0.5 * std::abs(twice_sign
 
 }  // namespace
 
-void parse_import(const toml::table& table, const std::string& source, std::size_t number,
+bool parse_import(const toml::table& table, const std::string& source, std::size_t number,
                   const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
                   std::vector<BodySpec>& bodies) {
   TableReader r(table, source,
@@ -75,6 +75,7 @@ void parse_import(const toml::table& table, const std::string& source, std::size
   }
   const int material = lookup_material(r, materials);
   const bool fixed = r.boolean("fixed").value_or(false);
+  const bool keep_overlaps = r.boolean("keep_overlaps").value_or(false);
   const std::vector<std::string> groups = read_group_names(r);
   if (!groups.empty() && *format != Format::Gmsh)
     r.fail("bodies", "applies only to a Gmsh mesh; a CSV file groups bodies by its body column");
@@ -145,6 +146,7 @@ void parse_import(const toml::table& table, const std::string& source, std::size
     }
     bodies.push_back(body);
   }
+  return keep_overlaps;
 }
 
 }  // namespace tridem::scene_detail

@@ -150,14 +150,16 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   for (const Block& e : in_file_order(std::move(made_blocks))) {
     const std::size_t first = scene.triangles.size();
     const char* section = e.second_kind ? "[[import]]" : "[[generate]]";
+    bool keep_overlaps = false;
     if (e.second_kind)
-      scene_detail::parse_import(*e.table, source, e.number, scene.materials, scene.triangles,
-                                 scene.bodies);
+      keep_overlaps = scene_detail::parse_import(*e.table, source, e.number, scene.materials,
+                                                 scene.triangles, scene.bodies);
     else
       scene_detail::parse_generate(*e.table, source, e.number, scene.materials, scene.triangles,
                                    scene.bodies);
     provenance.generators.push_back({first, scene.triangles.size() - first, e.number,
-                                     where(source, e.table->source()), section});
+                                     where(source, e.table->source()), section,
+                                     keep_overlaps});
     if (scene.triangles.size() > kMaxGeneratedTriangles)
       throw SceneError(
           fmt::format("{}: {} #{} brings the scene to {} triangles, more than the limit of {} "

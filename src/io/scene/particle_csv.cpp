@@ -48,11 +48,11 @@ bool one_of(std::string_view name, const std::array<std::string_view, N>& names)
 ImportedParticles read_particle_csv(const std::filesystem::path& file) {
   const std::string name = file.string();
   // A regular file only: a device or pipe (/dev/zero, a FIFO) could be read forever.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
+  std::error_code fs_error;
+  if (!std::filesystem::is_regular_file(file, fs_error))
     throw SceneError(
         fmt::format("{}: cannot open the particle file: {}", name,
-                    std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
+                    std::filesystem::exists(file, fs_error) ? "not a regular file" : "no such file"));
   std::ifstream in(file);
   if (!in) throw SceneError(fmt::format("{}: cannot open the particle file", name));
   std::string line;

@@ -57,8 +57,9 @@ GeneratedGrains parse_generate_grains(TableReader& reader, bool triangles,
                                       std::size_t particles_before);
 
 /// One [[import]] block: the triangles (and bodies) of a CSV file or a Gmsh mesh, appended
-/// like parse_generate's.
-void parse_import(const toml::table& table, const std::string& source, std::size_t number,
+/// like parse_generate's. Returns its keep_overlaps key: whether overlaps among imported
+/// triangles are the state to keep (a run's final.csv) rather than a mistake to refuse.
+bool parse_import(const toml::table& table, const std::string& source, std::size_t number,
                   const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
                   std::vector<BodySpec>& bodies);
 
@@ -73,12 +74,19 @@ struct Provenance {
     std::size_t number = 0;            ///< 1-based among the blocks of its section
     std::string where;
     std::string section = "[[generate]]";  ///< or "[[import]]"
+    bool keep_overlaps = false;  ///< an [[import]] with keep_overlaps = true
   };
   std::vector<Generated> generators;
 
   /// "particle id 12 ([[generate]] #1 at scene.toml:30:1, its triangle 3 of 200)"; ids of an
   /// [[import]] say "[[import]] #1".
   std::string describe(std::size_t id) const;
+
+  /// Whether the overlap of `a` and `b` is kept: both come from [[import]]s with
+  /// keep_overlaps = true.
+  bool keeps_overlap(std::size_t a, std::size_t b) const;
+  /// Whether particle `id` comes from an [[import]].
+  bool in_import(std::size_t id) const;
 };
 
 /// The [simulation] and [output] checks of validate_scene alone.

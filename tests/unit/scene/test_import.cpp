@@ -78,7 +78,7 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
                  {"unknown column 'vz'"});
   expect_refused(
       importing(write_file("bad_number.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0,0,1,x,0,1\n")),
-      {"bad_number.csv:3", "column 'x2'", "\"x\""});
+      {"bad_number.csv:3", "column 'y2'", "\"x\""});
   expect_refused(importing(write_file("short_row.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0\n")),
                  {"short_row.csv:2", "5 values for the header's 6 columns"});
   expect_refused(importing(write_file("flat.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,2,0\n")),
@@ -95,7 +95,16 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
   // Imported triangles overlap-checked like any: the message names the [[import]].
   expect_refused(
       importing(write_file("overlap.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n")),
-      {"[[import]] #1", "overlap"});
+      {"[[import]] #1", "overlap", "keep_overlaps = true"});
+  // Kept when asked (a run's final state holds its contacts' overlaps)...
+  const auto kept =
+      write_file("kept.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n");
+  EXPECT_EQ(parse_scene(importing(kept, "keep_overlaps = true\n"), "s.toml").triangles.size(),
+            2u);
+  // ...but only among the imported triangles: one of them against a [[triangle]] is not.
+  expect_refused(importing(kept, "keep_overlaps = true\n") +
+                     "[[triangle]]\nmaterial = \"m\"\nvertices = [[0.2, 0.2], [2, 0.2], [0.2, 2]]\n",
+                 {"[[triangle]] #1", "[[import]] #1", "overlap"});
 }
 
 const std::string kMesh = std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh";
