@@ -26,7 +26,7 @@ constexpr std::array<std::pair<std::string_view, Format>, 2> kFormatNames{
 // A relative path is taken from the scene file's folder, so that a scene and its data
 // can be moved together.
 std::filesystem::path resolve(const std::string& scene_source, const std::string& file) {
-  const std::filesystem::path p(file);
+  std::filesystem::path p(file);
   if (p.is_absolute()) return p;
   return std::filesystem::path(scene_source).parent_path() / p;
 }

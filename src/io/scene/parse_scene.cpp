@@ -158,8 +158,7 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
       scene_detail::parse_generate(*e.table, source, e.number, scene.materials, scene.triangles,
                                    scene.bodies);
     provenance.generators.push_back({first, scene.triangles.size() - first, e.number,
-                                     where(source, e.table->source()), section,
-                                     keep_overlaps});
+                                     where(source, e.table->source()), section, keep_overlaps});
     if (scene.triangles.size() > kMaxGeneratedTriangles)
       throw SceneError(
           fmt::format("{}: {} #{} brings the scene to {} triangles, more than the limit of {} "

@@ -50,9 +50,9 @@ ImportedParticles read_particle_csv(const std::filesystem::path& file) {
   // A regular file only: a device or pipe (/dev/zero, a FIFO) could be read forever.
   std::error_code fs_error;
   if (!std::filesystem::is_regular_file(file, fs_error))
-    throw SceneError(
-        fmt::format("{}: cannot open the particle file: {}", name,
-                    std::filesystem::exists(file, fs_error) ? "not a regular file" : "no such file"));
+    throw SceneError(fmt::format("{}: cannot open the particle file: {}", name,
+                                 std::filesystem::exists(file, fs_error) ? "not a regular file"
+                                                                         : "no such file"));
   std::ifstream in(file);
   if (!in) throw SceneError(fmt::format("{}: cannot open the particle file", name));
   std::string line;

@@ -74,7 +74,7 @@ struct Provenance {
     std::size_t number = 0;            ///< 1-based among the blocks of its section
     std::string where;
     std::string section = "[[generate]]";  ///< or "[[import]]"
-    bool keep_overlaps = false;  ///< an [[import]] with keep_overlaps = true
+    bool keep_overlaps = false;            ///< an [[import]] with keep_overlaps = true
   };
   std::vector<Generated> generators;
 

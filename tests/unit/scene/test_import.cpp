@@ -17,7 +17,7 @@ using test::expect_refused;
 using test::kSceneHead;
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("tridem_import_" + name);
+  auto path = std::filesystem::temp_directory_path() / ("tridem_import_" + name);
   std::ofstream(path) << text;
   return path;
 }
@@ -97,14 +97,13 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
       importing(write_file("overlap.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n")),
       {"[[import]] #1", "overlap", "keep_overlaps = true"});
   // Kept when asked (a run's final state holds its contacts' overlaps)...
-  const auto kept =
-      write_file("kept.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n");
-  EXPECT_EQ(parse_scene(importing(kept, "keep_overlaps = true\n"), "s.toml").triangles.size(),
-            2u);
+  const auto kept = write_file("kept.csv", "x1,y1,x2,y2,x3,y3\n0,0,1,0,0,1\n0.1,0.1,1,0.1,0.1,1\n");
+  EXPECT_EQ(parse_scene(importing(kept, "keep_overlaps = true\n"), "s.toml").triangles.size(), 2u);
   // ...but only among the imported triangles: one of them against a [[triangle]] is not.
-  expect_refused(importing(kept, "keep_overlaps = true\n") +
-                     "[[triangle]]\nmaterial = \"m\"\nvertices = [[0.2, 0.2], [2, 0.2], [0.2, 2]]\n",
-                 {"[[triangle]] #1", "[[import]] #1", "overlap"});
+  expect_refused(
+      importing(kept, "keep_overlaps = true\n") +
+          "[[triangle]]\nmaterial = \"m\"\nvertices = [[0.2, 0.2], [2, 0.2], [0.2, 2]]\n",
+      {"[[triangle]] #1", "[[import]] #1", "overlap"});
 }
 
 const std::string kMesh = std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh";
