@@ -27,8 +27,7 @@ void check_finite(const std::vector<double>& v, const char* what, const std::str
 
 }  // namespace
 
-void validate_solver_state(const SolverState& s, std::size_t particles,
-                           const std::string& source) {
+void validate_solver_state(const SolverState& s, std::size_t particles, const std::string& source) {
   if (s.step < 0) throw Error(fmt::format("{}: negative step {}", source, s.step));
   if (!std::isfinite(s.time) || s.time < 0)
     throw Error(fmt::format("{}: time {} is not a finite time >= 0", source, s.time));

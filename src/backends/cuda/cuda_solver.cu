@@ -114,8 +114,8 @@ void CudaSolver<Real>::update_geometry() {
   const StepStatus fresh{0, INT_MAX, INT_MAX};
   TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
                                     cudaMemcpyHostToDevice, stream_));
-  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{},
-                                                             params_, status_.data(), false);
+  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{}, params_,
+                                                             status_.data(), false);
   TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   rebuild_ = true;
@@ -154,8 +154,8 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       const PairArrays<Real>& q = step_pairs_;
       if (q.count == 0) return;
       constexpr int threads = PairKernelShape<Real>::threads;
-      pair_forces_kernel<Real><<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(
-          p, q, params_, status);
+      pair_forces_kernel<Real>
+          <<<(q.count + threads - 1) / threads, threads, 0, stream_>>>(p, q, params_, status);
       TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
       return;
     }

@@ -3,13 +3,13 @@
 // state stays on the GPU; only snapshots (output steps) copy it back. One step is the
 // CPU solver's stages (kPipeline) with the same sums in the same order, so that both
 // agree to rounding and two runs of one scene agree bit for bit.
-#include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/decomposed_rows.cuh"
+#include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
 #include "backends/cuda/particle_buffers.cuh"
 #include "backends/cuda/stage_events.cuh"
-#include "core/stage_pipeline.hpp"
 #include "core/particle_model.hpp"
+#include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
 #include "tridem/solver.hpp"
 

@@ -106,6 +106,18 @@ TEST(SceneImport, CsvRefusalsNameTheFileAndLine) {
       {"[[triangle]] #1", "[[import]] #1", "overlap"});
 }
 
+#ifdef TRIDEM_HAS_GMSH
+constexpr bool kHasGmsh = true;
+#else
+constexpr bool kHasGmsh = false;
+#endif
+
+TEST(SceneImport, GmshMeshIsRefusedByABuildWithoutGmsh) {
+  if (kHasGmsh) GTEST_SKIP() << "built with Gmsh";
+  expect_refused(importing(std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh"),
+                 {"key 'file'", "-DTRIDEM_WITH_GMSH=OFF"});
+}
+
 const std::string kMesh = std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh";
 
 double area_of(const TriangleSpec& t) {
@@ -113,6 +125,7 @@ double area_of(const TriangleSpec& t) {
 }
 
 TEST(SceneImport, GmshMeshGroupsBecomeBodies) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
   const Scene s = parse_scene(importing(kMesh, "bodies = [\"square\", \"pentagon\"]\n"), "s.toml");
   ASSERT_TRUE(s.has_bodies());
   // The two grains are bodies; the floor's triangles are on their own.
@@ -139,6 +152,7 @@ TEST(SceneImport, GmshMeshGroupsBecomeBodies) {
 }
 
 TEST(SceneImport, GmshMeshWithoutGroupsGivesLoneTriangles) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
   const Scene s = parse_scene(importing(kMesh), "s.toml");
   double total = 0;
   for (const TriangleSpec& t : s.triangles) total += area_of(t);
@@ -147,6 +161,7 @@ TEST(SceneImport, GmshMeshWithoutGroupsGivesLoneTriangles) {
 }
 
 TEST(SceneImport, GmshRefusals) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
   expect_refused(importing(kMesh, "bodies = [\"rock\"]\n"),
                  {"key 'file'", "no 2D physical group named \"rock\"", "\"square\""});
   expect_refused(importing(write_file("junk.msh", "this is not a mesh\n")),
