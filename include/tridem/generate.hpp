@@ -1,6 +1,6 @@
 #pragma once
 // Particle generators, shared by scene files ([[generate]]) and by code (tests, benchmarks).
-// Both guarantee that no two generated triangles overlap, emit counter-clockwise vertices,
+// All guarantee that no two generated triangles overlap, emit counter-clockwise vertices,
 // and are deterministic: the same spec gives the same triangles on every platform (up to
 // the last bits of the C library's sin/cos). Invalid specs, and specs that would make no
 // triangle or more than kMaxGeneratedTriangles, throw SceneError.
@@ -51,6 +51,54 @@ struct RandomPackingSpec {
   std::size_t count = 0;      ///< 0: one triangle per cell of the region
   double irregularity = 0;    ///< in [0, 1): 0 equilateral, towards 1 more distorted
 };
+
+/// One class of a size table: grains of `size` make up `mass_fraction` of the mass.
+struct SizeClass {
+  double size = 0;           ///< equal-area diameter, m, > 0
+  double mass_fraction = 0;  ///< > 0; the fractions of a table sum to 1
+};
+
+/// Grain sizes. The size of a grain is the diameter of the circle of equal area,
+/// d = 2·sqrt(A/π), so a grain's mass is ρ·π·d²/4 whatever its shape.
+struct SizeDistribution {
+  double min_size = 0;  ///< uniform by number in [min_size, max_size] (equal: one size)
+  double max_size = 0;
+  std::vector<SizeClass> classes;  ///< non-empty: this table instead of the range
+};
+
+/// Random convex polygons (or triangles) placed by random sequential addition, without
+/// overlap, wholly inside a rectangle or a simple polygon (docs/scene-format.md,
+/// kind = "polygons" / "triangles"). Each polygon is one body of triangles (its
+/// constrained Delaunay triangulation); a triangle is a body of one member.
+struct GrainSpec {
+  int material = 0;
+  /// 2 points: the corners [min, max] of a rectangle; 3 or more: a simple polygon.
+  std::vector<Vec2d> region;
+  int min_sides = 3, max_sides = 3;       ///< sides drawn uniformly in [min, max], 3..64
+  double min_aspect = 1, max_aspect = 1;  ///< aspect ratio drawn uniformly, >= 1
+  double angularity = 0;                  ///< in [0, 1): spread of the vertex angles
+  SizeDistribution sizes;
+  std::size_t count = 0;        ///< grains to place; 0: use packing_fraction
+  double packing_fraction = 0;  ///< in (0, 1): grains' total area / region area
+  std::uint64_t seed = 1;
+  std::size_t max_attempts = 10000;  ///< random positions tried per grain before giving up
+  Vec2d velocity{};                  ///< given to every grain
+};
+
+/// The grains: triangles, and bodies over them (BodySpec::first indexes `triangles`).
+struct GeneratedGrains {
+  std::vector<TriangleSpec> triangles;
+  std::vector<BodySpec> bodies;
+};
+
+/// Most triangles generate_grains(spec) can make (from the sizes and the amount asked
+/// for, before drawing any), to size memory first; throws SceneError for an invalid spec.
+std::size_t max_grain_triangles(const GrainSpec& spec);
+
+/// Throws SceneError for an invalid spec, and when a grain finds no free place in
+/// max_attempts tries (the message says how many were placed, and the packing fraction
+/// reached). Grains are placed largest first; ids follow that order.
+GeneratedGrains generate_grains(const GrainSpec& spec);
 
 /// How many triangles generate_lattice(spec) makes, without making them.
 std::size_t count_lattice(const LatticeSpec& spec);

@@ -14,9 +14,12 @@
 namespace tridem::scene_detail {
 namespace {
 
-enum class Kind { Lattice, Random };
-constexpr std::array<std::pair<std::string_view, Kind>, 2> kKindNames{
-    {{"lattice", Kind::Lattice}, {"random", Kind::Random}}};
+enum class Kind { Lattice, Random, Polygons, Triangles };
+constexpr std::array<std::pair<std::string_view, Kind>, 4> kKindNames{
+    {{"lattice", Kind::Lattice},
+     {"random", Kind::Random},
+     {"polygons", Kind::Polygons},
+     {"triangles", Kind::Triangles}}};
 
 struct Common {
   int material;
@@ -102,10 +105,21 @@ std::vector<TriangleSpec> generate_here(const TableReader& r, Make make) {
 }  // namespace
 
 void parse_generate(const toml::table& table, const std::string& source, std::size_t number,
-                    const std::vector<Material>& materials, std::vector<TriangleSpec>& out) {
+                    const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
+                    std::vector<BodySpec>& bodies) {
   TableReader r(table, source,
                 fmt::format("[[generate]] #{} (particle ids from {})", number, out.size()));
   const Kind kind = r.required(r.choice_in<Kind>("kind", kKindNames), "kind");
+  if (kind == Kind::Polygons || kind == Kind::Triangles) {
+    GeneratedGrains grains =
+        parse_generate_grains(r, kind == Kind::Triangles, materials, out.size());
+    for (BodySpec& b : grains.bodies) {
+      b.first += out.size();
+      bodies.push_back(b);
+    }
+    out.insert(out.end(), grains.triangles.begin(), grains.triangles.end());
+    return;
+  }
   const Common common = read_common(r, materials);
   // Read everything and refuse unknown keys before generating: a typo should not cost the
   // time of generating a million triangles first.
@@ -128,6 +142,10 @@ void parse_generate(const toml::table& table, const std::string& source, std::si
     check_memory(spec.count > 0 ? spec.count : count_random_cells(spec));
     made = generate_here(r, [&] { return generate_random(spec); });
   }
+  // Each triangle of these kinds is a body of its own.
+  for (std::size_t k = 0; k < made.size(); ++k)
+    bodies.push_back(
+        {out.size() + k, 1, made[k].velocity, made[k].angular_velocity, made[k].motion});
   if (out.empty()) {
     out = std::move(made);
   } else {

@@ -50,8 +50,8 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 }
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
-  static constexpr std::string_view kKnown[] = {"simulation", "output", "material",
-                                                "triangle",   "body",   "generate"};
+  static constexpr std::string_view kKnown[] = {"simulation", "output",   "material", "triangle",
+                                                "body",       "generate", "import"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -62,17 +62,14 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
   if (first)
     throw SceneError(
         fmt::format("{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-                    "[[material]], [[triangle]], [[body]], [[generate]])",
+                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]])",
                     where(source, first->source()), first->str()));
 }
 
-/// The body of one triangle, `triangles[index]` (the last one by default).
-BodySpec lone_body(const std::vector<TriangleSpec>& triangles, std::size_t index) {
-  const TriangleSpec& t = triangles[index];
-  return {index, 1, t.velocity, t.angular_velocity, t.motion};
-}
+/// The body of the last triangle of `triangles`, alone.
 BodySpec lone_body(const std::vector<TriangleSpec>& triangles) {
-  return lone_body(triangles, triangles.size() - 1);
+  const TriangleSpec& t = triangles.back();
+  return {triangles.size() - 1, 1, t.velocity, t.angular_velocity, t.motion};
 }
 
 }  // namespace
@@ -105,29 +102,37 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
         scene_detail::parse_material(*materials[i], source, i + 1, scene.materials));
 
   // Ids: explicit [[triangle]]s and [[body]]s in file order (a body's members take
-  // consecutive triangle ids), then each generator's output in file order.
+  // consecutive triangle ids), then each generator's or import's output in file order.
   const auto triangles = blocks(root, "triangle", source);
   const auto bodies = blocks(root, "body", source);
   const auto generators = blocks(root, "generate", source);
-  struct Explicit {
+  const auto imports = blocks(root, "import", source);
+  struct Block {
     const toml::table* table;
-    bool body;
+    bool second_kind;    // [[body]] among the explicit ones, [[import]] among the rest
     std::size_t number;  // 1-based among its kind
   };
-  std::vector<Explicit> in_file_order;
+  auto in_file_order = [](std::vector<Block> list) {
+    std::stable_sort(list.begin(), list.end(), [](const Block& a, const Block& b) {
+      return scene_detail::precedes(a.table->source().begin, b.table->source().begin);
+    });
+    return list;
+  };
+  std::vector<Block> explicit_blocks, made_blocks;
   for (std::size_t i = 0; i < triangles.size(); ++i)
-    in_file_order.push_back({triangles[i], false, i + 1});
-  for (std::size_t i = 0; i < bodies.size(); ++i) in_file_order.push_back({bodies[i], true, i + 1});
-  std::stable_sort(
-      in_file_order.begin(), in_file_order.end(), [](const Explicit& a, const Explicit& b) {
-        return scene_detail::precedes(a.table->source().begin, b.table->source().begin);
-      });
-  const bool with_bodies = !bodies.empty();
+    explicit_blocks.push_back({triangles[i], false, i + 1});
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    explicit_blocks.push_back({bodies[i], true, i + 1});
+  for (std::size_t i = 0; i < generators.size(); ++i)
+    made_blocks.push_back({generators[i], false, i + 1});
+  for (std::size_t i = 0; i < imports.size(); ++i) made_blocks.push_back({imports[i], true, i + 1});
+  // Bodies are kept for every scene while reading (a lone triangle is a body of one) and
+  // dropped at the end when none has several members and no [[body]] was written.
   scene.triangles.reserve(triangles.size());
   scene_detail::Provenance provenance;
-  for (const Explicit& e : in_file_order) {
+  for (const Block& e : in_file_order(std::move(explicit_blocks))) {
     const std::string at = where(source, e.table->source());
-    if (e.body) {
+    if (e.second_kind) {
       const BodySpec body = scene_detail::parse_body(
           *e.table, source, e.number, scene.bodies.size(), scene.materials, scene.triangles);
       for (std::size_t k = 0; k < body.count; ++k)
@@ -137,31 +142,34 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
       scene.bodies.push_back(body);
       continue;
     }
-    const std::size_t id = with_bodies ? scene.bodies.size() : scene.triangles.size();
-    scene.triangles.push_back(
-        scene_detail::parse_triangle(*e.table, source, e.number, id, scene.materials));
+    scene.triangles.push_back(scene_detail::parse_triangle(*e.table, source, e.number,
+                                                           scene.bodies.size(), scene.materials));
     provenance.explicit_origin.push_back(fmt::format("[[triangle]] #{} at {}", e.number, at));
-    if (with_bodies) scene.bodies.push_back(lone_body(scene.triangles));
+    scene.bodies.push_back(lone_body(scene.triangles));
   }
-  for (std::size_t i = 0; i < generators.size(); ++i) {
+  for (const Block& e : in_file_order(std::move(made_blocks))) {
     const std::size_t first = scene.triangles.size();
-    scene_detail::parse_generate(*generators[i], source, i + 1, scene.materials,
-                                 scene.triangles);
-    provenance.generators.push_back({first, scene.triangles.size() - first, i + 1,
-                                     where(source, generators[i]->source())});
+    const char* section = e.second_kind ? "[[import]]" : "[[generate]]";
+    bool keep_overlaps = false;
+    if (e.second_kind)
+      keep_overlaps = scene_detail::parse_import(*e.table, source, e.number, scene.materials,
+                                                 scene.triangles, scene.bodies);
+    else
+      scene_detail::parse_generate(*e.table, source, e.number, scene.materials, scene.triangles,
+                                   scene.bodies);
+    provenance.generators.push_back({first, scene.triangles.size() - first, e.number,
+                                     where(source, e.table->source()), section, keep_overlaps});
     if (scene.triangles.size() > kMaxGeneratedTriangles)
-      throw SceneError(fmt::format(
-          "{}: [[generate]] #{} brings the scene to {} triangles, more than the limit of {} "
-          "(check units of region and size)",
-          source, i + 1, scene.triangles.size(), kMaxGeneratedTriangles));
+      throw SceneError(
+          fmt::format("{}: {} #{} brings the scene to {} triangles, more than the limit of {} "
+                      "(check units of region and size)",
+                      source, section, e.number, scene.triangles.size(), kMaxGeneratedTriangles));
   }
-  if (with_bodies)  // each generated triangle is a body of its own
-    for (std::size_t i = scene.bodies.back().first + scene.bodies.back().count;
-         i < scene.triangles.size(); ++i)
-      scene.bodies.push_back(lone_body(scene.triangles, i));
+  if (bodies.empty() && !scene.has_bodies()) scene.bodies.clear();
   if (scene.triangles.empty())
     throw SceneError(fmt::format(
-        "{}: the scene has no triangles; add [[triangle]] or [[generate]] blocks", source));
+        "{}: the scene has no triangles; add [[triangle]], [[generate]] or [[import]] blocks",
+        source));
 
   scene.source = std::move(source_name);
   // A backstop for what the checks above should already have caught, and the one check

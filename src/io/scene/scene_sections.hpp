@@ -2,6 +2,7 @@
 // One parser per kind of table in a scene file; parse_scene.cpp walks the document and
 // calls them. Each refuses unknown keys in its own table.
 #include "io/scene/toml_table_reader.hpp"
+#include "tridem/generate.hpp"
 #include "tridem/scene.hpp"
 
 #include <cstddef>
@@ -42,9 +43,25 @@ BodySpec parse_body(const toml::table& table, const std::string& source, std::si
                     std::size_t id, const std::vector<Material>& materials,
                     std::vector<TriangleSpec>& triangles);
 
-/// Appends the triangles of one [[generate]] block to `out` (whose size is the first id).
+/// Appends the triangles of one [[generate]] block to `out` (whose size is the first id)
+/// and its bodies to `bodies` (one per triangle, or one per grain of kind = "polygons").
 void parse_generate(const toml::table& table, const std::string& source, std::size_t number,
-                    const std::vector<Material>& materials, std::vector<TriangleSpec>& out);
+                    const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
+                    std::vector<BodySpec>& bodies);
+
+/// The keys of kind = "polygons" (or "triangles": `triangles`) read from `reader`, and the
+/// grains they make; `particles_before` counts the scene's triangles so far (for the
+/// memory check). Bodies index the returned triangles.
+GeneratedGrains parse_generate_grains(TableReader& reader, bool triangles,
+                                      const std::vector<Material>& materials,
+                                      std::size_t particles_before);
+
+/// One [[import]] block: the triangles (and bodies) of a CSV file or a Gmsh mesh, appended
+/// like parse_generate's. Returns its keep_overlaps key: whether overlaps among imported
+/// triangles are the state to keep (a run's final.csv) rather than a mistake to refuse.
+bool parse_import(const toml::table& table, const std::string& source, std::size_t number,
+                  const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
+                  std::vector<BodySpec>& bodies);
 
 /// Where each particle id of a scene file came from, so that a refusal about a pair of
 /// particles (an initial overlap) says which blocks to edit.
@@ -54,13 +71,22 @@ struct Provenance {
   std::vector<std::string> explicit_origin;
   struct Generated {
     std::size_t first = 0, count = 0;  ///< ids [first, first + count)
-    std::size_t number = 0;            ///< 1-based among the [[generate]] blocks
+    std::size_t number = 0;            ///< 1-based among the blocks of its section
     std::string where;
+    std::string section = "[[generate]]";  ///< or "[[import]]"
+    bool keep_overlaps = false;            ///< an [[import]] with keep_overlaps = true
   };
   std::vector<Generated> generators;
 
-  /// "particle id 12 ([[generate]] #1 at scene.toml:30:1, its triangle 3 of 200)"
+  /// "particle id 12 ([[generate]] #1 at scene.toml:30:1, its triangle 3 of 200)"; ids of an
+  /// [[import]] say "[[import]] #1".
   std::string describe(std::size_t id) const;
+
+  /// Whether the overlap of `a` and `b` is kept: both come from [[import]]s with
+  /// keep_overlaps = true.
+  bool keeps_overlap(std::size_t a, std::size_t b) const;
+  /// Whether particle `id` comes from an [[import]].
+  bool in_import(std::size_t id) const;
 };
 
 /// The [simulation] and [output] checks of validate_scene alone.

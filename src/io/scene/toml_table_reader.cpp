@@ -80,6 +80,44 @@ std::optional<bool> TableReader::boolean(std::string_view key) {
   return b->get();
 }
 
+std::optional<std::vector<double>> TableReader::reals(std::string_view key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const auto* array = n->as_array();
+  if (!array) return std::vector<double>{number_at(*n, key)};
+  if (array->empty()) fail(key, "expected a number or an array of numbers, got an empty array");
+  std::vector<double> out;
+  for (const toml::node& element : *array) out.push_back(number_at(element, key));
+  return out;
+}
+
+std::optional<std::vector<std::int64_t>> TableReader::integers(std::string_view key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  auto integer_at = [&](const toml::node& e) {
+    const auto* i = e.as_integer();
+    if (!i) fail_at(e, key, fmt::format("expected an integer, got {}", describe_type(e.type())));
+    return i->get();
+  };
+  const auto* array = n->as_array();
+  if (!array) return std::vector<std::int64_t>{integer_at(*n)};
+  if (array->empty()) fail(key, "expected an integer or an array of integers, got an empty array");
+  std::vector<std::int64_t> out;
+  for (const toml::node& element : *array) out.push_back(integer_at(element));
+  return out;
+}
+
+std::optional<std::vector<Vec2d>> TableReader::point_list(std::string_view key,
+                                                          std::string_view what) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const auto* array = n->as_array();
+  if (!array) fail(key, fmt::format("expected {}, got {}", what, describe_type(n->type())));
+  std::vector<Vec2d> out;
+  for (const toml::node& element : *array) out.push_back(point_at(element, key, what));
+  return out;
+}
+
 Vec2d TableReader::point_at(const toml::node& n, std::string_view key,
                             std::string_view what) const {
   const auto* pair = n.as_array();

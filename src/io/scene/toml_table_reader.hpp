@@ -45,6 +45,14 @@ class TableReader {
   template <std::size_t N>
   std::optional<std::array<Vec2d, N>> points(std::string_view key);
 
+  /// A number, or an array of numbers: its elements (one for a bare number). Refused
+  /// when empty.
+  std::optional<std::vector<double>> reals(std::string_view key);
+  /// An integer, or an array of integers, likewise.
+  std::optional<std::vector<std::int64_t>> integers(std::string_view key);
+  /// An array of any number of [x, y] points (`what` describes it in refusals).
+  std::optional<std::vector<Vec2d>> point_list(std::string_view key, std::string_view what);
+
   /// The enumerator whose spelling equals the string under `key`, from a table of
   /// {spelling, value} (those of setting_names.hpp: one table per enumeration).
   template <class E, class Options>

@@ -104,7 +104,21 @@ void check_triangles(const Scene& scene, const Refuser& refuse) {
 void check_overlaps(const Scene& scene, const Refuser& refuse,
                     const scene_detail::Provenance* provenance) {
   if (scene.simulation.relax_overlaps) return;
-  const auto o = first_initial_overlap(scene.triangles);
+  std::optional<InitialOverlap> o;
+  bool keeps_some = false;
+  if (provenance)
+    for (const scene_detail::Provenance::Generated& g : provenance->generators)
+      keeps_some = keeps_some || g.keep_overlaps;
+  if (keeps_some) {
+    // The first overlap not kept, in the order first_initial_overlap would give.
+    for (const InitialOverlap& candidate : find_initial_overlaps(scene.triangles))
+      if (!provenance->keeps_overlap(candidate.a, candidate.b)) {
+        o = candidate;
+        break;
+      }
+  } else {
+    o = first_initial_overlap(scene.triangles);
+  }
   if (!o) return;
   auto describe = [&](std::size_t id) {
     return provenance ? provenance->describe(id) : fmt::format("particle id {}", id);
@@ -113,8 +127,12 @@ void check_overlaps(const Scene& scene, const Refuser& refuse,
                      "that separates them; touching is allowed): their contact would start "
                      "with energy that the scene does not hold. Move them apart, or set "
                      "[simulation] relax_overlaps = true to push overlapping triangles apart "
-                     "before the run",
-                     describe(o->a), describe(o->b), o->depth));
+                     "before the run{}",
+                     describe(o->a), describe(o->b), o->depth,
+                     provenance && provenance->in_import(o->a) && provenance->in_import(o->b)
+                         ? " (or, if the file is a run's final.csv whose contacts overlap, "
+                           "keep_overlaps = true in its [[import]] block to keep them)"
+                         : ""));
 }
 
 }  // namespace
@@ -126,9 +144,24 @@ std::string Provenance::describe(std::size_t id) const {
     return fmt::format("particle id {} ({})", id, explicit_origin[id]);
   for (const Generated& g : generators)
     if (id >= g.first && id < g.first + g.count)
-      return fmt::format("particle id {} ([[generate]] #{} at {}, its triangle {} of {})", id,
+      return fmt::format("particle id {} ({} #{} at {}, its triangle {} of {})", id, g.section,
                          g.number, g.where, id - g.first + 1, g.count);
   return fmt::format("particle id {}", id);
+}
+
+bool Provenance::in_import(std::size_t id) const {
+  for (const Generated& g : generators)
+    if (id >= g.first && id < g.first + g.count) return g.section == "[[import]]";
+  return false;
+}
+
+bool Provenance::keeps_overlap(std::size_t a, std::size_t b) const {
+  auto kept = [&](std::size_t id) {
+    for (const Generated& g : generators)
+      if (id >= g.first && id < g.first + g.count) return g.keep_overlaps;
+    return false;
+  };
+  return kept(a) && kept(b);
 }
 
 void validate_settings(const Scene& scene) { check_settings(scene, Refuser(scene)); }

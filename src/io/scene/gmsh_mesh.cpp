@@ -1,0 +1,139 @@
+// Reading a 2D Gmsh mesh through Gmsh's own C++ API (Debian's libgmsh-dev), so that every
+// .msh version Gmsh writes is read by the code that wrote it. Gmsh keeps one global
+// model: each read initialises it, opens the file, copies what tridem needs and
+// finalises it again, so reads are independent (and not to be run from two threads).
+#include "io/scene/imported_particles.hpp"
+#include "tridem/error.hpp"
+
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <cmath>
+#include <exception>
+#include <unordered_map>
+
+namespace tridem::scene_detail {
+namespace {
+
+constexpr int kTriangle3 = 2;  // Gmsh's element type of a 3-node triangle
+
+// Gmsh initialised for one read, quiet, throwing on errors; finalised however it ends.
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.AbortOnError", 3);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+ImportedParticles read_open_mesh(const std::string& name,
+                                 const std::vector<std::string>& body_groups) {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  for (int type : types)
+    if (type != kTriangle3) {
+      std::string what;
+      int dim = 0, order = 0, nodes = 0, primary = 0;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(type, what, dim, order, nodes, local, primary);
+      throw SceneError(fmt::format(
+          "{}: the mesh has 2D elements of type {} ({}); tridem reads 3-node triangles only "
+          "(mesh with triangles of order 1: Mesh.ElementOrder = 1, no recombination)",
+          name, type, what));
+    }
+  std::vector<std::size_t> element_tags, element_nodes;
+  gmsh::model::mesh::getElementsByType(kTriangle3, element_tags, element_nodes);
+  if (element_tags.empty())
+    throw SceneError(fmt::format("{}: the mesh has no triangles (is it meshed in 2D?)", name));
+
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, Vec2d> node_at;
+  node_at.reserve(node_tags.size());
+  for (std::size_t k = 0; k < node_tags.size(); ++k) {
+    const double z = coords[3 * k + 2];
+    if (z != 0)
+      throw SceneError(fmt::format("{}: node {} has z = {}; tridem reads meshes in the plane z = 0",
+                                   name, node_tags[k], z));
+    node_at[node_tags[k]] = {coords[3 * k], coords[3 * k + 1]};
+  }
+
+  // Element tag -> index of its body group.
+  std::unordered_map<std::size_t, std::int64_t> body_of;
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 2);
+  for (std::size_t b = 0; b < body_groups.size(); ++b) {
+    bool found = false;
+    for (const auto& [dim, tag] : groups) {
+      std::string group_name;
+      gmsh::model::getPhysicalName(dim, tag, group_name);
+      if (group_name != body_groups[b]) continue;
+      found = true;
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+      for (int entity : entities) {
+        std::vector<std::size_t> tags, nodes;
+        gmsh::model::mesh::getElementsByType(kTriangle3, tags, nodes, entity);
+        for (std::size_t t : tags)
+          if (!body_of.emplace(t, static_cast<std::int64_t>(b)).second &&
+              body_of[t] != static_cast<std::int64_t>(b))
+            throw SceneError(fmt::format(
+                "{}: triangle element {} is in two body groups, \"{}\" and \"{}\"", name, t,
+                body_groups[static_cast<std::size_t>(body_of[t])], body_groups[b]));
+      }
+    }
+    if (!found) {
+      std::string known;
+      for (const auto& [dim, tag] : groups) {
+        std::string group_name;
+        gmsh::model::getPhysicalName(dim, tag, group_name);
+        known += (known.empty() ? "\"" : ", \"") + group_name + "\"";
+      }
+      throw SceneError(fmt::format("{}: no 2D physical group named \"{}\" (the mesh has {})", name,
+                                   body_groups[b], known.empty() ? "none" : known));
+    }
+  }
+
+  ImportedParticles out;
+  out.where_name = "element";
+  for (std::size_t e = 0; e < element_tags.size(); ++e) {
+    std::array<Vec2d, 3> v{};
+    for (std::size_t k = 0; k < 3; ++k) v[k] = node_at.at(element_nodes[3 * e + k]);
+    out.vertices.push_back(v);
+    out.velocity.push_back({});
+    out.angular_velocity.push_back(0);
+    const auto it = body_of.find(element_tags[e]);
+    out.body.push_back(it == body_of.end() ? -1 : it->second);
+    out.where.push_back(element_tags[e]);
+  }
+  return out;
+}
+
+}  // namespace
+
+ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
+                                 const std::vector<std::string>& body_groups) {
+  const std::string name = file.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw SceneError(fmt::format("{}: cannot read the mesh: no such file", name));
+  try {
+    GmshSession session;
+    gmsh::open(name);
+    return read_open_mesh(name, body_groups);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SceneError(fmt::format("{}: Gmsh cannot read it: {}", name, e.what()));
+  } catch (const std::string& e) {
+    throw SceneError(fmt::format("{}: Gmsh cannot read it: {}", name, e));
+  } catch (...) {
+    throw SceneError(fmt::format("{}: Gmsh cannot read it as a mesh", name));
+  }
+}
+
+}  // namespace tridem::scene_detail

@@ -1,0 +1,36 @@
+#pragma once
+// Triangles read from a file ([[import]]): their vertices as written, and what the file
+// says of their motion and grouping. parse_import turns them into TriangleSpecs and bodies.
+#include "tridem/vec2.hpp"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tridem::scene_detail {
+
+struct ImportedParticles {
+  std::vector<std::array<Vec2d, 3>> vertices;  ///< as in the file, either orientation
+  std::vector<Vec2d> velocity;                 ///< of each triangle's centroid (zeros if absent)
+  std::vector<double> angular_velocity;        ///< likewise
+  /// Per triangle: the body it belongs to (triangles of one id become one body), or -1
+  /// for a triangle on its own.
+  std::vector<std::int64_t> body;
+  /// Per triangle, for refusals: its line in a CSV file, its element tag in a mesh.
+  std::vector<std::size_t> where;
+  std::string where_name = "line";  ///< what `where` counts: "line" or "element"
+};
+
+/// A CSV of triangles (docs/scene-format.md, [[import]]): a header naming the columns,
+/// x1,y1,x2,y2,x3,y3 required; vx, vy, omega, body optional; a run's final.csv columns
+/// id, x, y, theta are accepted and not used. Throws SceneError naming the file and line.
+ImportedParticles read_particle_csv(const std::filesystem::path& file);
+
+/// The 3-node triangles of a 2D Gmsh mesh; those of the physical groups named in
+/// `body_groups` become one body per group. Throws SceneError naming the file.
+ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
+                                 const std::vector<std::string>& body_groups);
+
+}  // namespace tridem::scene_detail
