@@ -44,8 +44,7 @@ void expect_bodies_agree(const test::SolverChoice& choice, const Scene& scene, s
   // In float, the scale of the bodies' loads: how far the serial solver's float loads are
   // from its double ones (below).
   auto cpu_double =
-      in_float ? test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method))
-               : nullptr;
+      in_float ? test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method)) : nullptr;
   const double dx = in_float ? test::kFloatPositionTolerance : test::kPositionTolerance;
   const double da = in_float ? test::kFloatAngleTolerance : test::kAngleTolerance;
   const double dv = in_float ? test::kFloatVelocityTolerance : test::kVelocityTolerance;
@@ -92,10 +91,10 @@ void expect_bodies_agree(const test::SolverChoice& choice, const Scene& scene, s
     // that step, four times, is the bound.
     double spread = 0;
     for (std::size_t k = 0; cpu_double && k < a.body_fx.size(); ++k)
-      spread = std::max({spread, std::abs(a.body_fx[k] - r.body_fx[k]),
-                         std::abs(a.body_fy[k] - r.body_fy[k])});
-    if (in_float) std::printf("%s: float against double, loads differ by up to %.3g N\n",
-                              what.c_str(), spread);
+      spread = std::max(
+          {spread, std::abs(a.body_fx[k] - r.body_fx[k]), std::abs(a.body_fy[k] - r.body_fy[k])});
+    if (in_float)
+      std::printf("%s: float against double, loads differ by up to %.3g N\n", what.c_str(), spread);
     for (std::size_t k = 0; k < a.body_fx.size(); ++k) {
       const double scale = 4 * spread + 1e-6 * (1 + std::hypot(a.body_fx[k], a.body_fy[k]));
       EXPECT_NEAR(a.body_fx[k], b.body_fx[k], scale) << what << ": body " << k;
