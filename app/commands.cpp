@@ -56,8 +56,7 @@ int run(const RunArgs& args) {
   // checkpoint refuses any other physics.
   const std::string same_run = restart_command(args.command_line, summary.checkpoint);
   fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
-             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
-             same_run);
+             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, same_run);
   return exit_code_for_signal(summary.interrupted_by);
 }
 
@@ -83,8 +82,8 @@ int info(const std::string& path) {
   fmt::print("dt chosen    {:.6g} s ({}, {:.3g} x critical)\n", info.dt_chosen,
              info.dt_automatic ? fmt::format("automatic, safety {:g}", sim.safety) : "given",
              info.dt_chosen / info.dt_critical);
-  fmt::print("steps        {} (t = {:.6g} s)\n", sim.steps,
-             static_cast<double>(sim.steps) * info.dt_chosen);
+  fmt::print("steps        {} (t = {:.6g} s)\n", info.steps,
+             static_cast<double>(info.steps) * info.dt_chosen);
   fmt::print("backend      {} -> {}, precision {}\n", backend_name(sim.backend),
              backend_name(resolve_backend(sim.backend)), precision_name(sim.precision));
   fmt::print("method       {}\n",
@@ -106,7 +105,8 @@ int render(const RenderArgs& args) {
   opt.width = args.width;
   // main.cpp checked the spelling against the same table.
   opt.color_by = value_in(kColorByNames, args.color).value_or(opt.color_by);
-  const fs::path out = args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
+  const fs::path out =
+      args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
   render_png(snap, out, opt);
   fmt::print("{}\n", out.string());
   return 0;

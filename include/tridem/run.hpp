@@ -15,11 +15,11 @@ namespace tridem {
 /// How to run a scene, besides what the scene says (a command line's overrides of the
 /// scene's settings are applied to the scene first: apply_overrides in scene_io.hpp).
 struct RunOptions {
-  bool force = false;                     ///< accept dt above dt_crit
-  int threads = 0;                        ///< OpenMP threads, 0 = default
-  int device = 0;                         ///< the cuda backend's GPU (SolverConfig::device)
-  bool progress = true;                   ///< bar on stderr when it is a terminal
-  std::FILE* log = stdout;                ///< where the start and summary lines go
+  bool force = false;       ///< accept dt above dt_crit
+  int threads = 0;          ///< OpenMP threads, 0 = default
+  int device = 0;           ///< the cuda backend's GPU (SolverConfig::device)
+  bool progress = true;     ///< bar on stderr when it is a terminal
+  std::FILE* log = stdout;  ///< where the start and summary lines go
   /// A checkpoint to continue from (tridem run --restart): the run goes on from its step
   /// and continues the logs, frames and collections of the output directory.
   std::optional<std::string> restart;
@@ -30,12 +30,12 @@ struct RunOptions {
 };
 
 struct RunSummary {
-  std::int64_t steps = 0;                 ///< steps run by this call
-  std::int64_t last_step = 0;             ///< the step the state is at
-  int interrupted_by = 0;                 ///< the interrupt's value, 0 if the run finished
-  std::string checkpoint;                 ///< written on interruption
+  std::int64_t steps = 0;      ///< steps run by this call
+  std::int64_t last_step = 0;  ///< the step the state is at
+  int interrupted_by = 0;      ///< the interrupt's value, 0 if the run finished
+  std::string checkpoint;      ///< written on interruption
   std::size_t triangles = 0;
-  double seconds = 0;                     ///< time-loop wall time, outputs included
+  double seconds = 0;  ///< time-loop wall time, outputs included
   double steps_per_second = 0;
   double triangle_steps_per_second = 0;
   std::string solver;
@@ -56,11 +56,12 @@ struct SceneInfo {
   double longest_edge = 0;
   double dt_critical = 0, dt_chosen = 0;
   bool dt_automatic = true;
-  std::string dt_limit;                   ///< what sets dt_critical ("particle 3 pressed ...")
-  std::size_t memory_bytes = 0;           ///< estimated memory of a run (solver and host)
-  std::size_t gpu_memory_bytes = 0;       ///< GPU memory the cuda backend reserves at start
-                                          ///< (0 in a build without CUDA)
-  std::string gpu;                        ///< the GPU found, empty when none is usable
+  std::int64_t steps = 0;            ///< the run's length: [simulation] steps or time / dt
+  std::string dt_limit;              ///< what sets dt_critical ("particle 3 pressed ...")
+  std::size_t memory_bytes = 0;      ///< estimated memory of a run (solver and host)
+  std::size_t gpu_memory_bytes = 0;  ///< GPU memory the cuda backend reserves at start
+                                     ///< (0 in a build without CUDA)
+  std::string gpu;                   ///< the GPU found, empty when none is usable
 };
 
 SceneInfo describe_scene(const Scene& scene);

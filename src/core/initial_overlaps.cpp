@@ -123,27 +123,69 @@ std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSp
   return found.front();
 }
 
+namespace {
+
+/// The rigid units relax_initial_overlaps moves: a body of several triangles, or a lone
+/// triangle. Members move together, by one translation, so a body keeps its shape.
+struct Units {
+  std::vector<std::size_t> of;     ///< per triangle: its unit
+  std::vector<std::size_t> first;  ///< members of unit u: triangles [first[u], first[u+1])
+  std::vector<double> inv_mass;    ///< 0 for a wall
+
+  Units(const Scene& scene, const Layout& layout) {
+    const std::size_t n = layout.tri.size();
+    of.resize(n);
+    if (scene.bodies.empty()) {
+      first.resize(n + 1);
+      for (std::size_t i = 0; i <= n; ++i) first[i] = i;
+    } else {
+      for (const BodySpec& b : scene.bodies) first.push_back(b.first);
+      first.push_back(n);
+    }
+    inv_mass.assign(first.size() - 1, 0.0);
+    for (std::size_t u = 0; u + 1 < first.size(); ++u) {
+      double mass = 0;
+      for (std::size_t i = first[u]; i < first[u + 1]; ++i) {
+        of[i] = u;
+        mass += scene.materials[scene.triangles[i].material].density *
+                physics::signed_area(layout.tri[i]);
+      }
+      if (layout.motion[first[u]] == Motion::Free) inv_mass[u] = 1.0 / mass;
+    }
+  }
+  std::size_t size() const { return inv_mass.size(); }
+};
+
+/// A body's motion is its members' (a member's own is ignored, docs/scene-format.md).
+void take_body_motions(const Scene& scene, Layout& layout) {
+  for (const BodySpec& b : scene.bodies)
+    for (std::size_t i = b.first; i < b.first + b.count; ++i) layout.motion[i] = b.motion;
+}
+
+}  // namespace
+
 RelaxReport relax_initial_overlaps(Scene& scene, int max_iterations) {
   RelaxReport report;
   if (scene.triangles.empty()) return report;
-  // It moves triangles one by one, which would tear a body's members apart (issue 13).
-  if (scene.has_bodies())
-    throw SceneError(scene.source + ": [simulation] relax_overlaps = true does not work with "
-                                    "[[body]] blocks of several triangles yet; move the "
-                                    "overlapping particles apart in the file instead");
   Layout layout(scene.triangles);
+  take_body_motions(scene, layout);
   const std::size_t n = layout.tri.size();
   // A wall does not move; grains share a push in inverse proportion to their masses.
-  std::vector<double> inv_mass(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (layout.motion[i] == Motion::Free)
-      inv_mass[i] = 1.0 / (scene.materials[scene.triangles[i].material].density *
-                           physics::signed_area(layout.tri[i]));
+  const Units units(scene, layout);
   CandidatePairs<double> grid(layout.longest, layout.motion);
   PairList pairs;
-  std::vector<Vec2d> total(n), step(n);
+  std::vector<Vec2d> total(units.size()), step(units.size());
+  struct UnitPush {
+    std::size_t a, b;
+    double depth;
+    Vec2d push;
+  };
+  std::vector<UnitPush> pushes;
   for (;;) {
-    const std::vector<InitialOverlap> found = overlaps(layout, grid, pairs, false);
+    std::vector<InitialOverlap> found = overlaps(layout, grid, pairs, false);
+    // Members of one body never interact: their shared edges are not overlaps.
+    std::erase_if(found,
+                  [&units](const InitialOverlap& o) { return units.of[o.a] == units.of[o.b]; });
     if (report.iterations == 0) {
       report.pairs = found.size();
       for (const InitialOverlap& o : found) report.deepest = std::max(report.deepest, o.depth);
@@ -160,26 +202,39 @@ RelaxReport relax_initial_overlaps(Scene& scene, int max_iterations) {
           "the scene",
           source, max_iterations, deepest->a, deepest->b, deepest->depth, found.size()));
     }
+    // Two bodies push once, along their deepest members' pair: several member pairs of
+    // the same two bodies would add up to more than the overlap.
+    pushes.clear();
+    for (const InitialOverlap& o : found)
+      pushes.push_back({units.of[o.a], units.of[o.b], o.depth, o.push});
+    std::stable_sort(pushes.begin(), pushes.end(), [](const UnitPush& x, const UnitPush& y) {
+      return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.depth > y.depth);
+    });
+    pushes.erase(
+        std::unique(pushes.begin(), pushes.end(),
+                    [](const UnitPush& x, const UnitPush& y) { return x.a == y.a && x.b == y.b; }),
+        pushes.end());
     // Jacobi: every pair pushes from the same positions, the pushes add up.
     std::fill(step.begin(), step.end(), Vec2d{});
-    for (const InitialOverlap& o : found) {
-      const double wa = inv_mass[o.a], wb = inv_mass[o.b];
+    for (const UnitPush& o : pushes) {
+      const double wa = units.inv_mass[o.a], wb = units.inv_mass[o.b];
       // A hair beyond the depth, so that rounding does not leave the pair just overlapping.
       const double d = o.depth * (1 + 1e-6);
       step[o.a] -= o.push * (d * wa / (wa + wb));
       step[o.b] += o.push * (d * wb / (wa + wb));
     }
     for (std::size_t i = 0; i < n; ++i) {
-      if (step[i].x == 0 && step[i].y == 0) continue;
-      for (Vec2d& v : layout.tri[i].v) v += step[i];
-      for (Vec2d& v : scene.triangles[i].vertices) v += step[i];
-      total[i] += step[i];
+      const Vec2d move = step[units.of[i]];
+      if (move.x == 0 && move.y == 0) continue;
+      for (Vec2d& v : layout.tri[i].v) v += move;
+      for (Vec2d& v : scene.triangles[i].vertices) v += move;
     }
+    for (std::size_t u = 0; u < units.size(); ++u) total[u] += step[u];
     layout.update_boxes();
     ++report.iterations;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const double moved = norm(total[i]);
+    const double moved = norm(total[units.of[i]]);
     if (moved == 0) continue;
     if (report.first_moved < 0) report.first_moved = static_cast<std::int64_t>(i);
     ++report.moved;

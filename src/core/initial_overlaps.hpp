@@ -35,17 +35,19 @@ std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSp
 /// What relax_initial_overlaps did, for the run's log.
 struct RelaxReport {
   int iterations = 0;
-  std::size_t pairs = 0;         ///< overlapping pairs at the start
-  std::size_t moved = 0;         ///< particles moved
-  double deepest = 0;            ///< deepest overlap at the start, m
-  double largest_move = 0;       ///< longest total displacement of one particle, m
+  std::size_t pairs = 0;          ///< overlapping pairs at the start
+  std::size_t moved = 0;          ///< particles moved
+  double deepest = 0;             ///< deepest overlap at the start, m
+  double largest_move = 0;        ///< longest total displacement of one particle, m
   std::int64_t first_moved = -1;  ///< lowest id moved (-1: none)
 };
 
 /// Pushes overlapping triangles apart by translating them, velocities untouched, so that
 /// the run starts with no contact energy: each iteration moves both triangles of every
 /// overlapping pair apart along its separating direction by the depth (shared in inverse
-/// proportion to mass; a wall does not move), until no overlap is left. Throws SceneError
+/// proportion to mass; a wall does not move), until no overlap is left. A body of several
+/// triangles moves as one (its members by the same translation; two bodies push once,
+/// along their deepest pair of members). Throws SceneError
 /// naming the deepest remaining pair when `max_iterations` do not separate them.
 RelaxReport relax_initial_overlaps(Scene& scene, int max_iterations = 1000);
 

@@ -1,6 +1,7 @@
 #include "core/time_step.hpp"
 
 #include "physics/contact_laws.hpp"
+#include "physics/geometry.hpp"
 #include "physics/stability.hpp"
 #include "tridem/error.hpp"
 
@@ -8,6 +9,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace tridem {
@@ -15,6 +18,14 @@ namespace tridem {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// True when triangle i is a member of a body of several triangles.
+bool multi_member(const ParticleModel& model, std::size_t i) {
+  const BodyModel& b = model.bodies;
+  if (b.empty()) return false;
+  const auto k = static_cast<std::size_t>(b.body[i]);
+  return b.first[k + 1] - b.first[k] > 1;
+}
 
 /// The thinnest triangle of one kind of partner (free, or fixed and prescribed) and one
 /// material: the stiffest target of that kind.
@@ -25,29 +36,27 @@ struct Thinnest {
   double heaviest = 0;  ///< largest mass (0 for walls: they move by prescription)
 };
 
-/// The limit of free particle i with every edge pressed along its whole length by the
-/// stiffest partners of each kind and material, and the partner that sets it.
-struct ParticleLimit {
-  double dt = kInf;
-  StepLimit limit;
+/// Who sets the limit among the partners an edge can meet.
+struct Setter {
+  double strongest = 0;
+  const Thinnest* partner = nullptr;
+  bool partner_free = true;
+  double zeta_max = 0;
 };
 
-ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
-                             const std::vector<Thinnest> (&thinnest)[2],
-                             const std::vector<physics::LawParameters<double>>& laws,
-                             double local) {
+/// Springs and dashpots per metre on an edge.
+struct EdgeLoad {
+  double kn = 0, kt = 0, cn = 0, ct = 0;
+};
+
+/// The stiffest load the scene's partners of each kind and material put on an edge of
+/// length l of triangle i, pressed along its whole length, when i moves with mass m (its
+/// own, or its body's) and is h_i high over that edge (at least).
+EdgeLoad edge_load(const ParticleModel& model, std::size_t i, double l, double h_i, double m,
+                   const std::vector<Thinnest> (&thinnest)[2],
+                   const std::vector<physics::LawParameters<double>>& laws, Setter& who) {
   const std::size_t n_mat = thinnest[0].size();
-  const double m = model.mass[i], h_i = model.smallest_height[i];
-  const auto& r = model.offsets[i];
-  double edge_length[3];
-  for (int e = 0; e < 3; ++e) edge_length[e] = norm(r[(e + 1) % 3] - r[e]);
-  // Per metre of each edge: normal and tangential stiffness, normal and tangential
-  // damping, the largest over the partners this particle can meet.
-  double kn[3] = {}, kt[3] = {}, cn[3] = {}, ct[3] = {};
-  double strongest = 0;
-  const Thinnest* setter = nullptr;
-  bool setter_free = true;
-  double zeta_max = 0;
+  EdgeLoad load;
   for (int kind = 0; kind < 2; ++kind)
     for (std::size_t b = 0; b < n_mat; ++b) {
       const Thinnest& t = thinnest[kind][b];
@@ -62,54 +71,187 @@ ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
       // springs; a wall does not move.
       const double share = kind == 0 ? 2.0 : 1.0;
       const double m_eff = kind == 0 ? m * t.heaviest / (m + t.heaviest) : m;
-      if (share * per_metre > strongest) {
-        strongest = share * per_metre;
-        setter = &t;
-        setter_free = kind == 0;
+      if (share * per_metre > who.strongest) {
+        who.strongest = share * per_metre;
+        who.partner = &t;
+        who.partner_free = kind == 0;
       }
-      zeta_max = std::max(zeta_max, in.damping_ratio);
-      for (int e = 0; e < 3; ++e) {
-        const double l = edge_length[e];
-        kn[e] = std::max(kn[e], share * per_metre);
-        kt[e] = std::max(kt[e], share * per_metre * in.tangential_ratio);
-        // Partners side by side along the edge, each at least as wide as its smallest
-        // height (and no more than there are): n of them, each with its own dashpot
-        // 2ζ√(m_eff·k), carry Σ√k <= √(n·Σk) of damping. m_eff grows with the
-        // partner's mass: the heaviest one of this kind, or a wall's m.
-        const double partners =
-            std::min(1.0 + std::floor(l / t.height), static_cast<double>(t.count));
-        auto dashpot = [&](double k) {
-          return share * 2.0 * in.damping_ratio * std::sqrt(partners * m_eff * k * l) / l;
-        };
-        cn[e] = std::max(cn[e], dashpot(per_metre));
-        ct[e] = std::max(ct[e], dashpot(per_metre * in.tangential_ratio));
-      }
+      who.zeta_max = std::max(who.zeta_max, in.damping_ratio);
+      load.kn = std::max(load.kn, share * per_metre);
+      load.kt = std::max(load.kt, share * per_metre * in.tangential_ratio);
+      // Partners side by side along the edge, each at least as wide as its smallest
+      // height (and no more than there are): n of them, each with its own dashpot
+      // 2ζ√(m_eff·k), carry Σ√k <= √(n·Σk) of damping. m_eff grows with the partner's
+      // mass: the heaviest one of this kind, or a wall's m.
+      const double partners =
+          std::min(1.0 + std::floor(l / t.height), static_cast<double>(t.count));
+      auto dashpot = [&](double k) {
+        return share * 2.0 * in.damping_ratio * std::sqrt(partners * m_eff * k * l) / l;
+      };
+      load.cn = std::max(load.cn, dashpot(per_metre));
+      load.ct = std::max(load.ct, dashpot(per_metre * in.tangential_ratio));
     }
-  if (setter == nullptr) return {};  // nothing to meet
+  return load;
+}
+
+/// The limit of a free particle or body with the springs and dashpots of its edges.
+struct ParticleLimit {
+  double dt = kInf;
+  StepLimit limit;
+};
+
+ParticleLimit mode_limit(const physics::Sym3<double>& springs,
+                         const physics::Sym3<double>& dashpots, double mass, double inertia,
+                         double local, const Setter& who) {
+  if (who.partner == nullptr) return {};  // nothing to meet
+  const double lambda_k = local * physics::largest_mode(springs, mass, inertia);
+  const double lambda_c = local * physics::largest_mode(dashpots, mass, inertia);
+  ParticleLimit out;
+  out.dt = physics::symplectic_euler_limit(lambda_k, lambda_c);
+  out.limit.partner = who.partner->id;
+  out.limit.partner_free = who.partner_free;
+  out.limit.partner_height = who.partner->height;
+  out.limit.damping_ratio = who.zeta_max;
+  return out;
+}
+
+/// The limit of free particle i with every edge pressed along its whole length by the
+/// stiffest partners of each kind and material, and the partner that sets it.
+ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
+                             const std::vector<Thinnest> (&thinnest)[2],
+                             const std::vector<physics::LawParameters<double>>& laws,
+                             double local) {
+  const auto& r = model.offsets[i];
   physics::Sym3<double> springs, dashpots;
+  Setter who;
   for (int e = 0; e < 3; ++e) {
-    physics::add_edge_springs(springs, r[e], r[(e + 1) % 3], kn[e], kt[e]);
-    physics::add_edge_springs(dashpots, r[e], r[(e + 1) % 3], cn[e], ct[e]);
+    const Vec2d a = r[e], b = r[(e + 1) % 3];
+    const EdgeLoad in = edge_load(model, i, norm(b - a), model.smallest_height[i], model.mass[i],
+                                  thinnest, laws, who);
+    physics::add_edge_springs(springs, a, b, in.kn, in.kt);
+    physics::add_edge_springs(dashpots, a, b, in.cn, in.ct);
   }
-  const double lambda_k = local * physics::largest_mode(springs, m, model.inertia[i]);
-  const double lambda_c = local * physics::largest_mode(dashpots, m, model.inertia[i]);
-  const double dt = physics::symplectic_euler_limit(lambda_k, lambda_c);
-  return {dt, {static_cast<std::int64_t>(i), setter->id, setter_free, setter->height, h_i,
-               zeta_max}};
+  ParticleLimit out = mode_limit(springs, dashpots, model.mass[i], model.inertia[i], local, who);
+  out.limit.particle = static_cast<std::int64_t>(i);
+  out.limit.particle_height = model.smallest_height[i];
+  return out;
+}
+
+/// For each edge of body b's members (3 per member, in member order), true when another
+/// member has the same edge: inside the body, no partner can press on it. Matched on the
+/// scene's exact coordinates; an edge shared only in part counts as outside, which can only
+/// lower the bound.
+std::vector<char> inner_edges(const Scene& scene, std::size_t first, std::size_t count) {
+  using Point = std::pair<double, double>;
+  struct Edge {
+    Point lo, hi;
+    std::size_t index;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(3 * count);
+  for (std::size_t m = 0; m < count; ++m)
+    for (int e = 0; e < 3; ++e) {
+      // In the model's vertex order (build_particle_model makes clockwise input CCW).
+      physics::Triangle<double> t{{scene.triangles[first + m].vertices[0],
+                                   scene.triangles[first + m].vertices[1],
+                                   scene.triangles[first + m].vertices[2]}};
+      if (physics::signed_area(t) < 0) std::swap(t.v[1], t.v[2]);
+      Point a{t.v[e].x, t.v[e].y}, b{t.v[(e + 1) % 3].x, t.v[(e + 1) % 3].y};
+      if (b < a) std::swap(a, b);
+      edges.push_back({a, b, 3 * m + e});
+    }
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi);
+  });
+  std::vector<char> inner(3 * count, 0);
+  for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+    if (edges[k].lo == edges[k + 1].lo && edges[k].hi == edges[k + 1].hi)
+      inner[edges[k].index] = inner[edges[k + 1].index] = 1;
+  return inner;
+}
+
+/// inner_edges of every body of several members, for every triangle (none for the others).
+std::vector<char> all_inner_edges(const Scene& scene, const ParticleModel& model) {
+  std::vector<char> inner(3 * model.size(), 0);
+  const BodyModel& bodies = model.bodies;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const auto first = static_cast<std::size_t>(bodies.first[b]);
+    const auto count = static_cast<std::size_t>(bodies.first[b + 1]) - first;
+    if (count < 2) continue;
+    const std::vector<char> mine = inner_edges(scene, first, count);
+    std::copy(mine.begin(), mine.end(), inner.begin() + static_cast<std::ptrdiff_t>(3 * first));
+  }
+  return inner;
+}
+
+/// The least height of triangle i over an edge a partner can press: its smallest height,
+/// or for a body's member the least over its outer edges (infinite when it has none).
+double outer_height(const ParticleModel& model, const std::vector<char>& inner, std::size_t i) {
+  if (!multi_member(model, i)) return model.smallest_height[i];
+  double h = kInf;
+  const auto& r = model.offsets[i];
+  for (int e = 0; e < 3; ++e)
+    if (inner[3 * i + e] == 0) h = std::min(h, 2 * model.area[i] / norm(r[(e + 1) % 3] - r[e]));
+  return h;
+}
+
+/// The limit of free body b of several members: the springs and dashpots of its members'
+/// outer edges, about the body's centroid, on its mass and inertia.
+ParticleLimit body_limit(const ParticleModel& model, const std::vector<char>& all_inner,
+                         std::size_t b, const std::vector<Thinnest> (&thinnest)[2],
+                         const std::vector<physics::LawParameters<double>>& laws, double local) {
+  const BodyModel& bodies = model.bodies;
+  const auto first = static_cast<std::size_t>(bodies.first[b]);
+  const auto count = static_cast<std::size_t>(bodies.first[b + 1]) - first;
+  const char* inner = all_inner.data() + 3 * first;
+  const double mass = bodies.mass[b];
+  physics::Sym3<double> springs, dashpots;
+  Setter who;
+  double thinnest_member = kInf;
+  std::size_t thinnest_id = first;
+  for (std::size_t m = 0; m < count; ++m) {
+    const std::size_t i = first + m;
+    const double height = outer_height(model, all_inner, i);
+    if (height < thinnest_member) {
+      thinnest_member = height;
+      thinnest_id = i;
+    }
+    const auto& r = model.offsets[i];
+    for (int e = 0; e < 3; ++e) {
+      if (inner[3 * m + e] != 0) continue;
+      const Vec2d a = bodies.member_offset[i] + r[e];
+      const Vec2d c = bodies.member_offset[i] + r[(e + 1) % 3];
+      // To first order a partner pressed on this edge sits in the member's sub-triangle
+      // of this edge: the member's height over it is what counts, not its smallest.
+      const double length = norm(c - a);
+      const EdgeLoad in =
+          edge_load(model, i, length, 2 * model.area[i] / length, mass, thinnest, laws, who);
+      physics::add_edge_springs(springs, a, c, in.kn, in.kt);
+      physics::add_edge_springs(dashpots, a, c, in.cn, in.ct);
+    }
+  }
+  ParticleLimit out = mode_limit(springs, dashpots, mass, bodies.inertia[b], local, who);
+  out.limit.particle = static_cast<std::int64_t>(thinnest_id);
+  out.limit.body = static_cast<std::int64_t>(b);
+  out.limit.body_members = static_cast<std::int64_t>(count);
+  out.limit.particle_height = thinnest_member;
+  return out;
 }
 
 }  // namespace
 
 std::string StepLimit::describe() const {
   if (particle < 0) return "";
+  const std::string who =
+      body < 0 ? fmt::format("particle {} pressed on every edge", particle)
+               : fmt::format("body {} ({} triangles, the thinnest particle {}) pressed on "
+                             "every outer edge",
+                             body, body_members, particle);
   if (partner_free)
-    return fmt::format("particle {} pressed on every edge by free particles as thin as "
-                       "particle {} ({:g} m)",
-                       particle, partner, partner_height);
-  return fmt::format("particle {} pressed on every edge by fixed or prescribed particle {} "
-                     "({:g} m thick{})",
-                     particle, partner, partner_height,
-                     thin_wall() ? ": a thin wall makes a stiff contact" : "");
+    return fmt::format("{} by free particles as thin as particle {} ({:g} m)", who, partner,
+                       partner_height);
+  return fmt::format("{} by fixed or prescribed particle {} ({:g} m thick{})", who, partner,
+                     partner_height, thin_wall() ? ": a thin wall makes a stiff contact" : "");
 }
 
 std::string TimeStep::describe() const {
@@ -118,24 +260,30 @@ std::string TimeStep::describe() const {
 }
 
 std::string TimeStep::cure() const {
-  return fmt::format("lower dt or [simulation] safety{}",
-                     limit.thin_wall()
-                         ? fmt::format(", or make the thin wall (particle {}) thicker",
-                                       limit.partner)
-                         : "");
+  return fmt::format(
+      "lower dt or [simulation] safety{}",
+      limit.thin_wall()
+          ? fmt::format(", or make the thin wall (particle {}) thicker", limit.partner)
+          : "");
 }
 
 TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
   const std::size_t n_mat = scene.materials.size();
   // thinnest[kind][material], kind 0: free, 1: fixed or prescribed.
-  std::vector<Thinnest> thinnest[2] = {std::vector<Thinnest>(n_mat),
-                                       std::vector<Thinnest>(n_mat)};
+  std::vector<Thinnest> thinnest[2] = {std::vector<Thinnest>(n_mat), std::vector<Thinnest>(n_mat)};
+  // Edges inside a body: no partner reaches them.
+  const std::vector<char> inner = all_inner_edges(scene, model);
   for (std::size_t i = 0; i < model.size(); ++i) {
     Thinnest& t = thinnest[model.motion[i] == Motion::Free ? 0 : 1][model.material[i]];
+    const double height = outer_height(model, inner, i);
+    if (!std::isfinite(height)) continue;  // a member inside its body touches nothing
     ++t.count;
-    if (model.motion[i] == Motion::Free) t.heaviest = std::max(t.heaviest, model.mass[i]);
-    if (model.smallest_height[i] < t.height) {
-      t.height = model.smallest_height[i];
+    // A member moves with its body's mass: the heavier partner, the stronger a dashpot.
+    const double mass =
+        multi_member(model, i) ? model.bodies.mass[model.bodies.body[i]] : model.mass[i];
+    if (model.motion[i] == Motion::Free) t.heaviest = std::max(t.heaviest, mass);
+    if (height < t.height) {
+      t.height = height;
       t.id = static_cast<std::int64_t>(i);
     }
   }
@@ -146,23 +294,28 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
 
   TimeStep ts;
   ts.critical = kInf;
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    if (model.motion[i] != Motion::Free) continue;
-    const ParticleLimit p = particle_limit(model, i, thinnest, laws, local);
+  auto keep = [&ts](const ParticleLimit& p) {
     if (p.dt < ts.critical) {
       ts.critical = p.dt;
       ts.limit = p.limit;
     }
-  }
+  };
+  for (std::size_t i = 0; i < model.size(); ++i)
+    if (model.motion[i] == Motion::Free && !multi_member(model, i))
+      keep(particle_limit(model, i, thinnest, laws, local));
+  const BodyModel& bodies = model.bodies;
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (bodies.motion[b] == Motion::Free && bodies.first[b + 1] - bodies.first[b] > 1)
+      keep(body_limit(model, inner, b, thinnest, laws, local));
   ts.automatic = !scene.simulation.dt.has_value();
   if (!ts.automatic) {
     ts.chosen = *scene.simulation.dt;
   } else if (std::isfinite(ts.critical)) {
     ts.chosen = scene.simulation.safety * ts.critical;
   } else {
-    throw SceneError(fmt::format(
-        "{}: [simulation] dt: no free particle to estimate a time step from; give dt",
-        scene.source));
+    throw SceneError(
+        fmt::format("{}: [simulation] dt: no free particle to estimate a time step from; give dt",
+                    scene.source));
   }
   return ts;
 }

@@ -4,7 +4,8 @@
 // length, by the thinnest partner of each kind and both roles of the contact; walls and
 // prescribed triangles included), with the tangential springs and dashpots of the contact
 // law (physics/stability.hpp), gives the limit of symplectic Euler; dt_crit is the
-// smallest over the particles.
+// smallest over the particles. A body of several triangles is bounded as one: the outer
+// edges of its members on the body's mass and inertia.
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
 
@@ -20,6 +21,10 @@ struct StepLimit {
   double partner_height = 0;   ///< its smallest height, m
   double particle_height = 0;  ///< the particle's smallest height, m
   double damping_ratio = 0;    ///< the largest ζ it meets
+  /// The body of several triangles the limit belongs to (then `particle` is its thinnest
+  /// member), or -1 for a single triangle.
+  std::int64_t body = -1;
+  std::int64_t body_members = 0;
 
   /// "particle 3 pressed on every edge by fixed or prescribed particle 0 (0.0001 m
   /// thick: a thin wall ...)", or "" when no particle is free.
@@ -29,10 +34,10 @@ struct StepLimit {
 };
 
 struct TimeStep {
-  double critical = 0;   ///< dt_crit, s (infinite when nothing moves by forces)
-  double chosen = 0;     ///< the dt the run uses
-  bool automatic = true; ///< dt was left out of the scene
-  StepLimit limit;       ///< what sets dt_crit
+  double critical = 0;    ///< dt_crit, s (infinite when nothing moves by forces)
+  double chosen = 0;      ///< the dt the run uses
+  bool automatic = true;  ///< dt was left out of the scene
+  StepLimit limit;        ///< what sets dt_crit
 
   /// "dt_crit = 1.2e-05 s, set by particle 3 pressed on every edge by ..." for messages.
   std::string describe() const;

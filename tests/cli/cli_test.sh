@@ -98,6 +98,10 @@ expect_ok "$tridem" info pile.toml
 grep -q "dt critical" out.txt || fail "info lacks dt critical"
 grep -q "dt critical .* set by particle" out.txt || fail "info does not say what sets dt critical"
 grep -q "memory" out.txt || fail "info lacks memory"
+# A run given by its simulated time: info prints the steps it takes (it printed 0).
+sed 's/^steps = .*/time = 1e-3/' pile.toml >timed.toml
+expect_ok "$tridem" info timed.toml
+grep -qE "^steps        [1-9][0-9]* \(t = 0.001" out.txt || fail "info of a timed run: $(grep ^steps out.txt)"
 if [ "$have_cuda" = 1 ]; then
   grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"
 fi
@@ -194,12 +198,23 @@ sed 's/steps = 200/steps = 100000000/; s/\[1, 0\], \[-1, 0\], \[0, -1\]/[10, 0],
 # The INT run has overrides of the physics: the printed command must carry them all.
 overrides_INT="--method single-domain --contact-test exact --no-bbox-prefilter"
 overrides_TERM=""
+# A background job of a script ignores SIGINT until the program installs its handler,
+# which it does before the run prints its first line: a signal sent sooner (a fixed
+# sleep, on a loaded machine) is lost and the run goes on for its 10^8 steps.
+wait_for_start() {
+  for _ in $(seq 600); do
+    [ -s out.txt ] && return 0
+    kill -0 "$1" 2>/dev/null || fail "the run ended before it was signalled :: $(cat err.txt)"
+    sleep 0.1
+  done
+  kill -KILL "$1"; fail "the run printed nothing in 60 s :: $(cat err.txt)"
+}
 for sig in INT TERM; do
   overrides=overrides_$sig
   # shellcheck disable=SC2086
   "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" ${!overrides} >out.txt 2>err.txt &
   pid=$!
-  sleep 1
+  wait_for_start "$pid"
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?
@@ -233,7 +248,7 @@ if nvidia-smi -L >/dev/null 2>&1; then
   done
   "$tridem" run long.toml --quiet --backend cuda --out long_gpu >out.txt 2>err.txt &
   pid=$!
-  sleep 2
+  wait_for_start "$pid"
   kill -INT "$pid"
   wait "$pid"
   code=$?

@@ -7,6 +7,8 @@
 #include "tridem/snapshot.hpp"
 #include "tridem/solver.hpp"
 
+#include "unit/io/io_test_support.hpp"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -39,8 +41,8 @@ TEST(FinalCsvRoundTrip, ReadingFinalCsvBackReproducesTheState) {
   const Snapshot before = state_of(*solver);
   ASSERT_GT(before.omega[1] * before.omega[1], 0);  // the collision turned the second one
 
-  const auto dir = std::filesystem::temp_directory_path() / "tridem_final_roundtrip";
-  std::filesystem::create_directories(dir);
+  const test::TempDir temp;  // its own folder: other runs of the suite may run beside it
+  const auto& dir = temp.path();
   write_final_csv(dir / "final.csv", before);
   Scene again = parse_scene(
       "[simulation]\nsteps = 1\ndt = 2e-5\n[[material]]\nname = \"m\"\ndensity = 2500\n"
@@ -65,7 +67,6 @@ TEST(FinalCsvRoundTrip, ReadingFinalCsvBackReproducesTheState) {
     EXPECT_EQ(after.theta[i], 0);
     EXPECT_DOUBLE_EQ(after.mass[i], before.mass[i]);
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

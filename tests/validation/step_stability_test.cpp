@@ -8,13 +8,14 @@
 #include "core/time_step.hpp"
 #include "support/backend_test.hpp"
 #include "support/lattice_scenes.hpp"
-#include <cstdio>
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <random>
 
 namespace tridem {
 namespace {
@@ -120,6 +121,50 @@ TEST_P(StepStability, GrainRestsOnThinFloorsWithTheAutomaticStep) {
 
 TRIDEM_INSTANTIATE_SOLVERS(StepStability);
 
+/// A block of 4 x 3 free square bodies (two triangles each, side a) in a frame of fixed
+/// ones, every square enlarged by `squeeze` about its centre so that each presses on its
+/// neighbours, shaken: the packing of bodies whose step core/time_step bounds per body.
+Scene square_body_packing(double squeeze = 0.01, double a = 0.1) {
+  Scene s = test::lattice_scene();
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int pass = 0; pass < 2; ++pass)
+    for (int j = -1; j <= 3; ++j)
+      for (int k = -1; k <= 4; ++k) {
+        const bool inner = j >= 0 && j < 3 && k >= 0 && k < 4;
+        if (inner != (pass == 0)) continue;
+        const Motion motion = inner ? Motion::Free : Motion::Fixed;
+        const Vec2d c{k * a, j * a};
+        const double h = a * (1 + squeeze) / 2;
+        BodySpec b;
+        b.first = s.triangles.size();
+        b.count = 2;
+        b.motion = motion;
+        if (inner) {
+          b.velocity = {0.01 * u(rng), 0.01 * u(rng)};
+          b.angular_velocity = 0.01 / a * u(rng);
+        }
+        const Vec2d p0 = c + Vec2d{-h, -h}, p1 = c + Vec2d{h, -h}, p2 = c + Vec2d{h, h},
+                    p3 = c + Vec2d{-h, h};
+        s.triangles.push_back(test::triangle(p0, p1, p2, {}, motion));
+        s.triangles.push_back(test::triangle(p0, p2, p3, {}, motion));
+        s.bodies.push_back(b);
+      }
+  return s;
+}
+
+// Bodies are bounded as bodies (their mass and inertia, their outer edges), and the
+// packing holds at the step that bound accepts; the former per-member bound was smaller.
+TEST(StepStabilityBodies, SquareBodiesHoldAtTheAcceptedStepAndNotAtTwiceIt) {
+  Scene s = square_body_packing();
+  const double dt_crit = critical_step(s);
+  EXPECT_GE(estimate_time_step(s, build_particle_model(s)).limit.body, 0);
+  s.simulation.safety = 1;
+  expect_stable(run(s, Backend::Cpu, 20000), "automatic step, safety 1");
+  s.simulation.dt = 2 * dt_crit;
+  expect_unstable(run(s, Backend::Cpu, 20000, true), "dt = 2 dt_crit (forced)");
+}
+
 // The wall's thickness sets dt_crit, and the refusal of a larger dt says so.
 TEST(StepLimit, ThinWallSetsTheStepAndIsNamed) {
   Scene s = grain_on_thin_floor(1e-4);
@@ -147,8 +192,8 @@ TEST(StepLimit, BlowUpMessageNamesTheStepLimitNotThePenalty) {
   s.simulation.dt = 20 * critical_step(s);
   const Outcome o = run(s, Backend::Cpu, 20000, true);
   ASSERT_TRUE(o.blew_up);
-  for (const char* part : {"blow-up at step", "dt_crit", "lower dt",
-                           "make the thin wall (particle 0) thicker"})
+  for (const char* part :
+       {"blow-up at step", "dt_crit", "lower dt", "make the thin wall (particle 0) thicker"})
     EXPECT_NE(o.message.find(part), std::string::npos) << part << " not in: " << o.message;
   EXPECT_EQ(o.message.find("raise the penalty"), std::string::npos) << o.message;
 }

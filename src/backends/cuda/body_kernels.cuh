@@ -59,17 +59,8 @@ __global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n) return;
   if (status->bad != INT_MAX || status->deep != INT_MAX) return;
-  auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
-    if (!sp.walls_move || p.free[j] != 0) return false;
-    v = {p.vx[j], p.vy[j]};
-    w = p.w[j];
-    return true;
-  };
-  double* const* sums = p.energy;
   const physics::Pose<double> unused{};  // read only for a free particle's local damping
-  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, false, unused,
-                          unused, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
-                          sp.gravity, sp.local_damping, sp.dt);
+  add_step_energy(p, q, sp, i, false, unused, unused);
 }
 
 /// The step of each body (unless some body ran away or some pair overlaps too deep: then

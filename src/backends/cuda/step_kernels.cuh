@@ -125,10 +125,11 @@ __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
 }
 
 /// The energy of particle i's step as the CPU adds it (CpuSolver::add_step_energy): its
-/// own row of pairs and, if free, what local damping took from it.
+/// own row of pairs and, if `is_free`, what local damping took from it (a body's member
+/// passes false: its body books the damping once).
 template <class Real>
 __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const PairArrays<Real>& q,
-                                       const StepParams<Real>& sp, int i,
+                                       const StepParams<Real>& sp, int i, bool is_free,
                                        const physics::Pose<double>& before,
                                        const physics::Pose<double>& after) {
   auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
@@ -138,9 +139,9 @@ __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const Pair
     return true;
   };
   double* const* sums = p.energy;
-  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, p.free[i] != 0,
-                          before, after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i],
-                          p.inv_mass[i], sp.gravity, sp.local_damping, sp.dt);
+  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, is_free, before,
+                          after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
+                          sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Writes the advanced state (unless some particle ran away or some pair overlaps too
@@ -155,7 +156,7 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
     const physics::Pose<double> before = pose(p, i);
     const physics::Pose<double> pose = advanced_pose(p, sp, i);
-    add_step_energy(p, q, sp, i, before, pose);
+    add_step_energy(p, q, sp, i, p.free[i] != 0, before, pose);
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;
     p.theta[i] = pose.theta;

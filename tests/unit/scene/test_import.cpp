@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 namespace tridem {
 namespace {
@@ -17,7 +18,9 @@ using test::expect_refused;
 using test::kSceneHead;
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  auto path = std::filesystem::temp_directory_path() / ("tridem_import_" + name);
+  // The process id keeps runs of the suite beside each other (ctest -j, other builds) apart.
+  auto path = std::filesystem::temp_directory_path() /
+              ("tridem_import_" + std::to_string(getpid()) + "_" + name);
   std::ofstream(path) << text;
   return path;
 }
