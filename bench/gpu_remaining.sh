@@ -7,6 +7,7 @@ set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$1"; tests="$2"; sanitized="$3"; limit="${4:-300}"
 mkdir -p "$out"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ ! -e /work/main/tests ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
 bin="$root/.devbin/tests/tridem_tests"

@@ -7,6 +7,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:?give an output folder}"
 filter="${2:-Gpu*}"
 mkdir -p "$out"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ ! -e /work/main/tests ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
 tests="$root/.devbin/tests/tridem_tests"

@@ -8,6 +8,7 @@ set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$1"; limit="${2:-300}"
 mkdir -p "$out"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out/gpu.txt"
 filter='Gpu/GpuBodyParity.*:GpuBodyParityAllPairs.*:Gpu/BodyRestart.*:Gpu/StateHash.*:GpuRestart.*:GpuParity.*:Gpu/SolverStateLoad.*'

@@ -8,6 +8,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:?give an output folder}"
 mkdir -p "$out"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 bench="$root/.devbin/bench/tridem_bench"
 max_n="${MAX_N:-1e7}"

@@ -10,6 +10,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:?give an output folder}"
 mkdir -p "$out"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 n="${N:-1e6}"
 baseline="${BASELINE:-$root/.devbin/bench/baseline_tridem_bench}"

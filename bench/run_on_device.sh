@@ -7,6 +7,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:-${OUT:?give an output folder}}"
+"$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 gpu="$(nvidia-smi --query-gpu=name --format=csv,noheader 2>/dev/null | head -1 || true)"
 NO_BUILD=1 BUILD_DIR="$root/.devbin" NOTES="${NOTES:-}${gpu:+Run on the GPU machine ($gpu); CPU solvers only.}" \

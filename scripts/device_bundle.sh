@@ -2,7 +2,9 @@
 # Packs what the GPU machine needs to run tridem built here into .devbin/ (git-ignored;
 # name it in the device tool's `carry`): the programs and every shared library they load
 # except the C library's own, which the machine has in a newer version. The CUDA runtime is
-# linked statically, so a recent driver is all the GPU side needs.
+# linked statically, so a recent driver is all the GPU side needs. The libraries go in
+# lib.tar.xz (Gmsh's bring ~110 MiB, over the device's 64 MiB carry; xz makes them ~31 MiB):
+# scripts/device_unpack.sh, on the device, unpacks them into .devbin/lib.
 #   scripts/device_bundle.sh [BUILD_DIR]      (default build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -17,4 +19,6 @@ for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_pa
   ldd "$bin" | awk '/=> \// {print $3}'
 done | sort -u | grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" "$dest/lib/"; done
+tar -C "$dest" -cf - lib | xz -T0 -6 >"$dest/lib.tar.xz"
+rm -rf "$dest/lib"
 du -sh "$dest"

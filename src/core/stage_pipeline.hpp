@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 
 namespace tridem {
 
@@ -39,14 +40,11 @@ class StageSampling {
   bool on = true;
   int every = 1;
 
-  bool sample_this_step() {
-    if (since_sample_ + 1 < every) {
-      ++since_sample_;
-      return false;
-    }
-    since_sample_ = 0;
-    return true;
-  }
+  /// The middle step of each window of `every`, not its first: the first step of a
+  /// solver carries one-off costs (the first pair-list build, the kernels' first
+  /// launches) that, scaled to every step, made the stages sum to several times the
+  /// run's wall time (4.2 ms against 1.1 ms over 20 steps on the H200).
+  bool sample_this_step() { return seen_++ % every == every / 2; }
   void count_untimed_step() { ++steps_; }
 
  protected:
@@ -63,7 +61,7 @@ class StageSampling {
   }
 
  private:
-  int since_sample_ = 1 << 30;  ///< the first step is always timed
+  std::int64_t seen_ = 0;  ///< steps asked about, timed or not
   std::int64_t steps_ = 0, timed_ = 0;
 };
 
@@ -95,6 +93,7 @@ class StageStopwatch : public StageSampling {
     t.clock = "steady_clock";
     return t;
   }
+
  private:
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_{};

@@ -24,12 +24,15 @@ double StageTimes::total() const {
 
 std::string stage_table(const StageTimes& t) {
   if (t.steps == 0) return {};
+  if (t.timed_steps == 0)
+    return fmt::format("time per stage: none of the {} steps was timed ({} times one step in "
+                       "several, from the middle of the first few)\n",
+                       t.steps, t.clock);
   const double total = t.total();
-  std::string out =
-      t.timed_steps > 0 && t.timed_steps < t.steps
-          ? fmt::format("time per stage ({} steps, {} of them timed, {}):\n", t.steps,
-                        t.timed_steps, t.clock)
-          : fmt::format("time per stage ({} steps, {}):\n", t.steps, t.clock);
+  std::string out = t.timed_steps > 0 && t.timed_steps < t.steps
+                        ? fmt::format("time per stage ({} steps, {} of them timed, {}):\n", t.steps,
+                                      t.timed_steps, t.clock)
+                        : fmt::format("time per stage ({} steps, {}):\n", t.steps, t.clock);
   for (int k = 0; k < kStageCount; ++k) {
     const char* name = stage_name(static_cast<Stage>(k));
     if (t.fused_into[k] != k) {
