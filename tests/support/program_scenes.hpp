@@ -6,7 +6,7 @@
 namespace tridem::test {
 
 /// jostling_pile(columns, rows) whose right wall is a servo pushing left to 50 N/m (gain
-/// 1e-3 m/s/N, at most 0.1 m/s) and whose left wall oscillates (1 cm at 20 Hz along x).
+/// 2e-5 m/s/N, at most 0.1 m/s) and whose left wall oscillates (1 cm at 20 Hz along x).
 inline Scene programmed_pile(int columns = 6, int rows = 4) {
   Scene s = jostling_pile(columns, rows);
   s.triangles[2].motion = Motion::Prescribed;
@@ -17,7 +17,7 @@ inline Scene programmed_pile(int columns = 6, int rows = 4) {
   servo.kind = ProgramKind::Servo;
   servo.direction = {-1, 0};
   servo.target_force = 50;
-  servo.gain = 1e-3;
+  servo.gain = 2e-5;
   servo.max_speed = 0.1;
   s.programs.push_back(servo);
   MotionProgram wiggle;
