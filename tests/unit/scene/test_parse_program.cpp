@@ -58,6 +58,19 @@ TEST(ParseProgram, BodyTakesAProgramAsATableOfItsOwn) {
   EXPECT_EQ(s.bodies[0].program, 0);
 }
 
+// examples/hopper_gate.toml: its gate is the fifth [[triangle]], on a velocity table that
+// holds it until 0.5 s and then slides it at 1 m/s (the run itself takes about 15 s).
+TEST(ParseProgram, HopperGateExampleOpensByATable) {
+  const Scene s = read_scene(std::string(TRIDEM_SOURCE_DIR) + "/examples/hopper_gate.toml");
+  ASSERT_EQ(s.programs.size(), 1u);
+  EXPECT_EQ(s.triangles[4].program, 0);
+  EXPECT_EQ(s.programs[0].kind, ProgramKind::Table);
+  ASSERT_EQ(s.program_knots.size(), 3u);
+  EXPECT_EQ(s.program_knots[1].time, 0.5);
+  EXPECT_EQ(s.program_knots[1].velocity.x, 0);
+  EXPECT_EQ(s.program_knots[2].velocity.x, 1);
+}
+
 TEST(ParseProgram, RefusesBadPrograms) {
   test::expect_refused(
       test::with_triangle("material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
