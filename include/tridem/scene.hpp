@@ -71,7 +71,7 @@ struct BodySpec {
   Vec2d velocity{};             ///< of the body's centroid, m/s
   double angular_velocity = 0;  ///< rad/s, about the body's centroid
   Motion motion = Motion::Free;
-  std::int32_t program = -1;    ///< as TriangleSpec::program
+  std::int32_t program = -1;  ///< as TriangleSpec::program
 };
 
 struct SimulationSettings {

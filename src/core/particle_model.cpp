@@ -27,9 +27,8 @@ void resolve_programs(const Scene& scene, ParticleModel& m) {
     if (k < 0) return;
     if (static_cast<std::size_t>(k) >= scene.programs.size() || motion != Motion::Prescribed)
       throw SceneError(fmt::format("{}: {}: program {} {}", scene_label(scene), wall, k,
-                                   motion != Motion::Prescribed
-                                       ? "on a wall that is not prescribed"
-                                       : "out of range"));
+                                   motion != Motion::Prescribed ? "on a wall that is not prescribed"
+                                                                : "out of range"));
     MotionProgram& p = m.programs[static_cast<std::size_t>(k)];
     if (p.kind == ProgramKind::Table &&
         (p.knot_count < 1 || p.first_knot < 0 ||

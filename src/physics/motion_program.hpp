@@ -141,8 +141,8 @@ TRIDEM_HD inline void program_velocity(const ProgramTable& table, std::int32_t k
 /// `t_new`: exact pose and velocity for programs of time; for a servo, the law's velocity
 /// and the position advanced by it (its angle kept).
 template <class Pose>
-TRIDEM_HD inline Pose program_step(const ProgramTable& table, std::int32_t k, Pose p,
-                                   double t_new, double dt, Vec2d force) {
+TRIDEM_HD inline Pose program_step(const ProgramTable& table, std::int32_t k, Pose p, double t_new,
+                                   double dt, Vec2d force) {
   const MotionProgram& prog = table.programs[k];
   if (prog.kind == ProgramKind::Servo) {
     p.v = servo_velocity(prog, force);
@@ -168,10 +168,12 @@ TRIDEM_HD inline double time_after_step(std::int64_t step, double dt) {
 /// with a motion program (`program` >= 0), the program's step to `t_new` (the force, in the
 /// pair precision, read by a servo only).
 template <class Real>
-TRIDEM_HD inline Pose<double> stepped_or_programmed_pose(
-    const ProgramTable& table, std::int32_t program, double t_new, Pose<double> p, bool free,
-    Vec2<Real> f, Real torque, double inv_mass, double inv_inertia, Vec2d g, double alpha,
-    double dt) {
+TRIDEM_HD inline Pose<double> stepped_or_programmed_pose(const ProgramTable& table,
+                                                         std::int32_t program, double t_new,
+                                                         Pose<double> p, bool free, Vec2<Real> f,
+                                                         Real torque, double inv_mass,
+                                                         double inv_inertia, Vec2d g, double alpha,
+                                                         double dt) {
   if (program < 0) return stepped_pose(p, free, f, torque, inv_mass, inv_inertia, g, alpha, dt);
   return program_step(table, program, p, t_new, dt,
                       Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)});

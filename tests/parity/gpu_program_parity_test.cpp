@@ -16,8 +16,8 @@
 namespace tridem {
 namespace {
 
-void expect_programs_agree(const test::SolverChoice& choice, const Scene& scene,
-                           std::int64_t steps, std::int64_t every) {
+void expect_programs_agree(const test::SolverChoice& choice, const Scene& scene, std::int64_t steps,
+                           std::int64_t every) {
   auto cpu = test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method));
   auto gpu = test::solver_for(scene, choice);
   Snapshot a, b;
@@ -51,7 +51,8 @@ TEST_P(GpuProgramParity, RotatingDrumBodyAgreesWithSerial) {
   for (int k = 0; k < segments; ++k) {
     const double a0 = 2 * 3.141592653589793 * k / segments;
     const double a1 = 2 * 3.141592653589793 * (k + 1) / segments;
-    const Vec2d p0{0.3 * std::cos(a0), 0.3 * std::sin(a0)}, p1{0.3 * std::cos(a1), 0.3 * std::sin(a1)};
+    const Vec2d p0{0.3 * std::cos(a0), 0.3 * std::sin(a0)},
+        p1{0.3 * std::cos(a1), 0.3 * std::sin(a1)};
     const Vec2d q0 = p0 * (1.0 / 0.3 * 0.33), q1 = p1 * (1.0 / 0.3 * 0.33);
     s.triangles.push_back(test::triangle(p0, q1, p1));
     s.triangles.push_back(test::triangle(p0, q0, q1));
@@ -72,7 +73,8 @@ TEST_P(GpuProgramParity, RotatingDrumBodyAgreesWithSerial) {
   expect_programs_agree(GetParam(), s, 3000, 1000);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gpu, GpuProgramParity, TRIDEM_DOUBLE_SOLVER_CHOICES(::tridem::Backend::Cuda));
+INSTANTIATE_TEST_SUITE_P(Gpu, GpuProgramParity,
+                         TRIDEM_DOUBLE_SOLVER_CHOICES(::tridem::Backend::Cuda));
 
 }  // namespace
 }  // namespace tridem

@@ -126,8 +126,7 @@ TEST_P(ProgramRestart, ServoAndOscillatingWallsAreBitIdentical) {
   expect_restart_exact(c.backend, c.precision, c.method, test::programmed_pile(12, 8));
 }
 INSTANTIATE_TEST_SUITE_P(Cpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cpu)));
-INSTANTIATE_TEST_SUITE_P(Gpu, ProgramRestart,
-                         ::testing::Values(test::SolverChoice(Backend::Cuda)));
+INSTANTIATE_TEST_SUITE_P(Gpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cuda)));
 
 TEST(Restart, SerialDoubleIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Double); }
 TEST(Restart, SerialFloatIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Float); }

@@ -1,6 +1,6 @@
 // examples/angular_drum.toml: angular grains (bodies of triangles) in a drum that is one
-// prescribed body turned about its centre by a rotation program. Checked on the example itself, run for its
-// first 0.3 s (the whole example takes about 40 s of one core): the drum turns at its
+// prescribed body turned about its centre by a rotation program. Checked on the example itself, run
+// for its first 0.3 s (the whole example takes about 40 s of one core): the drum turns at its
 // angular velocity about a centre that stays put, the grains stay inside it, and the run
 // writes every body's row in bodies.csv.
 #include "tridem/run.hpp"

@@ -139,7 +139,8 @@ TEST_P(MotionProgramTest, ServoLidHoldsItsTargetForceOnAStaticPacking) {
   Scene s = test::empty_scene(1e7, 2000, 0.3, 0.3);
   s.simulation.local_damping = 0.5;
   for (int k = 0; k < 8; ++k) s.triangles.push_back(test::lattice_triangle(k, 0, a, 1));
-  for (int k : {-2, -1, 8, 9}) s.triangles.push_back(test::lattice_triangle(k, 0, a, 1, Motion::Fixed));
+  for (int k : {-2, -1, 8, 9})
+    s.triangles.push_back(test::lattice_triangle(k, 0, a, 1, Motion::Fixed));
   for (int k = -3; k < 11; ++k)
     s.triangles.push_back(test::lattice_triangle(k, -1, a, 1, Motion::Fixed));
   MotionProgram servo;
@@ -196,7 +197,8 @@ TEST(MotionProgram, RotatingBodyDoesNotDriftOverAMillionSteps) {
   solver->advance(steps);
   solver->snapshot(snap, false);
   const double t = static_cast<double>(steps) * 1e-5, a = 2.5 * t;
-  const Vec2d expected{std::cos(a) * 0.3 - std::sin(a) * 0.1, std::sin(a) * 0.3 + std::cos(a) * 0.1};
+  const Vec2d expected{std::cos(a) * 0.3 - std::sin(a) * 0.1,
+                       std::sin(a) * 0.3 + std::cos(a) * 0.1};
   const double error = std::hypot(snap.body_x[0] - expected.x, snap.body_y[0] - expected.y);
   std::printf("after 10^6 steps (%.0f turns): centroid off the closed form by %.3g m\n",
               a / (2 * std::numbers::pi), error);

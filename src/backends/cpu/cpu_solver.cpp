@@ -10,8 +10,8 @@
 #include "core/snapshot_fill.hpp"
 
 #include "physics/integrate.hpp"
-#include "physics/motion_program.hpp"
 #include "physics/local_frame.hpp"
+#include "physics/motion_program.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
@@ -309,9 +309,9 @@ void CpuSolver<Real>::write_program_velocities() {
     if (program_[i] < 0) continue;
     Vec2d v;
     double w = 0;
-    physics::program_velocity(
-        table, program_[i], t_new,
-        Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])}, v, w);
+    physics::program_velocity(table, program_[i], t_new,
+                              Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])}, v,
+                              w);
     vx_[i] = v.x;
     vy_[i] = v.y;
     w_[i] = w;

@@ -190,8 +190,8 @@ void CudaSolver<Real>::run_stage(Stage stage) {
                                                               false);
       TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
       if (has_servos_) {  // a servo's law reads the force on its wall at every step
-        gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
-                                                                true);
+        gather_kernel<Real>
+            <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
         TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
       }
       return;

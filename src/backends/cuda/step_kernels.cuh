@@ -77,10 +77,10 @@ __device__ inline physics::Pose<double> pose(const ParticleArrays<Real>& p, int 
 template <class Real>
 __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>& p,
                                                       const StepParams<Real>& sp, int i) {
-  return physics::stepped_or_programmed_pose(
-      sp.programs, p.program[i], sp.time_new, pose(p, i), p.free[i] != 0,
-      Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i], p.inv_inertia[i], sp.gravity,
-      sp.local_damping, sp.dt);
+  return physics::stepped_or_programmed_pose(sp.programs, p.program[i], sp.time_new, pose(p, i),
+                                             p.free[i] != 0, Vec2<Real>{p.fx[i], p.fy[i]},
+                                             p.torque[i], p.inv_mass[i], p.inv_inertia[i],
+                                             sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Sums the forces of free particles and flags the lowest one whose step would run away
@@ -183,8 +183,8 @@ __global__ void program_velocity_kernel(ParticleArrays<Real> p, StepParams<Real>
   Vec2d v;
   double w = 0;
   physics::program_velocity(sp.programs, p.program[i], sp.time_new,
-                            Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])},
-                            v, w);
+                            Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])}, v,
+                            w);
   p.vx[i] = v.x;
   p.vy[i] = v.y;
   p.w[i] = w;

@@ -33,9 +33,9 @@ void read_table(TableReader& r, MotionProgram& p, std::vector<ProgramKnot>& knot
   const std::vector<double> times = r.required(r.reals("times"), "times");
   const std::vector<Vec2d> velocities =
       r.required(r.point_list("velocities", "an array of [vx, vy]"), "velocities");
-  const std::vector<double> angular =
-      r.has("angular_velocities") ? *r.reals("angular_velocities")
-                                  : std::vector<double>(times.size(), 0.0);
+  const std::vector<double> angular = r.has("angular_velocities")
+                                          ? *r.reals("angular_velocities")
+                                          : std::vector<double>(times.size(), 0.0);
   if (velocities.size() != times.size())
     r.fail("velocities", fmt::format("{} velocities for {} times: give one [vx, vy] per time",
                                      velocities.size(), times.size()));
@@ -50,7 +50,8 @@ void read_table(TableReader& r, MotionProgram& p, std::vector<ProgramKnot>& knot
                                   times[k], times[k - 1]));
   p.first_knot = static_cast<std::int32_t>(knots.size());
   p.knot_count = static_cast<std::int32_t>(times.size());
-  for (std::size_t k = 0; k < times.size(); ++k) knots.push_back({times[k], velocities[k], angular[k]});
+  for (std::size_t k = 0; k < times.size(); ++k)
+    knots.push_back({times[k], velocities[k], angular[k]});
 }
 
 void read_oscillation(TableReader& r, MotionProgram& p) {

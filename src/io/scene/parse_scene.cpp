@@ -133,9 +133,9 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   for (const Block& e : in_file_order(std::move(explicit_blocks))) {
     const std::string at = where(source, e.table->source());
     if (e.second_kind) {
-      const BodySpec body = scene_detail::parse_body(
-          *e.table, source, e.number, scene.bodies.size(), scene.materials, scene.triangles,
-          scene.programs, scene.program_knots);
+      const BodySpec body =
+          scene_detail::parse_body(*e.table, source, e.number, scene.bodies.size(), scene.materials,
+                                   scene.triangles, scene.programs, scene.program_knots);
       for (std::size_t k = 0; k < body.count; ++k)
         provenance.explicit_origin.push_back(
             fmt::format("body id {}, [[body]] #{} at {}, its triangle {} of {}",

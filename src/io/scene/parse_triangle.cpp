@@ -21,8 +21,8 @@ Motion read_motion(TableReader& r) {
 
 }  // namespace
 
-Movement read_movement(TableReader& r, std::string_view what,
-                       std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots) {
+Movement read_movement(TableReader& r, std::string_view what, std::vector<MotionProgram>& programs,
+                       std::vector<ProgramKnot>& knots) {
   Movement m;
   m.velocity = r.vec2("velocity").value_or(Vec2d{});
   m.angular_velocity = r.real("angular_velocity").value_or(0.0);
@@ -58,11 +58,9 @@ Movement read_movement(TableReader& r, std::string_view what,
   return m;
 }
 
-TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
-                            std::size_t number, std::size_t id,
-                            const std::vector<Material>& materials,
-                            std::vector<MotionProgram>& programs,
-                            std::vector<ProgramKnot>& knots) {
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source, std::size_t number,
+                            std::size_t id, const std::vector<Material>& materials,
+                            std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots) {
   TableReader r(table, source, fmt::format("[[triangle]] #{} (particle id {})", number, id));
   TriangleSpec t;
   t.material = lookup_material(r, materials);

@@ -24,11 +24,9 @@ Material parse_material(const toml::table& table, const std::string& source, std
 int lookup_material(TableReader& reader, const std::vector<Material>& materials);
 
 /// `number` is the 1-based position among the [[triangle]] blocks, `id` the particle id.
-TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
-                            std::size_t number, std::size_t id,
-                            const std::vector<Material>& materials,
-                            std::vector<MotionProgram>& programs,
-                            std::vector<ProgramKnot>& knots);
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source, std::size_t number,
+                            std::size_t id, const std::vector<Material>& materials,
+                            std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots);
 
 /// How a [[triangle]] or [[body]] moves: velocity, angular_velocity, fixed / motion.
 struct Movement {

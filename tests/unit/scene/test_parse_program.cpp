@@ -48,11 +48,12 @@ TEST(ParseProgram, ReadsEachKind) {
 }
 
 TEST(ParseProgram, BodyTakesAProgramAsATableOfItsOwn) {
-  const std::string text = std::string(test::kSceneHead) +
-                           "[[body]]\nmaterial = \"m\"\npolygon = [[0, 0], [1, 0], [1, 1], [0, 1]]\n"
-                           "motion = \"prescribed\"\n"
-                           "[body.program]\nkind = \"rotation\"\ncenter = [0, 0]\n"
-                           "angular_velocity = 1\n";
+  const std::string text =
+      std::string(test::kSceneHead) +
+      "[[body]]\nmaterial = \"m\"\npolygon = [[0, 0], [1, 0], [1, 1], [0, 1]]\n"
+      "motion = \"prescribed\"\n"
+      "[body.program]\nkind = \"rotation\"\ncenter = [0, 0]\n"
+      "angular_velocity = 1\n";
   const Scene s = parse_scene(text, "ok.toml");
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].program, 0);
@@ -73,12 +74,13 @@ TEST(ParseProgram, HopperGateExampleOpensByATable) {
 
 TEST(ParseProgram, RefusesBadPrograms) {
   test::expect_refused(
-      test::with_triangle("material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
-                          "program = { kind = \"rotation\", center = [0, 0], angular_velocity = 1 }\n"),
+      test::with_triangle(
+          "material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
+          "program = { kind = \"rotation\", center = [0, 0], angular_velocity = 1 }\n"),
       {"bad.toml:", "'program'", "needs motion = \"prescribed\""});
-  test::expect_refused(wall("{ kind = \"rotation\", center = [0, 0], angular_velocity = 1 }",
-                            "velocity = [1, 0]\n"),
-                       {"'velocity'", "takes its velocity from the program"});
+  test::expect_refused(
+      wall("{ kind = \"rotation\", center = [0, 0], angular_velocity = 1 }", "velocity = [1, 0]\n"),
+      {"'velocity'", "takes its velocity from the program"});
   test::expect_refused(wall("\"rotation\""), {"'program'", "expected a table"});
   test::expect_refused(wall("{ kind = \"spin\" }"), {"'kind'", "\"rotation\", \"table\""});
   test::expect_refused(wall("{ kind = \"rotation\", center = [0, 0] }"),
