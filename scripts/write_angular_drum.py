@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes examples/angular_drum.toml: angular grains (random convex polygons of 4 to 7
 sides, as [[body]] polygon blocks) in a rotating drum (a ring of 2 x 60 triangles, one
-prescribed body turning about its centre). Deterministic (seeded); rerun it after editing
+prescribed body turned about its centre by a rotation program). Deterministic (seeded); rerun it after editing
 the parameters below:  scripts/write_angular_drum.py > examples/angular_drum.toml
 """
 import math
@@ -76,12 +76,12 @@ penalty = 1e6
 friction = 0.6
 restitution = 0.3
 
-# The drum: one prescribed body, a ring of {SEGMENTS} trapezoids, turning about its centre
-# (the origin).
+# The drum: one prescribed body, a ring of {SEGMENTS} trapezoids, turned about its centre
+# (the origin) by a rotation program: its pose is the exact rotation at each time.
 [[body]]
 material = "steel"
 motion = "prescribed"
-angular_velocity = {OMEGA}""")
+program = {{ kind = "rotation", center = [0.0, 0.0], angular_velocity = {OMEGA} }}""")
     members = []
     for k in range(SEGMENTS):
         a0, a1 = 2 * math.pi * k / SEGMENTS, 2 * math.pi * (k + 1) / SEGMENTS

@@ -23,7 +23,8 @@ namespace tridem {
   F(body_inv_inertia, inv_inertia, double, 1, Model,                                         \
     m.motion[i] == Motion::Free ? 1.0 / m.inertia[i] : 0.0, nullptr)                         \
   F(body_half_size, half_size, double, 1, Model, m.half_size[i], nullptr)                    \
-  F(body_motion, motion, Motion, 1, Model, m.motion[i], nullptr)
+  F(body_motion, motion, Motion, 1, Model, m.motion[i], nullptr)                            \
+  F(body_program, program, std::int32_t, 1, Model, m.program[i], nullptr)
 
 #define TRIDEM_BODY_STATE_FIELDS(F)                                                          \
   F(body_x, x, double, 1, State, m.centroid[i].x, nullptr)                                   \

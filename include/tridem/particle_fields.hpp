@@ -64,7 +64,9 @@ constexpr bool is_shown(FieldRole r) { return r == FieldRole::State || r == Fiel
   F(area, area, Real, 1, Model, static_cast<Real>(m.area[i]), nullptr)                       \
   F(half_size, half_size, Real, 1, Model, static_cast<Real>(0.5 * m.longest_edge[i]), nullptr) \
   F(material, material, int, 1, Model, m.material[i], nullptr)                               \
-  F(motion, motion, Motion, 1, Model, m.motion[i], nullptr)
+  F(motion, motion, Motion, 1, Model, m.motion[i], nullptr)                                 \
+  /* index of its motion program (physics/motion_program.hpp), -1 = none */                  \
+  F(program, program, std::int32_t, 1, Model, m.program[i], nullptr)
 
 #define TRIDEM_STATE_FIELDS(F)                                                               \
   F(x, x, double, 1, State, m.centroid[i].x, nullptr)                                        \

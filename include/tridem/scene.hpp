@@ -2,6 +2,7 @@
 // The validated description of a simulation, as read from a scene file (io/scene) or
 // built in code by tests and benchmarks. Everything here is in SI units, double precision,
 // per unit thickness (2D): densities in kg/m³ give masses in kg/m.
+#include "tridem/motion_program.hpp"
 #include "tridem/vec2.hpp"
 
 #include <array>
@@ -57,6 +58,9 @@ struct TriangleSpec {
   Vec2d velocity{};                    ///< of the centroid, m/s
   double angular_velocity = 0;         ///< rad/s, about the centroid
   Motion motion = Motion::Free;
+  /// Prescribed only: index into Scene::programs of its motion program; -1 = none (it
+  /// moves at its constant velocity).
+  std::int32_t program = -1;
 };
 
 /// A rigid body of several triangles ([[body]]): its members are Scene::triangles
@@ -67,6 +71,7 @@ struct BodySpec {
   Vec2d velocity{};             ///< of the body's centroid, m/s
   double angular_velocity = 0;  ///< rad/s, about the body's centroid
   Motion motion = Motion::Free;
+  std::int32_t program = -1;  ///< as TriangleSpec::program
 };
 
 struct SimulationSettings {
@@ -124,6 +129,11 @@ struct Scene {
   /// one entry per body in id order ([[triangle]]s and [[body]]s in file order, then the
   /// generated triangles, one body each), covering `triangles` contiguously in order.
   std::vector<BodySpec> bodies;
+  /// The walls' motion programs (`program = {...}` of a [[triangle]] or [[body]]), one per
+  /// programmed wall, in the order of their walls; `origin` is filled by the particle
+  /// model. The velocity tables' entries are `program_knots`.
+  std::vector<MotionProgram> programs;
+  std::vector<ProgramKnot> program_knots;
 
   /// True when some body has more than one member.
   bool has_bodies() const {

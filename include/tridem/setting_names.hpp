@@ -41,6 +41,13 @@ inline constexpr Spellings<Encoding, 2> kEncodingNames{
 inline constexpr Spellings<Motion, 3> kMotionNames{
     {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};
 
+/// A wall's `program = { kind = ... }`.
+inline constexpr Spellings<ProgramKind, 4> kProgramKindNames{
+    {{"rotation", ProgramKind::Rotation},
+     {"table", ProgramKind::Table},
+     {"oscillation", ProgramKind::Oscillation},
+     {"servo", ProgramKind::Servo}}};
+
 /// tridem render --color.
 inline constexpr Spellings<RenderOptions::ColorBy, 3> kColorByNames{
     {{"speed", RenderOptions::ColorBy::Speed},

@@ -21,6 +21,7 @@ BodyModel build_body_model(const Scene& scene, const std::vector<Vec2d>& centroi
   b.motion.resize(n);
   b.velocity.resize(n);
   b.angular_velocity.resize(n);
+  b.program.assign(n, -1);
   b.body.assign(centroid.size(), -1);
   b.member_offset.resize(centroid.size());
   std::size_t expected_first = 0;
@@ -61,6 +62,7 @@ BodyModel build_body_model(const Scene& scene, const std::vector<Vec2d>& centroi
     const bool fixed = spec.motion == Motion::Fixed;
     b.velocity[k] = fixed ? Vec2d{} : spec.velocity;
     b.angular_velocity[k] = fixed ? 0.0 : spec.angular_velocity;
+    b.program[k] = spec.program;
   }
   if (expected_first != centroid.size())
     throw SceneError(fmt::format("{}: the bodies cover {} of the {} triangles", scene.source,

@@ -18,6 +18,7 @@ struct BodyModel {
   std::vector<Motion> motion;
   std::vector<Vec2d> velocity;
   std::vector<double> angular_velocity;
+  std::vector<std::int32_t> program;  ///< index into ParticleModel::programs, -1 = none
   // Per triangle:
   std::vector<std::int32_t> body;    ///< the body it belongs to
   std::vector<Vec2d> member_offset;  ///< its centroid minus the body's, at theta = 0

@@ -3,13 +3,59 @@
 #include "io/scene/triangle_shape.hpp"
 #include "physics/contact_laws.hpp"
 #include "physics/geometry.hpp"
+#include "physics/motion_program.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
 namespace tridem {
+namespace {
+
+// Each programmed wall (a triangle, or a body when the scene has bodies) gets its origin,
+// the centroid it starts from, and the program's velocity at t = 0; a program of no wall,
+// of two walls, of a wall that is not prescribed or out of range is refused (a scene built
+// in code may not have been through the reader).
+void resolve_programs(const Scene& scene, ParticleModel& m) {
+  m.programs = scene.programs;
+  m.program_knots = scene.program_knots;
+  std::vector<int> users(scene.programs.size(), 0);
+  auto resolve = [&](std::int32_t k, Motion motion, Vec2d centroid, Vec2d& velocity,
+                     double& angular_velocity, const std::string& wall) {
+    if (k < 0) return;
+    if (static_cast<std::size_t>(k) >= scene.programs.size() || motion != Motion::Prescribed)
+      throw SceneError(fmt::format("{}: {}: program {} {}", scene_label(scene), wall, k,
+                                   motion != Motion::Prescribed ? "on a wall that is not prescribed"
+                                                                : "out of range"));
+    MotionProgram& p = m.programs[static_cast<std::size_t>(k)];
+    if (p.kind == ProgramKind::Table &&
+        (p.knot_count < 1 || p.first_knot < 0 ||
+         static_cast<std::size_t>(p.first_knot + p.knot_count) > scene.program_knots.size()))
+      throw SceneError(fmt::format("{}: {}: its velocity table's entries are out of range",
+                                   scene_label(scene), wall));
+    if (++users[static_cast<std::size_t>(k)] > 1)
+      throw SceneError(fmt::format("{}: {}: program {} already moves another wall",
+                                   scene_label(scene), wall, k));
+    p.origin = centroid;
+    const physics::ProgramTable table{m.programs.data(), m.program_knots.data()};
+    physics::program_velocity(table, k, 0.0, Vec2d{}, velocity, angular_velocity);
+  };
+  if (m.bodies.empty()) {
+    for (std::size_t i = 0; i < m.size(); ++i)
+      resolve(m.program[i], m.motion[i], m.centroid[i], m.velocity[i], m.angular_velocity[i],
+              fmt::format("particle id {}", i));
+    return;
+  }
+  std::fill(m.program.begin(), m.program.end(), -1);  // the bodies carry them
+  BodyModel& b = m.bodies;
+  for (std::size_t k = 0; k < b.size(); ++k)
+    resolve(b.program[k], b.motion[k], b.centroid[k], b.velocity[k], b.angular_velocity[k],
+            fmt::format("body id {}", k));
+}
+
+}  // namespace
 
 ParticleModel build_particle_model(const Scene& scene) {
   if (scene.triangles.empty())
@@ -27,6 +73,7 @@ ParticleModel build_particle_model(const Scene& scene) {
   m.motion.resize(n);
   m.velocity.resize(n);
   m.angular_velocity.resize(n);
+  m.program.assign(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
     const TriangleSpec& spec = scene.triangles[i];
     // The scene reader's rules: a scene built in code may not have been through it.
@@ -57,8 +104,10 @@ ParticleModel build_particle_model(const Scene& scene) {
     const bool fixed = spec.motion == Motion::Fixed;
     m.velocity[i] = fixed ? Vec2d{} : spec.velocity;
     m.angular_velocity[i] = fixed ? 0.0 : spec.angular_velocity;
+    m.program[i] = spec.program;
   }
   m.bodies = build_body_model(scene, m.centroid, m.mass, m.inertia, m.longest_edge);
+  resolve_programs(scene, m);
   for (std::size_t i = 0; i < m.bodies.body.size(); ++i) {
     const auto b = static_cast<std::size_t>(m.bodies.body[i]);
     m.motion[i] = m.bodies.motion[b];
@@ -70,6 +119,7 @@ ParticleModel build_particle_model(const Scene& scene) {
 }
 
 bool walls_move(const ParticleModel& model) {
+  if (!model.programs.empty()) return true;
   for (std::size_t i = 0; i < model.size(); ++i)
     if (model.motion[i] != Motion::Free &&
         (model.velocity[i].x != 0 || model.velocity[i].y != 0 || model.angular_velocity[i] != 0))

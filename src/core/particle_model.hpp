@@ -7,6 +7,7 @@
 #include "tridem/scene.hpp"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace tridem {
@@ -20,6 +21,13 @@ struct ParticleModel {
   std::vector<Motion> motion;
   std::vector<Vec2d> velocity;
   std::vector<double> angular_velocity;
+  /// Index into `programs` of each triangle's motion program, -1 for none (a member of a
+  /// body of several triangles: -1, its body's is BodyModel::program).
+  std::vector<std::int32_t> program;
+  /// The scene's programs with their origins (the wall's centroid at t = 0), and the
+  /// velocity tables' entries: what every backend's integrator reads.
+  std::vector<MotionProgram> programs;
+  std::vector<ProgramKnot> program_knots;
   /// Bodies of several triangles; empty without them. A member's motion, velocity and
   /// angular velocity above are then its body's rigid motion at its centroid.
   BodyModel bodies;
@@ -31,10 +39,10 @@ struct ParticleModel {
 /// estimate counts).
 inline constexpr std::size_t kParticleModelBytes =
     sizeof(std::array<Vec2d, 3>) + 2 * sizeof(Vec2d) + 6 * sizeof(double) + sizeof(int) +
-    sizeof(Motion);
+    sizeof(Motion) + sizeof(std::int32_t);
 
-/// True when some fixed or prescribed particle starts with a velocity, so that walls do
-/// work on the grains (the energy budget's wall work).
+/// True when some fixed or prescribed particle starts with a velocity or follows a motion
+/// program, so that walls do work on the grains (the energy budget's wall work).
 bool walls_move(const ParticleModel& model);
 
 /// Builds the model; throws SceneError for a scene without triangles, and one naming the

@@ -5,6 +5,7 @@
 #include "support/backend_test.hpp"
 #include "support/body_scenes.hpp"
 #include "support/gpu.hpp"
+#include "support/program_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/solver.hpp"
@@ -116,6 +117,16 @@ INSTANTIATE_TEST_SUITE_P(OpenMP, BodyRestart,
                                            test::SolverChoice(Backend::OpenMP,
                                                               Method::Decomposition,
                                                               Precision::Float)));
+
+// Motion programs and a servo: nothing but the walls' poses and velocities carries them
+// (the time is the step's), so a restart continues them bit for bit.
+using ProgramRestart = test::BackendTest;
+TEST_P(ProgramRestart, ServoAndOscillatingWallsAreBitIdentical) {
+  const test::SolverChoice& c = GetParam();
+  expect_restart_exact(c.backend, c.precision, c.method, test::programmed_pile(12, 8));
+}
+INSTANTIATE_TEST_SUITE_P(Cpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cpu)));
+INSTANTIATE_TEST_SUITE_P(Gpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cuda)));
 
 TEST(Restart, SerialDoubleIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Double); }
 TEST(Restart, SerialFloatIsBitIdentical) { expect_restart_exact(Backend::Cpu, Precision::Float); }

@@ -98,6 +98,31 @@ TEST_P(EnergyBalance, CountsTheWorkOfAMovingWall) {
   EXPECT_GT(b.last.budget.wall_work, 0.1 * b.dissipated) << "the piston pushes";
 }
 
+TEST_P(EnergyBalance, CountsTheWorkOfAProgrammedWall) {
+  // The right wall a piston whose speed follows a table (0 to 0.8 m/s inwards over 0.01 s,
+  // then back to 0.2 m/s), the left one oscillating: walls whose velocity changes within
+  // the run, whose work the budget books with the velocity the contacts see.
+  Scene s = settling_pile();
+  for (auto& t : s.triangles) t.velocity = {};
+  s.triangles[2].motion = Motion::Prescribed;
+  s.triangles[2].program = 0;
+  s.triangles[1].motion = Motion::Prescribed;
+  s.triangles[1].program = 1;
+  MotionProgram table;
+  table.kind = ProgramKind::Table;
+  table.knot_count = 3;
+  s.program_knots = {{0.0, {0, 0}, 0}, {0.01, {-0.8, 0}, 0}, {0.03, {-0.2, 0}, 0}};
+  s.programs.push_back(table);
+  MotionProgram wiggle;
+  wiggle.kind = ProgramKind::Oscillation;
+  wiggle.amplitude = 0.002;
+  wiggle.frequency = 30;
+  wiggle.direction = {1, 0};
+  s.programs.push_back(wiggle);
+  const Balance b = measure(s, GetParam(), 3000, 100);
+  EXPECT_GT(b.last.budget.wall_work, 0.1 * b.dissipated) << "the piston pushes";
+}
+
 TRIDEM_INSTANTIATE_SOLVERS(EnergyBalance);
 
 // Float computes the pair energies in float (the elastic term cancels to a few digits) but

@@ -11,6 +11,7 @@
 
 #include "physics/integrate.hpp"
 #include "physics/local_frame.hpp"
+#include "physics/motion_program.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
@@ -48,6 +49,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                    [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
   });
   walls_move_ = walls_move(model);
+  programs_ = model.programs;
+  program_knots_ = model.program_knots;
   if (!model.bodies.empty()) {
     const BodyModel& bm = model.bodies;
     n_bodies_ = bm.size();
@@ -236,9 +239,10 @@ void CpuSolver<Real>::accumulate() {
 
 template <class Real>
 physics::Pose<double> CpuSolver<Real>::advanced_pose(std::size_t i) const {
-  return physics::stepped_pose(pose(i), motion_[i] == Motion::Free, Vec2<Real>{fx_[i], fy_[i]},
-                               torque_[i], inv_mass_[i], inv_inertia_[i], gravity_,
-                               local_damping_, dt_);
+  return physics::stepped_or_programmed_pose(
+      program_table(), program_[i], physics::time_after_step(step_, dt_), pose(i),
+      motion_[i] == Motion::Free, Vec2<Real>{fx_[i], fy_[i]}, torque_[i], inv_mass_[i],
+      inv_inertia_[i], gravity_, local_damping_, dt_);
 }
 
 // Check first, write second (integrate): a blow-up leaves the last good state in place.
@@ -283,11 +287,34 @@ void CpuSolver<Real>::integrate() {
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
-    // A wall's velocity never changes, and add_step_energy reads it from other threads.
+    // A wall's velocity is read by add_step_energy from other threads: a programmed
+    // wall's is written after this loop (write_program_velocities).
     if (motion_[i] != Motion::Free) continue;
     vx_[i] = p.v.x;
     vy_[i] = p.v.y;
     w_[i] = p.w;
+  }
+  if (!programs_.empty()) write_program_velocities();
+}
+
+// The programmed walls' new velocities, once every row's energy has read the old ones: the
+// program's velocity at the step's end (a servo's from this step's force on the wall).
+template <class Real>
+void CpuSolver<Real>::write_program_velocities() {
+  const auto n = static_cast<std::int64_t>(n_);
+  const physics::ProgramTable table = program_table();
+  const double t_new = physics::time_after_step(step_, dt_);
+#pragma omp parallel for schedule(static) if (parallel_)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (program_[i] < 0) continue;
+    Vec2d v;
+    double w = 0;
+    physics::program_velocity(table, program_[i], t_new,
+                              Vec2d{static_cast<double>(fx_[i]), static_cast<double>(fy_[i])}, v,
+                              w);
+    vx_[i] = v.x;
+    vy_[i] = v.y;
+    w_[i] = w;
   }
 }
 
@@ -327,9 +354,10 @@ void CpuSolver<Real>::gather_bodies() {
 
 template <class Real>
 physics::Pose<double> CpuSolver<Real>::advanced_body_pose(std::size_t b) const {
-  return physics::stepped_pose(body_pose(b), body_motion_[b] == Motion::Free,
-                               Vec2d{body_fx_[b], body_fy_[b]}, body_torque_[b], body_inv_mass_[b],
-                               body_inv_inertia_[b], gravity_, local_damping_, dt_);
+  return physics::stepped_or_programmed_pose(
+      program_table(), body_program_[b], physics::time_after_step(step_, dt_), body_pose(b),
+      body_motion_[b] == Motion::Free, Vec2d{body_fx_[b], body_fy_[b]}, body_torque_[b],
+      body_inv_mass_[b], body_inv_inertia_[b], gravity_, local_damping_, dt_);
 }
 
 template <class Real>
@@ -369,7 +397,9 @@ void CpuSolver<Real>::integrate_bodies() {
     body_x_[b] = after.c.x;
     body_y_[b] = after.c.y;
     body_theta_[b] = after.theta;
-    if (!free) continue;
+    // Only the members' velocities are read across threads (rows' energy), and they are
+    // written by place_members, after this loop.
+    if (!free && body_program_[b] < 0) continue;
     body_vx_[b] = after.v.x;
     body_vy_[b] = after.v.y;
     body_w_[b] = after.w;

@@ -12,6 +12,7 @@
 #include "decomposition/decomposed_pairs.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
+#include "physics/motion_program.hpp"
 #include "physics/rigid_body.hpp"
 #include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
@@ -113,6 +114,11 @@ class CpuSolver final : public Solver {
   std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
+  // The walls' motion programs (physics/motion_program.hpp), as the model resolved them.
+  std::vector<MotionProgram> programs_;
+  std::vector<ProgramKnot> program_knots_;
+  physics::ProgramTable program_table() const { return {programs_.data(), program_knots_.data()}; }
+  void write_program_velocities();
   // Pairs of this step and the last, with their contact history. The method picks the
   // finder: the cell grid and all-pairs list box-overlapping pairs, single-domain only
   // those that pass its contact test.

@@ -22,10 +22,10 @@ __device__ inline physics::Pose<double> body_pose(const BodyArrays& b, int k) {
 template <class Real>
 __device__ inline physics::Pose<double> advanced_body_pose(const BodyArrays& b,
                                                            const StepParams<Real>& sp, int k) {
-  return physics::stepped_pose(body_pose(b, k), b.body_motion[k] == Motion::Free,
-                               Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k],
-                               b.body_inv_mass[k], b.body_inv_inertia[k], sp.gravity,
-                               sp.local_damping, sp.dt);
+  return physics::stepped_or_programmed_pose(
+      sp.programs, b.body_program[k], sp.time_new, body_pose(b, k),
+      b.body_motion[k] == Motion::Free, Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k],
+      b.body_inv_mass[k], b.body_inv_inertia[k], sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Sums the members' loads of each free body and flags the lowest body whose step would
@@ -82,7 +82,7 @@ __global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, Step
   b.body_x[k] = after.c.x;
   b.body_y[k] = after.c.y;
   b.body_theta[k] = after.theta;
-  if (!free) return;
+  if (!free && b.body_program[k] < 0) return;
   b.body_vx[k] = after.v.x;
   b.body_vy[k] = after.v.y;
   b.body_w[k] = after.w;

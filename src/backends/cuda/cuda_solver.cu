@@ -88,6 +88,15 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     laws.push_back(physics::SceneContactLaw::cast<Real>(law));
   laws_.upload(laws);
   params_.laws = laws_.data();
+  has_programs_ = !model.programs.empty();
+  for (const MotionProgram& program : model.programs)
+    has_servos_ = has_servos_ || program.kind == ProgramKind::Servo;
+  if (has_programs_) {
+    programs_.upload(model.programs);
+    if (!model.program_knots.empty()) program_knots_.upload(model.program_knots);
+  }
+  params_.programs = {programs_.data(), program_knots_.data()};
+  params_.time_new = physics::time_after_step(0, params_.dt);
   d_.upload_initial(model);
   if (!model.bodies.empty()) {
     n_bodies_ = model.bodies.size();
@@ -135,6 +144,7 @@ void CudaSolver<Real>::update_geometry(bool place) {
 template <class Real>
 void CudaSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
+    params_.time_new = physics::time_after_step(step_, params_.dt);
     run_step(*this, kPipeline, *events_);
     ++step_;
     time_ += params_.dt;
@@ -179,12 +189,21 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                               false);
       TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+      if (has_servos_) {  // a servo's law reads the force on its wall at every step
+        gather_kernel<Real>
+            <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
+        TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+      }
       return;
     case Stage::Integrate:  // with the Geometry stage of the next step
       if (n_bodies_ > 0) return integrate(p, status);
       integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                                  true);
       TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+      if (has_programs_) {  // after every row's energy has read the walls' old velocities
+        program_velocity_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, params_, status);
+        TRIDEM_CUDA_CHECK_LAUNCH("program_velocity_kernel");
+      }
       return;
     case Stage::Check:
       TRIDEM_CUDA_CHECK(
@@ -212,6 +231,14 @@ void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status)
   TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
   body_gather_kernel<Real>
       <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status, false);
+  TRIDEM_CUDA_CHECK_LAUNCH("body_gather_kernel");
+  if (!has_servos_) return;
+  // A servo's law reads the force on its body at every step: the walls' sums too.
+  gather_kernel<Real, true>
+      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
+  TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
+  body_gather_kernel<Real>
+      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status, true);
   TRIDEM_CUDA_CHECK_LAUNCH("body_gather_kernel");
 }
 

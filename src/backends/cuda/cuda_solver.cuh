@@ -84,6 +84,12 @@ class CudaSolver final : public Solver {
   cudaStream_t stream_ = nullptr;
 
   DeviceBuffer<physics::LawParameters<Real>> laws_;
+  // Motion programs: walls with one (a velocity written after the step, by its own
+  // kernel), and servos among them (their walls' forces summed every step).
+  DeviceBuffer<MotionProgram> programs_;
+  DeviceBuffer<ProgramKnot> program_knots_;
+  bool has_programs_ = false;
+  bool has_servos_ = false;
   /// The per-particle fields (tridem/particle_fields.hpp), and the Model ones on the host
   /// for snapshots.
   ParticleBuffers<Real> d_;

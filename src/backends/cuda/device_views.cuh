@@ -3,6 +3,7 @@
 // data is a structure of arrays, so that the threads of a warp, handling consecutive
 // particles, read consecutive addresses.
 #include "physics/contact_laws.hpp"
+#include "physics/motion_program.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/particle_fields.hpp"
 
@@ -45,6 +46,10 @@ struct StepParams {
   int n_materials;
   Real max_depth;  ///< deepest PairForce::depth accepted ([simulation] max_penetration)
   bool walls_move;  ///< some fixed or prescribed particle has a velocity (does work)
+  /// The walls' motion programs (uploaded once) and the time the step reaches, set before
+  /// each step from its index (physics::time_after_step).
+  physics::ProgramTable programs;
+  double time_new;
 };
 
 /// What the host reads back after every step.

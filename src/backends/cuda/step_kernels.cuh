@@ -77,9 +77,10 @@ __device__ inline physics::Pose<double> pose(const ParticleArrays<Real>& p, int 
 template <class Real>
 __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>& p,
                                                       const StepParams<Real>& sp, int i) {
-  return physics::stepped_pose(pose(p, i), p.free[i] != 0, Vec2<Real>{p.fx[i], p.fy[i]},
-                               p.torque[i], p.inv_mass[i], p.inv_inertia[i], sp.gravity,
-                               sp.local_damping, sp.dt);
+  return physics::stepped_or_programmed_pose(sp.programs, p.program[i], sp.time_new, pose(p, i),
+                                             p.free[i] != 0, Vec2<Real>{p.fx[i], p.fy[i]},
+                                             p.torque[i], p.inv_mass[i], p.inv_inertia[i],
+                                             sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Sums the forces of free particles and flags the lowest one whose step would run away
@@ -160,7 +161,8 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;
     p.theta[i] = pose.theta;
-    // A wall's velocity never changes, and add_step_energy reads it from other threads.
+    // A wall's velocity is read by add_step_energy from other threads: a programmed wall's
+    // is written by program_velocity_kernel, after this one.
     if (p.free[i] != 0) {
       p.vx[i] = pose.v.x;
       p.vy[i] = pose.v.y;
@@ -168,6 +170,25 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
     }
   }
   update_geometry(p, i, status);
+}
+
+/// The programmed walls' new velocities (unless the step was refused), once every row's
+/// energy has read the old ones: CpuSolver::write_program_velocities. Launched only when
+/// some wall has a program.
+template <class Real>
+__global__ void program_velocity_kernel(ParticleArrays<Real> p, StepParams<Real> sp,
+                                        const StepStatus* status) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n || p.program[i] < 0) return;
+  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  Vec2d v;
+  double w = 0;
+  physics::program_velocity(sp.programs, p.program[i], sp.time_new,
+                            Vec2d{static_cast<double>(p.fx[i]), static_cast<double>(p.fy[i])}, v,
+                            w);
+  p.vx[i] = v.x;
+  p.vy[i] = v.y;
+  p.w[i] = w;
 }
 
 /// The elastic energy of particle i's own row of pairs (the last step's), for energy().

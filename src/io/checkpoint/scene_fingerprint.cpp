@@ -53,6 +53,23 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
       h.add(b.angular_velocity);
     }
   }
+  // Motion programs move walls: another program is another run. Added only when there are
+  // some, so every scene without programs keeps its fingerprint.
+  if (!scene.programs.empty()) {
+    h.add(std::uint64_t{scene.programs.size()});
+    for (const TriangleSpec& t : scene.triangles) h.add(static_cast<std::uint64_t>(t.program + 1));
+    for (const BodySpec& b : scene.bodies) h.add(static_cast<std::uint64_t>(b.program + 1));
+    for (const MotionProgram& p : scene.programs) {
+      h.add(static_cast<std::uint64_t>(p.kind));
+      for (double v : {p.center.x, p.center.y, p.angular_velocity, p.direction.x, p.direction.y,
+                       p.amplitude, p.frequency, p.phase, p.target_force, p.gain, p.max_speed})
+        h.add(v);
+      h.add(static_cast<std::uint64_t>(p.first_knot));
+      h.add(static_cast<std::uint64_t>(p.knot_count));
+    }
+    for (const ProgramKnot& k : scene.program_knots)
+      for (double v : {k.time, k.velocity.x, k.velocity.y, k.angular_velocity}) h.add(v);
+  }
   return h.value();
 }
 

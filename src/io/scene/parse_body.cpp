@@ -38,7 +38,8 @@ std::vector<std::array<Vec2d, 3>> read_triangles(TableReader& r, const toml::arr
 
 BodySpec parse_body(const toml::table& table, const std::string& source, std::size_t number,
                     std::size_t id, const std::vector<Material>& materials,
-                    std::vector<TriangleSpec>& triangles) {
+                    std::vector<TriangleSpec>& triangles, std::vector<MotionProgram>& programs,
+                    std::vector<ProgramKnot>& knots) {
   TableReader r(table, source, fmt::format("[[body]] #{} (body id {})", number, id));
   const int material = lookup_material(r, materials);
   const toml::node* polygon = r.node("polygon");
@@ -66,7 +67,7 @@ BodySpec parse_body(const toml::table& table, const std::string& source, std::si
                                : std::string(describe_type(explicit_triangles->type()))));
     shapes = read_triangles(r, *array);
   }
-  const Movement m = read_movement(r, "body");
+  const Movement m = read_movement(r, "body", programs, knots);
   r.reject_unknown_keys();
 
   BodySpec body;
@@ -75,6 +76,7 @@ BodySpec parse_body(const toml::table& table, const std::string& source, std::si
   body.velocity = m.velocity;
   body.angular_velocity = m.angular_velocity;
   body.motion = m.motion;
+  body.program = m.program;
   for (std::size_t k = 0; k < shapes.size(); ++k) {
     std::array<Vec2d, 3>& v = shapes[k];
     if (auto problem = shape_problem(v))

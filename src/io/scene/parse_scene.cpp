@@ -69,7 +69,7 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
 /// The body of the last triangle of `triangles`, alone.
 BodySpec lone_body(const std::vector<TriangleSpec>& triangles) {
   const TriangleSpec& t = triangles.back();
-  return {triangles.size() - 1, 1, t.velocity, t.angular_velocity, t.motion};
+  return {triangles.size() - 1, 1, t.velocity, t.angular_velocity, t.motion, t.program};
 }
 
 }  // namespace
@@ -133,8 +133,9 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   for (const Block& e : in_file_order(std::move(explicit_blocks))) {
     const std::string at = where(source, e.table->source());
     if (e.second_kind) {
-      const BodySpec body = scene_detail::parse_body(
-          *e.table, source, e.number, scene.bodies.size(), scene.materials, scene.triangles);
+      const BodySpec body =
+          scene_detail::parse_body(*e.table, source, e.number, scene.bodies.size(), scene.materials,
+                                   scene.triangles, scene.programs, scene.program_knots);
       for (std::size_t k = 0; k < body.count; ++k)
         provenance.explicit_origin.push_back(
             fmt::format("body id {}, [[body]] #{} at {}, its triangle {} of {}",
@@ -143,7 +144,8 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
       continue;
     }
     scene.triangles.push_back(scene_detail::parse_triangle(*e.table, source, e.number,
-                                                           scene.bodies.size(), scene.materials));
+                                                           scene.bodies.size(), scene.materials,
+                                                           scene.programs, scene.program_knots));
     provenance.explicit_origin.push_back(fmt::format("[[triangle]] #{} at {}", e.number, at));
     scene.bodies.push_back(lone_body(scene.triangles));
   }

@@ -21,7 +21,8 @@ Motion read_motion(TableReader& r) {
 
 }  // namespace
 
-Movement read_movement(TableReader& r, std::string_view what) {
+Movement read_movement(TableReader& r, std::string_view what, std::vector<MotionProgram>& programs,
+                       std::vector<ProgramKnot>& knots) {
   Movement m;
   m.velocity = r.vec2("velocity").value_or(Vec2d{});
   m.angular_velocity = r.real("angular_velocity").value_or(0.0);
@@ -37,22 +38,40 @@ Movement read_movement(TableReader& r, std::string_view what) {
                                              "motion = \"prescribed\" for a moving wall)",
                                              what));
   }
+  if (r.has("program")) {
+    if (m.motion != Motion::Prescribed)
+      r.fail("program", fmt::format("a motion program needs motion = \"prescribed\" (this {} "
+                                    "is \"{}\")",
+                                    what, m.motion == Motion::Fixed ? "fixed" : "free"));
+    // The program sets the velocity at every instant; a second one would be ignored.
+    if (r.has("velocity"))
+      r.fail("velocity", fmt::format("a {} with a motion program takes its velocity from the "
+                                     "program: remove velocity",
+                                     what));
+    if (r.has("angular_velocity"))
+      r.fail("angular_velocity",
+             fmt::format("a {} with a motion program takes its angular velocity from the "
+                         "program: remove angular_velocity",
+                         what));
+    m.program = read_program(r, programs, knots);
+  }
   return m;
 }
 
-TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
-                            std::size_t number, std::size_t id,
-                            const std::vector<Material>& materials) {
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source, std::size_t number,
+                            std::size_t id, const std::vector<Material>& materials,
+                            std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots) {
   TableReader r(table, source, fmt::format("[[triangle]] #{} (particle id {})", number, id));
   TriangleSpec t;
   t.material = lookup_material(r, materials);
   t.vertices = r.required(r.points<3>("vertices"), "vertices");
   if (auto problem = shape_problem(t.vertices)) r.fail("vertices", *problem);
   make_counter_clockwise(t.vertices);
-  const Movement m = read_movement(r, "triangle");
+  const Movement m = read_movement(r, "triangle", programs, knots);
   t.velocity = m.velocity;
   t.angular_velocity = m.angular_velocity;
   t.motion = m.motion;
+  t.program = m.program;
   r.reject_unknown_keys();
   return t;
 }

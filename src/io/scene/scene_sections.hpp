@@ -24,24 +24,32 @@ Material parse_material(const toml::table& table, const std::string& source, std
 int lookup_material(TableReader& reader, const std::vector<Material>& materials);
 
 /// `number` is the 1-based position among the [[triangle]] blocks, `id` the particle id.
-TriangleSpec parse_triangle(const toml::table& table, const std::string& source,
-                            std::size_t number, std::size_t id,
-                            const std::vector<Material>& materials);
+TriangleSpec parse_triangle(const toml::table& table, const std::string& source, std::size_t number,
+                            std::size_t id, const std::vector<Material>& materials,
+                            std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots);
 
 /// How a [[triangle]] or [[body]] moves: velocity, angular_velocity, fixed / motion.
 struct Movement {
   Vec2d velocity{};
   double angular_velocity = 0;
   Motion motion = Motion::Free;
+  std::int32_t program = -1;  ///< index into the scene's programs, -1 = none
 };
-/// Reads them from `reader`'s table; `what` ("triangle", "body") names it in refusals.
-Movement read_movement(TableReader& reader, std::string_view what);
+/// Reads them from `reader`'s table; `what` ("triangle", "body") names it in refusals. A
+/// `program` table is appended to `programs` (its table's entries to `knots`).
+Movement read_movement(TableReader& reader, std::string_view what,
+                       std::vector<MotionProgram>& programs, std::vector<ProgramKnot>& knots);
+/// The `program = {...}` table of a prescribed wall (parse_program.cpp): appended to
+/// `programs` and `knots`; returns its index.
+std::int32_t read_program(TableReader& wall, std::vector<MotionProgram>& programs,
+                          std::vector<ProgramKnot>& knots);
 
 /// One [[body]] block: `number` is its 1-based position among them, `id` its body id.
 /// Appends its members to `triangles` and returns the body (first = their first index).
 BodySpec parse_body(const toml::table& table, const std::string& source, std::size_t number,
                     std::size_t id, const std::vector<Material>& materials,
-                    std::vector<TriangleSpec>& triangles);
+                    std::vector<TriangleSpec>& triangles, std::vector<MotionProgram>& programs,
+                    std::vector<ProgramKnot>& knots);
 
 /// Appends the triangles of one [[generate]] block to `out` (whose size is the first id)
 /// and its bodies to `bodies` (one per triangle, or one per grain of kind = "polygons").

@@ -77,6 +77,7 @@ class TableReader {
   void reject_unknown_keys() const;
 
   const std::string& context() const { return context_; }
+  const std::string& source() const { return source_; }
 
   /// The point [x, y] at `n`, an element of the value of `key` (`what` describes the
   /// expected value in refusals).
