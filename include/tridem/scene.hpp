@@ -46,6 +46,17 @@ struct Material {
   /// whatever the contact's shape; absent: set by `damping`.
   std::optional<double> restitution;
   double damping = 0;  ///< legacy: the face-contact damping ratio ζ in [0, 1) (e = exp(−πζ/√(1−ζ²)))
+  /// Cohesive bonds of a bonded [[mesh]] (docs/fracture.md); 0 = not given (a material
+  /// without them cannot be bonded).
+  double young_modulus = 0;          ///< E, Pa: sets the bonds' stiffness
+  double tensile_strength = 0;       ///< f_t, Pa
+  double shear_strength = 0;         ///< cohesion c, Pa
+  double friction_angle = 0;         ///< phi, degrees: shear strength c + sigma tan(phi)
+  double fracture_energy = 0;        ///< G_I, J/m²
+  double shear_fracture_energy = 0;  ///< G_II, J/m²
+
+  /// True when every bond property is given (the reader refuses a partial set).
+  bool bondable() const { return young_modulus > 0; }
 };
 
 /// How a triangle moves: by forces, not at all, or at a prescribed constant velocity.
@@ -67,6 +78,13 @@ struct BodySpec {
   Vec2d velocity{};             ///< of the body's centroid, m/s
   double angular_velocity = 0;  ///< rad/s, about the body's centroid
   Motion motion = Motion::Free;
+};
+
+/// A cohesive bond between two triangles of a bonded [[mesh]] that share an edge
+/// (physics/cohesive_bond.hpp): a < b, the edge's ends as in the scene (at the start).
+struct BondSpec {
+  std::size_t a = 0, b = 0;
+  Vec2d p{}, q{};
 };
 
 struct SimulationSettings {
@@ -124,6 +142,8 @@ struct Scene {
   /// one entry per body in id order ([[triangle]]s and [[body]]s in file order, then the
   /// generated triangles, one body each), covering `triangles` contiguously in order.
   std::vector<BodySpec> bodies;
+  /// Cohesive bonds (bonded [[mesh]]es), by ascending (a, b); empty for every other scene.
+  std::vector<BondSpec> bonds;
 
   /// True when some body has more than one member.
   bool has_bodies() const {

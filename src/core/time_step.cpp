@@ -1,5 +1,7 @@
 #include "core/time_step.hpp"
 
+#include "core/bond_model.hpp"
+
 #include "physics/contact_laws.hpp"
 #include "physics/stability.hpp"
 #include "tridem/error.hpp"
@@ -101,6 +103,9 @@ ParticleLimit particle_limit(const ParticleModel& model, std::size_t i,
 }  // namespace
 
 std::string StepLimit::describe() const {
+  if (bonds)
+    return "the cohesive bonds' springs (k = E/h: a finer mesh or a stiffer material "
+           "needs a smaller step)";
   if (particle < 0) return "";
   if (partner_free)
     return fmt::format("particle {} pressed on every edge by free particles as thin as "
@@ -152,6 +157,15 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
     if (p.dt < ts.critical) {
       ts.critical = p.dt;
       ts.limit = p.limit;
+    }
+  }
+  // Bonds are springs of their own, as stiff as the material (k = E/h): their limit too.
+  if (!scene.bonds.empty()) {
+    const double bonds = bond_time_step_limit(model, build_bond_model(scene, model), local);
+    if (bonds < ts.critical) {
+      ts.critical = bonds;
+      ts.limit = StepLimit{};
+      ts.limit.bonds = true;
     }
   }
   ts.automatic = !scene.simulation.dt.has_value();

@@ -20,6 +20,7 @@ struct StepLimit {
   double partner_height = 0;   ///< its smallest height, m
   double particle_height = 0;  ///< the particle's smallest height, m
   double damping_ratio = 0;    ///< the largest ζ it meets
+  bool bonds = false;          ///< set by the cohesive bonds' springs instead (docs/fracture.md)
 
   /// "particle 3 pressed on every edge by fixed or prescribed particle 0 (0.0001 m
   /// thick: a thin wall ...)", or "" when no particle is free.

@@ -53,6 +53,14 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
       h.add(b.angular_velocity);
     }
   }
+  // Bonds likewise (only when there are some): other bonds are another scene.
+  if (!scene.bonds.empty()) {
+    h.add(std::uint64_t{scene.bonds.size()});
+    for (const BondSpec& b : scene.bonds) {
+      h.add(std::uint64_t{b.a});
+      h.add(std::uint64_t{b.b});
+    }
+  }
   return h.value();
 }
 
