@@ -4,7 +4,7 @@
 //
 // The balance users can check:
 //   kinetic + potential + elastic + dissipated_damping + dissipated_friction
-//     + dissipated_local − wall_work = its value at step 0
+//     + dissipated_local + dissipated_fracture − wall_work = its value at step 0
 // up to the time discretisation (docs/model.md, "Energy").
 
 namespace tridem {
@@ -15,6 +15,9 @@ struct EnergyBudget {
   double dissipated_friction = 0;  ///< J/m removed by Coulomb sliding since step 0
   double dissipated_local = 0;     ///< J/m removed by Cundall's local damping since step 0
   double wall_work = 0;            ///< J/m done on the grains by moving walls since step 0
+  /// J/m released by the damage of cohesive bonds since step 0 (docs/fracture.md); the
+  /// bonds' stored energy is in `elastic`.
+  double dissipated_fracture = 0;
 };
 
 /// Indices of the four cumulative per-particle accumulators a solver keeps (the state

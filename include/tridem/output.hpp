@@ -51,6 +51,10 @@ void write_vtu_frame(const std::filesystem::path& file, const Snapshot&,
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
 void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
                         Encoding = Encoding::Binary);
+/// bonds/bonds_<step>.vtp: the cohesive bonds as lines along their shared edges, with
+/// cell data damage (0 to 1), broken (0 or 1) and the two triangles' ids a, b.
+void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&,
+                     Encoding = Encoding::Binary);
 
 /// Reads back a frame written by write_vtu_frame, in either encoding. Recovers step, time,
 /// vertices, centroids (vertex mean), velocities, forces, torques, material and motion, in

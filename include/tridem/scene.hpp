@@ -47,6 +47,17 @@ struct Material {
   /// whatever the contact's shape; absent: set by `damping`.
   std::optional<double> restitution;
   double damping = 0;  ///< legacy: the face-contact damping ratio ζ in [0, 1) (e = exp(−πζ/√(1−ζ²)))
+  /// Cohesive bonds of a bonded [[mesh]] (docs/fracture.md); 0 = not given (a material
+  /// without them cannot be bonded).
+  double young_modulus = 0;          ///< E, Pa: sets the bonds' stiffness
+  double tensile_strength = 0;       ///< f_t, Pa
+  double shear_strength = 0;         ///< cohesion c, Pa
+  double friction_angle = 0;         ///< phi, degrees: shear strength c + sigma tan(phi)
+  double fracture_energy = 0;        ///< G_I, J/m²
+  double shear_fracture_energy = 0;  ///< G_II, J/m²
+
+  /// True when every bond property is given (the reader refuses a partial set).
+  bool bondable() const { return young_modulus > 0; }
 };
 
 /// How a triangle moves: by forces, not at all, or at a prescribed constant velocity.
@@ -72,6 +83,13 @@ struct BodySpec {
   double angular_velocity = 0;  ///< rad/s, about the body's centroid
   Motion motion = Motion::Free;
   std::int32_t program = -1;  ///< as TriangleSpec::program
+};
+
+/// A cohesive bond between two triangles of a bonded [[mesh]] that share an edge
+/// (physics/cohesive_bond.hpp): a < b, the edge's ends as in the scene (at the start).
+struct BondSpec {
+  std::size_t a = 0, b = 0;
+  Vec2d p{}, q{};
 };
 
 struct SimulationSettings {
@@ -134,6 +152,8 @@ struct Scene {
   /// model. The velocity tables' entries are `program_knots`.
   std::vector<MotionProgram> programs;
   std::vector<ProgramKnot> program_knots;
+  /// Cohesive bonds (bonded [[mesh]]es), by ascending (a, b); empty for every other scene.
+  std::vector<BondSpec> bonds;
 
   /// True when some body has more than one member.
   bool has_bodies() const {

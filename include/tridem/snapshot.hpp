@@ -46,6 +46,13 @@ struct Snapshot {
   /// n_bodies + 1 offsets: the members of body b are triangles [first[b], first[b+1]).
   std::vector<std::int64_t> body_first;
 
+  // Cohesive bonds (docs/fracture.md), in Scene::bonds order; all EMPTY without bonds.
+  std::vector<std::int32_t> bond_a, bond_b;  ///< the two triangles
+  std::vector<double> bond_damage;           ///< the mean of its points' damage, 0 to 1
+  std::vector<std::uint8_t> bond_broken;     ///< 1 once every point is fully damaged
+  /// The shared edge's two ends as triangle a carries them now (the crack's faces).
+  std::vector<double> bond_x0, bond_y0, bond_x1, bond_y1;
+
   std::size_t body_count() const { return member_body.empty() ? size() : body_first.size() - 1; }
   std::int64_t body_of(std::size_t i) const {
     return member_body.empty() ? static_cast<std::int64_t>(i) : member_body[i];

@@ -22,6 +22,10 @@
 //    body (body_x, ..., body_omega), one entry per body in Scene::bodies order, all empty
 //    when the scene has no body of several triangles. The members' per-particle state is
 //    stored as well (it is what the body's pose places them at, bit for bit).
+//  - Cohesive bonds (docs/fracture.md), in Scene::bonds order, both empty without bonds:
+//    bond_damage, the damage of each bond's points (kBondStatePoints per bond, bond-major;
+//    a bond whose points are all 1 is broken), and bond_dissipated, the energy each bond's
+//    damage released so far (J/m).
 //  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
 //    would have given without the round trip.
 #include "tridem/body_fields.hpp"
@@ -48,7 +52,13 @@ struct SolverState {
   TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_DECLARE_PAIR_COLUMN)
   TRIDEM_PAIR_HISTORY_FIELDS(TRIDEM_PAIR_COLUMN_ACCESSOR)
 
+  std::vector<double> bond_damage;
+  std::vector<double> bond_dissipated;
+
   std::size_t size() const { return x.size(); }
+  std::size_t bonds() const { return bond_dissipated.size(); }
+  /// The points of a bond whose damage is kept (physics::kBondPoints).
+  static constexpr std::size_t kBondStatePoints = 2;
   std::size_t bodies() const { return body_x.size(); }
   /// Arrays per body.
   static constexpr int kArraysPerBody = 0 TRIDEM_BODY_CHECKPOINTED_FIELDS(TRIDEM_PLUS_COUNT);
@@ -63,5 +73,9 @@ struct SolverState {
 /// `source` (a file name, or the solver's name).
 void validate_solver_state(const SolverState& state, std::size_t particles, std::size_t bodies,
                            const std::string& source);
+
+/// Checks the bonds' part of `state` against a solver of `bonds` bonds: sizes, damage in
+/// [0, 1], dissipated energy finite and >= 0. Throws tridem::Error prefixed by `source`.
+void validate_bond_state(const SolverState& state, std::size_t bonds, const std::string& source);
 
 }  // namespace tridem

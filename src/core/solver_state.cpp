@@ -81,4 +81,21 @@ void validate_solver_state(const SolverState& s, std::size_t particles, std::siz
   }
 }
 
+void validate_bond_state(const SolverState& s, std::size_t bonds, const std::string& source) {
+  if (s.bond_dissipated.size() != bonds ||
+      s.bond_damage.size() != bonds * SolverState::kBondStatePoints)
+    throw Error(fmt::format("{}: state has {} bonds' energies and {} damage values for a scene "
+                            "of {} cohesive bonds (a checkpoint of another scene, or one "
+                            "written before bonds were checkpointed?)",
+                            source, s.bond_dissipated.size(), s.bond_damage.size(), bonds));
+  for (std::size_t k = 0; k < s.bond_damage.size(); ++k)
+    if (!(s.bond_damage[k] >= 0 && s.bond_damage[k] <= 1))
+      throw Error(fmt::format("{}: damage {} of bond {} is not in [0, 1]", source, s.bond_damage[k],
+                              k / SolverState::kBondStatePoints));
+  for (std::size_t k = 0; k < bonds; ++k)
+    if (!(std::isfinite(s.bond_dissipated[k]) && s.bond_dissipated[k] >= 0))
+      throw Error(fmt::format("{}: dissipated energy {} of bond {} is not finite and >= 0", source,
+                              s.bond_dissipated[k], k));
+}
+
 }  // namespace tridem

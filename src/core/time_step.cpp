@@ -1,5 +1,7 @@
 #include "core/time_step.hpp"
 
+#include "core/bond_model.hpp"
+
 #include "physics/contact_laws.hpp"
 #include "physics/geometry.hpp"
 #include "physics/stability.hpp"
@@ -241,6 +243,9 @@ ParticleLimit body_limit(const ParticleModel& model, const std::vector<char>& al
 }  // namespace
 
 std::string StepLimit::describe() const {
+  if (bonds)
+    return "the cohesive bonds' springs (k = E/h: a finer mesh or a stiffer material "
+           "needs a smaller step)";
   if (particle < 0) return "";
   const std::string who =
       body < 0 ? fmt::format("particle {} pressed on every edge", particle)
@@ -307,6 +312,15 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
   for (std::size_t b = 0; b < bodies.size(); ++b)
     if (bodies.motion[b] == Motion::Free && bodies.first[b + 1] - bodies.first[b] > 1)
       keep(body_limit(model, inner, b, thinnest, laws, local));
+  // Bonds are springs of their own, as stiff as the material (k = E/h): their limit too.
+  if (!scene.bonds.empty()) {
+    const double bonds = bond_time_step_limit(model, build_bond_model(scene, model), local);
+    if (bonds < ts.critical) {
+      ts.critical = bonds;
+      ts.limit = StepLimit{};
+      ts.limit.bonds = true;
+    }
+  }
   ts.automatic = !scene.simulation.dt.has_value();
   if (!ts.automatic) {
     ts.chosen = *scene.simulation.dt;

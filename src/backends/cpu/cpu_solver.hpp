@@ -6,10 +6,12 @@
 #include "backends/cpu/thread_choice.hpp"
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/single_domain.hpp"
+#include "core/bond_model.hpp"
 #include "core/particle_model.hpp"
 #include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
 #include "decomposition/decomposed_pairs.hpp"
+#include "physics/cohesive_bond.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/motion_program.hpp"
@@ -57,6 +59,7 @@ class CpuSolver final : public Solver {
   TRIDEM_BODY_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   std::size_t bodies() const { return n_bodies_; }
+  std::size_t bonds() const { return bond_a_.size(); }
 
  private:
   void update_geometry();
@@ -77,6 +80,14 @@ class CpuSolver final : public Solver {
   void check_body_runaway() const;
   void integrate_bodies();
   void place_members();
+  // Cohesive bonds (bonds() > 0; docs/fracture.md): their forces computed with the pair
+  // forces, summed into each particle's load after its pairs (its bonds in ascending
+  // order), their damage written with the step (Integrate), so that a blow-up leaves the
+  // last good damage in place.
+  void compute_bond_forces();
+  void add_bond_loads();
+  void commit_bonds();
+  void fill_bonds(Snapshot& out) const;  ///< the snapshot's bond columns
   physics::Pose<double> body_pose(std::size_t b) const {
     return {{body_x_[b], body_y_[b]}, body_theta_[b], {body_vx_[b], body_vy_[b]}, body_w_[b]};
   }
@@ -111,6 +122,17 @@ class CpuSolver final : public Solver {
   std::size_t n_bodies_ = 0;  ///< bodies, when some has several members; else 0
   TRIDEM_BODY_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
   TRIDEM_MEMBER_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
+  // Bonds (empty without): the model (core/bond_model.hpp) in Real, each particle's list,
+  // the damage of each bond's points and whether it broke, its dissipated energy (J/m,
+  // cumulative), and this step's forces.
+  std::vector<std::int32_t> bond_a_, bond_b_, bond_material_;
+  std::vector<physics::BondGeometry<Real>> bond_geometry_;
+  std::vector<physics::BondStrength<Real>> bond_strength_;
+  std::vector<std::int32_t> bond_first_, bond_partner_, bond_of_;
+  std::vector<std::array<Real, physics::kBondPoints>> bond_damage_;
+  std::vector<std::uint8_t> bond_broken_;
+  std::vector<double> bond_dissipated_;
+  std::vector<physics::BondForce<Real>> bond_result_;
   std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity

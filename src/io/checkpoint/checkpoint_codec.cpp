@@ -104,6 +104,19 @@ void read_bodies(io::ByteReader& r, SolverState& s, const std::string& source) {
   });
 }
 
+/// The bonds' block (version 6): their count, each bond's points' damage, their energies.
+void read_bonds(io::ByteReader& r, SolverState& s, const std::string& source) {
+  const std::uint64_t c = r.u64("bond count");
+  if (c > r.remaining() / fmt_::kBytesPerBond || c * fmt_::kBytesPerBond + 8 > r.remaining())
+    throw RunError(fmt::format("{}: corrupt: {} bonds do not fit in the {} bytes of state left "
+                               "after the bodies",
+                               source, c, r.remaining()));
+  s.bond_damage.resize(c * SolverState::kBondStatePoints);
+  for (double& v : s.bond_damage) get(r, v, "bond damage");
+  s.bond_dissipated.resize(c);
+  for (double& v : s.bond_dissipated) get(r, v, "bond energy");
+}
+
 SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version,
                          const std::string& source, std::vector<PhysicsSetting>& settings) {
   SolverState s;
@@ -123,6 +136,7 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version
     });
   });
   if (version >= fmt_::kBodiesVersion) read_bodies(r, s, source);  // version 4: no bodies
+  if (version >= fmt_::kBondsVersion) read_bonds(r, s, source);    // version 5: no bonds
   const std::uint64_t m = r.u64("pair count");
   if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
     throw RunError(fmt::format("{}: corrupt: {} pairs of contact history do not fill the "
@@ -147,7 +161,7 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   const std::size_t n = s.size(), m = s.pairs();
   std::vector<std::uint8_t> payload;
   payload.reserve(fmt_::fixed_payload_size(n) + s.bodies() * fmt_::kBytesPerBody +
-                  m * fmt_::kBytesPerPair);
+                  s.bonds() * fmt_::kBytesPerBond + m * fmt_::kBytesPerPair);
   io::ByteWriter p(payload);
   p.i64(s.step);
   p.f64(s.time);
@@ -167,6 +181,9 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   SolverState::for_each_body_column([&](auto field) {
     for (double value : s.column(field)) put(p, value);
   });
+  p.u64(s.bonds());
+  for (double value : s.bond_damage) put(p, value);
+  for (double value : s.bond_dissipated) put(p, value);
   p.u64(m);
   for_each_pair_history_field([&](auto field) {
     for (const auto& value : s.column(field)) {
@@ -205,6 +222,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   c.state =
       read_payload(r, static_cast<std::size_t>(h.particles), h.version, source, c.meta.settings);
   validate_solver_state(c.state, c.state.size(), c.state.bodies(), source);
+  validate_bond_state(c.state, c.state.bonds(), source);
   return c;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
-// The checkpoint file, version 5. All numbers little-endian; reals are IEEE doubles.
+// The checkpoint file, version 6. All numbers little-endian; reals are IEEE doubles.
 //
 //   header (48 bytes)
 //     0  char[8]  magic "TRIDEMCK"
-//     8  u32      version (5; 4 had no bodies, and is still read as a state without
+//     8  u32      version (6; 5 had no bonds, and is still read as a state without
+//                  bonds; 4 had no bodies, and is still read as a state without
 //                  bodies; 3 stored six edge slips per pair, 2 also no energy sums,
 //                  1 also no settings)
 //    12  u32      precision of the solver: 0 double, 1 float
@@ -21,6 +22,8 @@
 //            energy budget's cumulative per-particle sums, SolverState::energy)
 //     u64 b, the number of bodies of several triangles (0 without; absent in version 4)
 //     f64[b] body x, y, theta, vx, vy, omega (six arrays: SolverState::body_x, ...)
+//     u64 c, the number of cohesive bonds (0 without; absent before version 6)
+//     f64[2c] their points' damage (bond-major), f64[c] the energy each released
 //     u64 m, the number of pairs with contact history
 //     i32[m] emitters, i32[m] partners, f64[2m] tangential spring states u = √k_t·ξ
 //            (x, y per pair, pair-major)
@@ -29,7 +32,7 @@
 // to size anything; the payload size is checked against the file size for the same
 // reason. Bump the version on any change to this layout (version 1 had no physics
 // settings, version 2 no energy arrays, version 3 six edge slips per pair, version 4 no
-// bodies).
+// bodies, version 5 no bonds).
 #include "tridem/solver_state.hpp"
 
 #include <cstddef>
@@ -38,11 +41,15 @@
 namespace tridem::checkpoint_format {
 
 inline constexpr char kMagic[8] = {'T', 'R', 'I', 'D', 'E', 'M', 'C', 'K'};
-inline constexpr std::uint32_t kVersion = 5;
+inline constexpr std::uint32_t kVersion = 6;
 /// The oldest version read: 4, the same layout without the bodies' block.
 inline constexpr std::uint32_t kOldestReadVersion = 4;
 /// The first version with the bodies' block.
 inline constexpr std::uint32_t kBodiesVersion = 5;
+/// The first version with the bonds' block.
+inline constexpr std::uint32_t kBondsVersion = 6;
+/// Bytes of one bond's state: its points' damage and its released energy.
+inline constexpr std::size_t kBytesPerBond = 8 * (SolverState::kBondStatePoints + 1);
 inline constexpr std::size_t kHeaderSize = 48;
 inline constexpr std::size_t kHeaderCrcOffset = 44;
 inline constexpr std::size_t kPayloadCrcOffset = 40;
@@ -50,21 +57,22 @@ inline constexpr std::size_t kPayloadCrcOffset = 40;
 /// energy in this version. A field added to the State or Sum lists changes the layout:
 /// bump kVersion, and keep reading the older version.
 inline constexpr std::size_t kArraysPerParticle = SolverState::kArraysPerParticle;
-static_assert(kVersion != 5 || kArraysPerParticle == 10,
+static_assert(kVersion != 6 || kArraysPerParticle == 10,
               "the checkpointed fields changed: bump the checkpoint format version");
 inline constexpr std::size_t kBytesPerParticle = 8 * kArraysPerParticle;
 /// Per-body arrays: SolverState's body fields (body_fields.hpp), six of state.
 inline constexpr std::size_t kArraysPerBody = SolverState::kArraysPerBody;
-static_assert(kVersion != 5 || kArraysPerBody == 6,
+static_assert(kVersion != 6 || kArraysPerBody == 6,
               "the checkpointed body fields changed: bump the checkpoint format version");
 inline constexpr std::size_t kBytesPerBody = 8 * kArraysPerBody;
 /// The least bytes of a payload of n particles in `version`: step, time, the settings
-/// count, the per-particle arrays, b (from version 5), m.
+/// count, the per-particle arrays, b (from version 5), c (from version 6), m.
 inline constexpr std::size_t fixed_payload_size(std::uint64_t n, std::uint32_t version = kVersion) {
-  return 8 + 8 + 4 + kBytesPerParticle * n + (version >= kBodiesVersion ? 8 : 0) + 8;
+  return 8 + 8 + 4 + kBytesPerParticle * n + (version >= kBodiesVersion ? 8 : 0) +
+         (version >= kBondsVersion ? 8 : 0) + 8;
 }
 inline constexpr std::size_t kBytesPerPair = SolverState::kBytesPerPair;
-static_assert(kVersion != 5 || kBytesPerPair == 4 + 4 + 2 * 8,
+static_assert(kVersion != 6 || kBytesPerPair == 4 + 4 + 2 * 8,
               "the contact history's fields changed: bump the checkpoint format version");
 
 }  // namespace tridem::checkpoint_format

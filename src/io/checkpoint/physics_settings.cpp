@@ -8,6 +8,7 @@
 #include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
+#include <utility>
 
 namespace tridem {
 
@@ -32,6 +33,15 @@ std::vector<PhysicsSetting> physics_settings(const Scene& scene, double dt) {
     // The restitution the material gives, whether the scene says `restitution` or the
     // legacy `damping` (the contact law is built from this value alone).
     out.push_back({key + "restitution", fmt::format("{}", material_restitution(m))});
+    // Bond properties only where given: the settings of every other scene are unchanged.
+    if (m.bondable())
+      for (const auto& [name, value] : {std::pair{"young_modulus", m.young_modulus},
+                                        {"tensile_strength", m.tensile_strength},
+                                        {"shear_strength", m.shear_strength},
+                                        {"friction_angle", m.friction_angle},
+                                        {"fracture_energy", m.fracture_energy},
+                                        {"shear_fracture_energy", m.shear_fracture_energy}})
+        out.push_back({key + name, fmt::format("{}", value)});
   }
   return out;
 }

@@ -70,6 +70,14 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
     for (const ProgramKnot& k : scene.program_knots)
       for (double v : {k.time, k.velocity.x, k.velocity.y, k.angular_velocity}) h.add(v);
   }
+  // Bonds likewise (only when there are some): other bonds are another scene.
+  if (!scene.bonds.empty()) {
+    h.add(std::uint64_t{scene.bonds.size()});
+    for (const BondSpec& b : scene.bonds) {
+      h.add(std::uint64_t{b.a});
+      h.add(std::uint64_t{b.b});
+    }
+  }
   return h.value();
 }
 

@@ -5,7 +5,8 @@ namespace tridem {
 
 double EnergyRow::total() const {
   return kinetic + potential + budget.elastic + budget.dissipated_damping +
-         budget.dissipated_friction + budget.dissipated_local - budget.wall_work;
+         budget.dissipated_friction + budget.dissipated_local + budget.dissipated_fracture -
+         budget.wall_work;
 }
 
 EnergyRow compute_energy(const Snapshot& s, Vec2d gravity, const EnergyBudget& budget) {

@@ -8,9 +8,9 @@ void write_energy_row(OutFile& out, const EnergyRow& r) {
   out.print("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},", r.step, r.time, r.kinetic,
             r.momentum_x, r.momentum_y, r.angular_momentum);
   const EnergyBudget& b = r.budget;
-  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", r.potential, b.elastic,
-            b.dissipated_damping, b.dissipated_friction, b.dissipated_local, b.wall_work,
-            r.total());
+  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", r.potential,
+            b.elastic, b.dissipated_damping, b.dissipated_friction, b.dissipated_local, b.wall_work,
+            r.total(), b.dissipated_fracture);
 }
 
 void write_wall_rows(OutFile& out, const Snapshot& s) {

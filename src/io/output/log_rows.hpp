@@ -10,12 +10,18 @@ namespace tridem::io {
 
 inline constexpr std::string_view kEnergyHeader =
     "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
-    "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total\n";
+    "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total,dissipated_fracture\n";
 inline constexpr std::string_view kWallsHeader = "step,time,id,fx,fy,torque\n";
+inline constexpr std::string_view kBondsHeader =
+    "step,time,intact,damaged,broken,fracture_energy\n";
 
 void write_energy_row(OutFile&, const EnergyRow&);
 
 /// One row per fixed or prescribed particle: the contact force and torque on it.
 void write_wall_rows(OutFile&, const Snapshot&);
+
+/// bonds.csv's row: the bonds intact (no damage), damaged (some, not broken) and broken,
+/// and the energy their damage released since step 0 (EnergyBudget::dissipated_fracture).
+void write_bond_row(OutFile&, const Snapshot&, double fracture_energy);
 
 }  // namespace tridem::io

@@ -34,8 +34,12 @@ struct StepFileFormat {
 class StepFileWriter final : public OutputWriter {
  public:
   using Write = std::function<void(const fs::path&, const Snapshot&)>;
-  StepFileWriter(fs::path dir, StepFileFormat format, Write write)
-      : dir_(std::move(dir)), format_(format), write_(std::move(write)) {
+  /// `only_with_bonds`: frames of scenes without cohesive bonds write no file.
+  StepFileWriter(fs::path dir, StepFileFormat format, Write write, bool only_with_bonds = false)
+      : dir_(std::move(dir)),
+        format_(format),
+        write_(std::move(write)),
+        only_with_bonds_(only_with_bonds) {
     if (!format_.collection.empty()) collection_.emplace(dir_ / format_.collection);
   }
 
@@ -54,7 +58,7 @@ class StepFileWriter final : public OutputWriter {
   }
 
   void frame(const Snapshot& s) override {
-    if (!write_) return;
+    if (!write_ || (only_with_bonds_ && s.bond_a.empty())) return;
     // Made on first use so that a run without frames leaves no empty folders.
     if (!folder_made_) make_directory(dir_ / format_.files.folder);
     folder_made_ = true;
@@ -68,6 +72,7 @@ class StepFileWriter final : public OutputWriter {
   StepFileFormat format_;
   Write write_;
   std::optional<PvdCollection> collection_;
+  bool only_with_bonds_;
   bool folder_made_ = false;
 };
 
@@ -76,13 +81,23 @@ class StepFileWriter final : public OutputWriter {
 class CsvLog final : public OutputWriter {
  public:
   using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
-  CsvLog(fs::path file, std::string_view header, Rows rows)
-      : file_(std::move(file)), header_(header), rows_(std::move(rows)) {}
+  /// `only_with_bonds`: the file is made at the first row of a scene with cohesive bonds
+  /// (bonds.csv), and never for other scenes.
+  CsvLog(fs::path file, std::string_view header, Rows rows, bool only_with_bonds = false)
+      : file_(std::move(file)),
+        header_(header),
+        rows_(std::move(rows)),
+        only_with_bonds_(only_with_bonds) {}
 
   void start(const std::optional<ResumePoint>& resume) override {
-    if (resume) {
+    std::error_code ec;
+    if (resume && (!only_with_bonds_ || fs::exists(file_, ec))) {
       trim_log(file_, header_, resume->step);
       out_.emplace(file_, OutFile::Mode::Append);
+      return;
+    }
+    if (only_with_bonds_) {
+      fs::remove(file_, ec);
       return;
     }
     out_.emplace(file_);
@@ -91,6 +106,11 @@ class CsvLog final : public OutputWriter {
   }
 
   void log(const Snapshot& s, const LogInputs& in) override {
+    if (only_with_bonds_ && s.bond_a.empty()) return;
+    if (!out_) {
+      out_.emplace(file_);
+      out_->write(header_);
+    }
     rows_(*out_, s, in);
     out_->flush();
   }
@@ -99,6 +119,7 @@ class CsvLog final : public OutputWriter {
   fs::path file_;
   std::string_view header_;
   Rows rows_;
+  bool only_with_bonds_;
   std::optional<OutFile> out_;
 };
 
@@ -144,6 +165,16 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   w.push_back(std::make_unique<CsvLog>(
       dir / "walls.csv", kWallsHeader,
       [](OutFile& out, const Snapshot& s, const LogInputs&) { write_wall_rows(out, s); }));
+  // Cohesive bonds (docs/fracture.md): only for scenes that have some.
+  w.push_back(std::make_unique<StepFileWriter>(
+      dir, StepFileFormat{kBondFiles, ".vtp", "bonds.pvd", {}},
+      [encoding](const fs::path& f, const Snapshot& s) { write_bonds_vtp(f, s, encoding); }, true));
+  w.push_back(std::make_unique<CsvLog>(
+      dir / "bonds.csv", kBondsHeader,
+      [](OutFile& out, const Snapshot& s, const LogInputs& in) {
+        write_bond_row(out, s, in.budget.dissipated_fracture);
+      },
+      true));
   w.push_back(std::make_unique<FinalCsv>(dir / "final.csv", write_final_csv));
   w.push_back(std::make_unique<FinalCsv>(dir / "bodies.csv", write_bodies_csv));
   return w;

@@ -32,5 +32,6 @@ struct StepFiles {
 
 inline constexpr StepFiles kFrameFiles{"frames", "frame_"};
 inline constexpr StepFiles kContactFiles{"contacts", "contacts_"};
+inline constexpr StepFiles kBondFiles{"bonds", "bonds_"};
 
 }  // namespace tridem::io

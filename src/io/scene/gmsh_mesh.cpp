@@ -11,6 +11,7 @@
 #include <cmath>
 #include <exception>
 #include <unordered_map>
+#include <vector>
 
 namespace tridem::scene_detail {
 namespace {
@@ -114,6 +115,50 @@ ImportedParticles read_open_mesh(const std::string& name,
 }
 
 }  // namespace
+
+ImportedParticles mesh_region(const MeshRegion& region, const std::string& what) {
+  try {
+    GmshSession session;
+    gmsh::option::setNumber("General.NumThreads", 1);
+    gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay: unstructured, regular
+    gmsh::option::setNumber("Mesh.MeshSizeMin", region.size);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", region.size);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::model::add("tridem");
+    namespace geo = gmsh::model::geo;
+    if (region.kind == MeshRegion::Kind::Disc) {
+      // Four quarter arcs, so that nodes sit exactly at the disc's extremes in x and y:
+      // where a platen of a Brazilian test touches it.
+      const double cx = region.center.x, cy = region.center.y, r = region.radius;
+      const int c = geo::addPoint(cx, cy, 0);
+      const int p[4] = {geo::addPoint(cx + r, cy, 0), geo::addPoint(cx, cy + r, 0),
+                        geo::addPoint(cx - r, cy, 0), geo::addPoint(cx, cy - r, 0)};
+      std::vector<int> arcs;
+      for (int k = 0; k < 4; ++k) arcs.push_back(geo::addCircleArc(p[k], c, p[(k + 1) % 4]));
+      geo::addPlaneSurface({geo::addCurveLoop(arcs)});
+    } else {
+      const double x0 = region.lo.x, y0 = region.lo.y, x1 = region.hi.x, y1 = region.hi.y;
+      const int p[4] = {geo::addPoint(x0, y0, 0), geo::addPoint(x1, y0, 0),
+                        geo::addPoint(x1, y1, 0), geo::addPoint(x0, y1, 0)};
+      std::vector<int> sides;
+      for (int k = 0; k < 4; ++k) sides.push_back(geo::addLine(p[k], p[(k + 1) % 4]));
+      geo::addPlaneSurface({geo::addCurveLoop(sides)});
+    }
+    geo::synchronize();
+    gmsh::model::mesh::generate(2);
+    return read_open_mesh(what, {});
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SceneError(fmt::format("{}: Gmsh cannot mesh it: {}", what, e.what()));
+  } catch (const std::string& e) {
+    throw SceneError(fmt::format("{}: Gmsh cannot mesh it: {}", what, e));
+  } catch (...) {
+    throw SceneError(fmt::format("{}: Gmsh cannot mesh it", what));
+  }
+}
 
 ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
                                  const std::vector<std::string>& body_groups) {

@@ -14,4 +14,12 @@ ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
                                file.string()));
 }
 
+ImportedParticles mesh_region(const MeshRegion& /*region*/, const std::string& what) {
+  throw SceneError(fmt::format("{}: this build of tridem has no Gmsh to mesh it (configured "
+                               "with -DTRIDEM_WITH_GMSH=OFF); rebuild with it ON (libgmsh-dev), "
+                               "or import its triangles from a CSV with [[import]] (without "
+                               "bonds)",
+                               what));
+}
+
 }  // namespace tridem::scene_detail

@@ -33,4 +33,18 @@ ImportedParticles read_particle_csv(const std::filesystem::path& file);
 ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
                                  const std::vector<std::string>& body_groups);
 
+/// A region for Gmsh to mesh ([[mesh]] kind = "disc" or "rectangle").
+struct MeshRegion {
+  enum class Kind { Disc, Rectangle } kind = Kind::Disc;
+  Vec2d center{};     ///< disc
+  double radius = 0;  ///< disc
+  Vec2d lo{}, hi{};   ///< rectangle's corners
+  double size = 0;    ///< target element size, m
+};
+
+/// The unstructured 3-node triangles Gmsh makes of the region (Frontal-Delaunay, one
+/// thread, so the same mesh each time). Throws SceneError naming `what` (the block) when
+/// Gmsh fails, or when this build has no Gmsh (TRIDEM_WITH_GMSH=OFF).
+ImportedParticles mesh_region(const MeshRegion& region, const std::string& what);
+
 }  // namespace tridem::scene_detail

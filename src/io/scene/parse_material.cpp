@@ -4,6 +4,47 @@
 #include <fmt/format.h>
 
 namespace tridem::scene_detail {
+namespace {
+
+// The cohesive bond keys (docs/fracture.md): all or none, so that a bonded [[mesh]] never
+// runs on a default strength.
+void read_bond_properties(TableReader& r, Material& m) {
+  struct Key {
+    const char* name;
+    double* value;
+    const char* unit;
+    bool may_be_zero;
+  };
+  const Key keys[] = {{"young_modulus", &m.young_modulus, "Pa", false},
+                      {"tensile_strength", &m.tensile_strength, "Pa", false},
+                      {"shear_strength", &m.shear_strength, "Pa", false},
+                      {"friction_angle", &m.friction_angle, "degrees", true},
+                      {"fracture_energy", &m.fracture_energy, "J/m^2", false},
+                      {"shear_fracture_energy", &m.shear_fracture_energy, "J/m^2", false}};
+  const char* given = nullptr;
+  const char* missing = nullptr;
+  for (const Key& k : keys) {
+    const std::optional<double> v = r.real(k.name);
+    if (!v) {
+      if (!missing) missing = k.name;
+      continue;
+    }
+    if (!given) given = k.name;
+    if (!(*v > 0 || (k.may_be_zero && *v == 0)))
+      r.fail(k.name,
+             fmt::format("must be {} ({}), got {}", k.may_be_zero ? ">= 0" : "> 0", k.unit, *v));
+    *k.value = *v;
+  }
+  if (given && missing)
+    r.fail(given, fmt::format("a bonded material needs all of young_modulus, tensile_strength, "
+                              "shear_strength, friction_angle, fracture_energy and "
+                              "shear_fracture_energy; {} is missing",
+                              missing));
+  if (m.friction_angle >= 90)
+    r.fail("friction_angle", fmt::format("must be below 90 degrees, got {}", m.friction_angle));
+}
+
+}  // namespace
 
 Material parse_material(const toml::table& table, const std::string& source, std::size_t number,
                         const std::vector<Material>& earlier) {
@@ -34,6 +75,7 @@ Material parse_material(const toml::table& table, const std::string& source, std
   m.tangential_penalty = r.real("tangential_penalty").value_or(0.1 * m.penalty);
   if (!(m.tangential_penalty > 0))
     r.fail("tangential_penalty", fmt::format("must be > 0 (Pa), got {}", m.tangential_penalty));
+  read_bond_properties(r, m);
   r.reject_unknown_keys();
   return m;
 }

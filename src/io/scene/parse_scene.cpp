@@ -51,7 +51,7 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
   static constexpr std::string_view kKnown[] = {"simulation", "output",   "material", "triangle",
-                                                "body",       "generate", "import"};
+                                                "body",       "generate", "import",   "mesh"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -62,7 +62,7 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
   if (first)
     throw SceneError(
         fmt::format("{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]])",
+                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]], [[mesh]])",
                     where(source, first->source()), first->str()));
 }
 
@@ -107,10 +107,12 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   const auto bodies = blocks(root, "body", source);
   const auto generators = blocks(root, "generate", source);
   const auto imports = blocks(root, "import", source);
+  const auto meshes = blocks(root, "mesh", source);
   struct Block {
     const toml::table* table;
     bool second_kind;    // [[body]] among the explicit ones, [[import]] among the rest
     std::size_t number;  // 1-based among its kind
+    bool mesh = false;   // [[mesh]] among the rest
   };
   auto in_file_order = [](std::vector<Block> list) {
     std::stable_sort(list.begin(), list.end(), [](const Block& a, const Block& b) {
@@ -126,6 +128,8 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   for (std::size_t i = 0; i < generators.size(); ++i)
     made_blocks.push_back({generators[i], false, i + 1});
   for (std::size_t i = 0; i < imports.size(); ++i) made_blocks.push_back({imports[i], true, i + 1});
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    made_blocks.push_back({meshes[i], false, i + 1, true});
   // Bodies are kept for every scene while reading (a lone triangle is a body of one) and
   // dropped at the end when none has several members and no [[body]] was written.
   scene.triangles.reserve(triangles.size());
@@ -151,9 +155,12 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   }
   for (const Block& e : in_file_order(std::move(made_blocks))) {
     const std::size_t first = scene.triangles.size();
-    const char* section = e.second_kind ? "[[import]]" : "[[generate]]";
+    const char* section = e.mesh ? "[[mesh]]" : e.second_kind ? "[[import]]" : "[[generate]]";
     bool keep_overlaps = false;
-    if (e.second_kind)
+    if (e.mesh)
+      scene_detail::parse_mesh(*e.table, source, e.number, scene.materials, scene.triangles,
+                               scene.bodies, scene.bonds);
+    else if (e.second_kind)
       keep_overlaps = scene_detail::parse_import(*e.table, source, e.number, scene.materials,
                                                  scene.triangles, scene.bodies);
     else

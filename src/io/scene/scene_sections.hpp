@@ -71,6 +71,18 @@ bool parse_import(const toml::table& table, const std::string& source, std::size
                   const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
                   std::vector<BodySpec>& bodies);
 
+/// One [[mesh]] block: a disc or rectangle meshed by Gmsh, or a 2D .msh file, appended like
+/// parse_generate's (one body per triangle); bonded = true appends to `bonds` a bond for
+/// every two of its triangles that share an edge.
+void parse_mesh(const toml::table& table, const std::string& source, std::size_t number,
+                const std::vector<Material>& materials, std::vector<TriangleSpec>& out,
+                std::vector<BodySpec>& bodies, std::vector<BondSpec>& bonds);
+
+/// The bonds of triangles [first, end) of `triangles` that share an edge (the same two
+/// end points exactly), sorted by (a, b).
+std::vector<BondSpec> shared_edge_bonds(const std::vector<TriangleSpec>& triangles,
+                                        std::size_t first);
+
 /// Where each particle id of a scene file came from, so that a refusal about a pair of
 /// particles (an initial overlap) says which blocks to edit.
 struct Provenance {
@@ -81,7 +93,7 @@ struct Provenance {
     std::size_t first = 0, count = 0;  ///< ids [first, first + count)
     std::size_t number = 0;            ///< 1-based among the blocks of its section
     std::string where;
-    std::string section = "[[generate]]";  ///< or "[[import]]"
+    std::string section = "[[generate]]";  ///< or "[[import]]", "[[mesh]]"
     bool keep_overlaps = false;            ///< an [[import]] with keep_overlaps = true
   };
   std::vector<Generated> generators;

@@ -92,6 +92,36 @@ void check_materials(const Scene& scene, const Refuser& refuse) {
   }
 }
 
+// Bonds (bonded [[mesh]]es, or a scene built in code): two distinct lone free triangles of
+// a bondable material, ascending, sharing the bond's edge.
+void check_bonds(const Scene& scene, const Refuser& refuse) {
+  const std::size_t n = scene.triangles.size();
+  for (std::size_t k = 0; k < scene.bonds.size(); ++k) {
+    const BondSpec& bond = scene.bonds[k];
+    if (!(bond.a < bond.b && bond.b < n))
+      refuse(fmt::format("bond #{}: its triangles {} and {} must be ascending ids below {}", k,
+                         bond.a, bond.b, n));
+    if (k > 0 && !(scene.bonds[k - 1].a < bond.a ||
+                   (scene.bonds[k - 1].a == bond.a && scene.bonds[k - 1].b < bond.b)))
+      refuse(fmt::format("bond #{}: bonds must be sorted by (a, b) without repeats", k));
+    for (std::size_t id : {bond.a, bond.b}) {
+      const TriangleSpec& t = scene.triangles[id];
+      const Material& m = scene.materials[static_cast<std::size_t>(t.material)];
+      if (!m.bondable())
+        refuse(fmt::format("bond #{}: particle id {} is of material \"{}\", which has no bond "
+                           "properties (young_modulus, tensile_strength, ...)",
+                           k, id, m.name));
+      if (t.motion != Motion::Free)
+        refuse(fmt::format("bond #{}: particle id {} is fixed or prescribed; bonds join free "
+                           "triangles",
+                           k, id));
+    }
+    if (scene.has_bodies())
+      refuse("bonds and bodies of several triangles in one scene are not supported yet");
+    if (!(norm(bond.q - bond.p) > 0)) refuse(fmt::format("bond #{}: its edge has zero length", k));
+  }
+}
+
 void check_triangles(const Scene& scene, const Refuser& refuse) {
   if (scene.triangles.empty()) refuse("the scene has no triangles");
   for (std::size_t id = 0; id < scene.triangles.size(); ++id)
@@ -171,6 +201,7 @@ void validate_scene(const Scene& scene, const Provenance* provenance) {
   check_settings(scene, refuse);
   check_materials(scene, refuse);
   check_triangles(scene, refuse);
+  check_bonds(scene, refuse);
   check_overlaps(scene, refuse, provenance);
 }
 

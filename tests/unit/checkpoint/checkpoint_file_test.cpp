@@ -44,22 +44,27 @@ Checkpoint sample_checkpoint() {
   return c;
 }
 
-/// `c` (without bodies) as version 4 wrote it: the same layout without the bodies' count.
-std::vector<std::uint8_t> version_4_bytes(const Checkpoint& c) {
+/// `c` (without bonds) as `version` wrote it: 5, the same layout without the bonds' count;
+/// 4 (`c` without bodies too), without the bodies' count either.
+std::vector<std::uint8_t> older_bytes(const Checkpoint& c, std::uint32_t version) {
   namespace layout = checkpoint_format;
   auto bytes = encode_checkpoint(c);
   std::size_t settings = 4;
   for (const PhysicsSetting& p : c.meta.settings) settings += 8 + p.key.size() + p.value.size();
   const std::size_t body_count_at =
       layout::kHeaderSize + 16 + settings + layout::kBytesPerParticle * c.state.size();
-  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at),
-              bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at + 8));
+  const std::size_t bond_count_at = body_count_at + 8 + layout::kBytesPerBody * c.state.bodies();
+  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at),
+              bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at + 8));
+  if (version == 4)
+    bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at),
+                bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at + 8));
   auto put_u32 = [&](std::size_t at, std::uint32_t v) {
     for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
   };
   const std::uint64_t payload = bytes.size() - layout::kHeaderSize;
   for (int k = 0; k < 8; ++k) bytes[32 + k] = static_cast<std::uint8_t>(payload >> (8 * k));
-  put_u32(8, 4);
+  put_u32(8, version);
   put_u32(layout::kPayloadCrcOffset, io::crc32(std::span(bytes).subspan(layout::kHeaderSize)));
   put_u32(layout::kHeaderCrcOffset, io::crc32(std::span(bytes).first(layout::kHeaderCrcOffset)));
   return bytes;
@@ -115,8 +120,8 @@ TEST(CheckpointFile, BodilessStateHasNoBodies) {
 TEST(CheckpointFile, Version4IsReadAsAStateWithoutBodies) {
   Checkpoint c = sample_checkpoint();
   SolverState::for_each_body_column([&](auto field) { c.state.column(field).clear(); });
-  const auto v4 = version_4_bytes(c);
-  EXPECT_EQ(v4.size() + 8, encode_checkpoint(c).size());
+  const auto v4 = older_bytes(c, 4);
+  EXPECT_EQ(v4.size() + 16, encode_checkpoint(c).size());
   const Checkpoint back = decode_checkpoint(v4, "old.ckpt");
   EXPECT_EQ(back.state.bodies(), 0u);
   EXPECT_EQ(back.state.step, c.state.step);
@@ -128,6 +133,32 @@ TEST(CheckpointFile, Version4IsReadAsAStateWithoutBodies) {
   EXPECT_EQ(back.meta.settings, c.meta.settings);
   for (std::size_t size = 0; size < v4.size(); ++size)
     expect_refused(std::span(v4).first(size), "truncated");
+}
+
+TEST(CheckpointFile, Version5IsReadAsAStateWithoutBonds) {
+  const Checkpoint c = sample_checkpoint();
+  const auto v5 = older_bytes(c, 5);
+  EXPECT_EQ(v5.size() + 8, encode_checkpoint(c).size());
+  const Checkpoint back = decode_checkpoint(v5, "old.ckpt");
+  EXPECT_EQ(back.state.bonds(), 0u);
+  EXPECT_TRUE(back.state.bond_damage.empty());
+  EXPECT_EQ(back.state.body_omega, c.state.body_omega);
+  EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
+  for (std::size_t size = 0; size < v5.size(); ++size)
+    expect_refused(std::span(v5).first(size), "truncated");
+}
+
+TEST(CheckpointFile, BondsRoundTripAndBadOnesAreRefused) {
+  Checkpoint c = sample_checkpoint();
+  c.state.bond_damage = {0, 0.5, 1, 1, 1.0 / 3, 0};
+  c.state.bond_dissipated = {0, 0.25, 1e-300};
+  const Checkpoint back = decode_checkpoint(encode_checkpoint(c), "mem");
+  EXPECT_EQ(back.state.bond_damage, c.state.bond_damage);
+  EXPECT_EQ(back.state.bond_dissipated, c.state.bond_dissipated);
+  c.state.bond_damage[1] = 2;  // damage above 1
+  expect_refused(encode_checkpoint(c), "damage");
+  c.state.bond_damage.pop_back();  // two values per bond: the bytes no longer add up
+  expect_refused(encode_checkpoint(c), "corrupt");
 }
 
 // A body count that the bytes left cannot hold is refused before anything is sized by it.
@@ -187,16 +218,16 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
   // Versions 1 (before the physics settings), 2 (before the energy sums) and 3 (six edge
-  // slips per pair, before the contact of issue 10), and the next one (6), with a
+  // slips per pair, before the contact of issue 10), and the next one (7), with a
   // consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  for (const int version : {1, 2, 3, 6}) {
+  for (const int version : {1, 2, 3, 7}) {
     bytes[8] = static_cast<std::uint8_t>(version);
     const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
     for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
     expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
-                              "; this tridem reads versions 4 to 5");
+                              "; this tridem reads versions 4 to 6");
   }
 }
 

@@ -19,13 +19,13 @@ TEST(LogFiles, EnergyCsvHasOneRowPerLog) {
   const auto lines = test::read_lines(tmp.path() / "energy.csv");
   ASSERT_EQ(lines.size(), 3u);
   // The first six columns are the contract of the first versions; the budget follows.
-  EXPECT_EQ(lines[0],
-            "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
-            "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total");
+  EXPECT_EQ(lines[0], "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
+                      "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total,"
+                      "dissipated_fracture");
   const EnergyRow e = compute_energy(s);
   EXPECT_EQ(test::numbers(lines[2]),
             (std::vector<double>{double(s.step), s.time, e.kinetic, e.momentum_x, e.momentum_y,
-                                 e.angular_momentum, 0, 0, 0, 0, 0, 0, e.kinetic}));
+                                 e.angular_momentum, 0, 0, 0, 0, 0, 0, e.kinetic, 0}));
   EXPECT_EQ(test::numbers(lines[1])[0], 1200);
 }
 
@@ -48,7 +48,7 @@ TEST(LogFiles, EnergyCsvWritesTheBudgetAfterTheOldColumns) {
   EXPECT_EQ(test::numbers(lines[1]),
             (std::vector<double>{double(s.step), s.time, e.kinetic, e.momentum_x, e.momentum_y,
                                  e.angular_momentum, e.potential, 1.5, 0.25, 0.125, 0.0625, 2.0,
-                                 e.total()}));
+                                 e.total(), 0.0}));
 }
 
 TEST(LogFiles, WallsCsvHasRowsOnlyForNonFreeParticles) {

@@ -1,0 +1,176 @@
+// [[mesh]] and the bond keys of [[material]] (issue 14): a disc and a rectangle meshed by
+// Gmsh, a .msh file, the bonds of shared edges, and the refusals with their messages.
+#include "io/scene/scene_sections.hpp"
+#include "scene_refusal.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace tridem {
+namespace {
+
+using test::expect_refused;
+
+#ifdef TRIDEM_HAS_GMSH
+constexpr bool kHasGmsh = true;
+#else
+constexpr bool kHasGmsh = false;
+#endif
+
+constexpr std::string_view kGranite = "[simulation]\n"
+                                      "steps = 5\n"
+                                      "[[material]]\n"
+                                      "name = \"granite\"\n"
+                                      "density = 2650\n"
+                                      "penalty = 5e10\n"
+                                      "friction = 0.6\n"
+                                      "young_modulus = 40e9\n"
+                                      "tensile_strength = 8e6\n"
+                                      "shear_strength = 25e6\n"
+                                      "friction_angle = 35\n"
+                                      "fracture_energy = 30\n"
+                                      "shear_fracture_energy = 150\n";
+
+std::string with_mesh(std::string_view mesh) {
+  return std::string(kGranite) + "[[mesh]]\n" + std::string(mesh);
+}
+
+double area_of(const TriangleSpec& t) {
+  return 0.5 * cross(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0]);
+}
+
+TEST(SceneMesh, BondKeysOfAMaterial) {
+  const Scene s = parse_scene(std::string(kGranite) + "[[triangle]]\nmaterial = \"granite\"\n"
+                                                      "vertices = [[0, 0], [1, 0], [0, 1]]\n",
+                              "s.toml");
+  const Material& m = s.materials[0];
+  EXPECT_TRUE(m.bondable());
+  EXPECT_EQ(m.young_modulus, 40e9);
+  EXPECT_EQ(m.tensile_strength, 8e6);
+  EXPECT_EQ(m.shear_strength, 25e6);
+  EXPECT_EQ(m.friction_angle, 35);
+  EXPECT_EQ(m.fracture_energy, 30);
+  EXPECT_EQ(m.shear_fracture_energy, 150);
+  EXPECT_TRUE(s.bonds.empty());
+}
+
+TEST(SceneMesh, PartialBondKeysAreRefused) {
+  expect_refused(std::string(test::kSceneHead) + "young_modulus = 1e9\n" +
+                     std::string(test::kGoodTriangle),
+                 {"[[material]] #1", "young_modulus", "tensile_strength is missing"});
+  std::string bad(kGranite);
+  bad.replace(bad.find("fracture_energy = 30"), 20, "fracture_energy = -1");
+  expect_refused(bad + std::string(test::kGoodTriangle), {"fracture_energy", "must be > 0"});
+}
+
+TEST(SceneMesh, DiscIsMeshedAndBonded) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
+  const Scene s = parse_scene(with_mesh("kind = \"disc\"\ncenter = [0.1, 0.2]\nradius = 0.025\n"
+                                        "size = 0.005\nmaterial = \"granite\"\nbonded = true\n"),
+                              "s.toml");
+  ASSERT_GT(s.triangles.size(), 50u);
+  double area = 0;
+  for (const TriangleSpec& t : s.triangles) {
+    EXPECT_GT(area_of(t), 0);  // counter-clockwise
+    area += area_of(t);
+    for (const Vec2d& v : t.vertices) EXPECT_LE(norm(v - Vec2d{0.1, 0.2}), 0.025 * (1 + 1e-9));
+  }
+  // The polygon inscribed in the circle: a little less than pi r^2.
+  EXPECT_NEAR(area, M_PI * 0.025 * 0.025, 0.01 * M_PI * 0.025 * 0.025);
+  // Euler: a triangulated disc has (3 T - boundary edges) / 2 interior edges; every
+  // interior edge is one bond, each triangle has at most three.
+  const std::size_t t = s.triangles.size();
+  ASSERT_GT(s.bonds.size(), t);
+  EXPECT_LT(s.bonds.size(), 3 * t / 2);
+  std::vector<int> per(t, 0);
+  std::set<std::pair<std::size_t, std::size_t>> unique;
+  for (const BondSpec& b : s.bonds) {
+    EXPECT_LT(b.a, b.b);
+    ++per[b.a];
+    ++per[b.b];
+    unique.insert({b.a, b.b});
+    EXPECT_GT(norm(b.q - b.p), 0.2 * 0.005);
+  }
+  EXPECT_EQ(unique.size(), s.bonds.size());
+  for (int c : per) EXPECT_LE(c, 3);
+  const std::size_t boundary = 3 * t - 2 * s.bonds.size();
+  // The boundary's edges are about the circumference over the size.
+  EXPECT_NEAR(static_cast<double>(boundary), 2 * M_PI * 0.025 / 0.005, 8);
+}
+
+TEST(SceneMesh, RectangleWithoutBondsIsLooseTriangles) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
+  const Scene s = parse_scene(with_mesh("kind = \"rectangle\"\nregion = [[0, 0], [0.04, 0.02]]\n"
+                                        "size = 0.004\nmaterial = \"granite\"\n"),
+                              "s.toml");
+  double area = 0;
+  for (const TriangleSpec& t : s.triangles) area += area_of(t);
+  EXPECT_NEAR(area, 0.04 * 0.02, 1e-12);
+  EXPECT_TRUE(s.bonds.empty());
+  // The same rectangle bonded: the same triangles, now bonded.
+  const Scene b = parse_scene(with_mesh("kind = \"rectangle\"\nregion = [[0, 0], [0.04, 0.02]]\n"
+                                        "size = 0.004\nmaterial = \"granite\"\nbonded = true\n"),
+                              "s.toml");
+  EXPECT_EQ(b.triangles.size(), s.triangles.size());
+  EXPECT_GT(b.bonds.size(), b.triangles.size());
+}
+
+TEST(SceneMesh, MeshFileIsBonded) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
+  const std::string mesh = std::string(TRIDEM_SOURCE_DIR) + "/tests/data/mesh/two_grains.msh";
+  const Scene s = parse_scene(with_mesh("kind = \"file\"\nfile = \"" + mesh +
+                                        "\"\nmaterial = \"granite\"\nbonded = true\n"),
+                              "s.toml");
+  EXPECT_GT(s.triangles.size(), 2u);
+  EXPECT_FALSE(s.bonds.empty());
+  EXPECT_FALSE(s.has_bodies());
+}
+
+TEST(SceneMesh, RefusalsSayWhatToChange) {
+  expect_refused(with_mesh("kind = \"sphere\"\nmaterial = \"granite\"\n"),
+                 {"[[mesh]] #1", "kind", "sphere"});
+  expect_refused(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = -1\nsize = 0.1\n"
+                           "material = \"granite\"\n"),
+                 {"radius", "must be > 0"});
+  expect_refused(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = 1\nsize = 1e-6\n"
+                           "material = \"granite\"\n"),
+                 {"size", "more than the limit"});
+  expect_refused(with_mesh("kind = \"rectangle\"\nregion = [[1, 0], [0, 1]]\nsize = 0.1\n"
+                           "material = \"granite\"\n"),
+                 {"region", "must exceed"});
+  expect_refused(with_mesh("kind = \"file\"\nfile = \"nowhere.msh\"\nmaterial = \"granite\"\n"),
+                 {"[[mesh]] #1", "file"});
+  expect_refused(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = 1\nsize = 0.1\n"
+                           "material = \"granite\"\ncolour = 1\n"),
+                 {"colour"});
+  // Bonded needs the bond keys.
+  expect_refused(std::string(test::kSceneHead) +
+                     "[[mesh]]\nkind = \"disc\"\ncenter = [0, 0]\nradius = 1\nsize = 0.1\n"
+                     "material = \"m\"\nbonded = true\n",
+                 {"bonded", "no bond properties", "young_modulus"});
+}
+
+TEST(SceneMesh, ABuildWithoutGmshRefusesAMesh) {
+  if (kHasGmsh) GTEST_SKIP() << "built with Gmsh";
+  expect_refused(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = 1\nsize = 0.1\n"
+                           "material = \"granite\"\n"),
+                 {"[[mesh]] #1", "-DTRIDEM_WITH_GMSH=OFF"});
+}
+
+TEST(SceneMesh, SharedEdgesBecomeBonds) {
+  // Two triangles of a unit square share its diagonal; a third touches at a vertex only.
+  std::vector<TriangleSpec> t(3);
+  t[0].vertices = {Vec2d{0, 0}, Vec2d{1, 0}, Vec2d{1, 1}};
+  t[1].vertices = {Vec2d{0, 0}, Vec2d{1, 1}, Vec2d{0, 1}};
+  t[2].vertices = {Vec2d{1, 1}, Vec2d{2, 1}, Vec2d{2, 2}};
+  const std::vector<BondSpec> b = scene_detail::shared_edge_bonds(t, 0);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].a, 0u);
+  EXPECT_EQ(b[0].b, 1u);
+}
+
+}  // namespace
+}  // namespace tridem

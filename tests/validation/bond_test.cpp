@@ -1,0 +1,215 @@
+// Cohesive bonds in the CPU solvers (issue 14; docs/fracture.md): two bonded triangles
+// ring without breaking and conserve energy, a fast separation breaks the bond and
+// dissipates G_I times the edge, an intact bond suppresses the pair's contact, OpenMP
+// equals serial bit for bit on a breaking disc, a checkpoint's state continues the run
+// exactly, and the CUDA backend refuses a bonded scene.
+#include "physics/cohesive_bond.hpp"
+#include "support/snapshot_compare.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+#include "tridem/snapshot.hpp"
+#include "tridem/solver.hpp"
+#include "tridem/solver_state.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace tridem {
+namespace {
+
+Material granite() {
+  Material m;
+  m.name = "granite";
+  m.density = 2650;
+  m.penalty = 5e10;
+  m.tangential_penalty = 5e9;
+  m.friction = 0.6;
+  m.restitution = 0.5;
+  m.young_modulus = 40e9;
+  m.tensile_strength = 8e6;
+  m.shear_strength = 25e6;
+  m.friction_angle = 35;
+  m.fracture_energy = 30;
+  m.shear_fracture_energy = 150;
+  return m;
+}
+
+// Two right triangles of legs 1 cm forming a square, bonded along its diagonal; b moves
+// away from a along the diagonal's normal at `speed` (each side half of it).
+Scene bonded_square(double speed) {
+  Scene s;
+  s.source = "bonded square";
+  s.materials = {granite()};
+  const double l = 0.01;
+  TriangleSpec a, b;
+  a.vertices = {Vec2d{0, 0}, Vec2d{l, 0}, Vec2d{l, l}};  // below the diagonal
+  b.vertices = {Vec2d{0, 0}, Vec2d{l, l}, Vec2d{0, l}};  // above
+  const Vec2d n{-std::sqrt(0.5), std::sqrt(0.5)};        // from a to b
+  a.velocity = n * (-0.5 * speed);
+  b.velocity = n * (0.5 * speed);
+  s.triangles = {a, b};
+  s.bonds = {BondSpec{0, 1, Vec2d{0, 0}, Vec2d{l, l}}};
+  s.simulation.steps = 1;
+  s.simulation.safety = 0.2;
+  s.simulation.backend = Backend::Cpu;
+  return s;
+}
+
+double kinetic(const Snapshot& s) {
+  double e = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    e += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]) +
+         0.5 * s.inertia[i] * s.omega[i] * s.omega[i];
+  return e;
+}
+
+TEST(Bonds, SlowSeparationRingsAndKeepsItsEnergy) {
+  // The bond's peak stores f_t^2 / (2k) * L; start with a tenth of it as kinetic energy.
+  const double l = 0.01 * std::sqrt(2.0);
+  const double h = 0.01 * std::sqrt(2.0) / 3;  // centroids' distance across the diagonal
+  const double k = 40e9 / h;
+  const double peak_energy = 8e6 * 8e6 / (2 * k) * l;
+  const double mass = 2650 * 0.5e-4;
+  const double speed = std::sqrt(2 * 0.1 * peak_energy / (0.5 * mass));  // relative speed
+  Scene scene = bonded_square(speed);
+  // A small step: symplectic Euler's energy wobbles by about omega dt / 2.
+  scene.simulation.safety = 0.02;
+  auto solver = make_solver(scene, SolverConfig{});
+  Snapshot snap;
+  solver->snapshot(snap, false);
+  const double e0 = kinetic(snap);
+  double lowest_kinetic = e0;
+  for (int i = 0; i < 400; ++i) {
+    solver->advance(5);
+    solver->snapshot(snap, false);
+    const EnergyBudget b = solver->energy();
+    EXPECT_EQ(b.dissipated_fracture, 0.0);
+    EXPECT_EQ(b.dissipated_friction, 0.0);  // no contact force inside an intact bond
+    EXPECT_NEAR(kinetic(snap) + b.elastic, e0, 0.05 * e0) << "step " << solver->step();
+    lowest_kinetic = std::min(lowest_kinetic, kinetic(snap));
+  }
+  // It turned round: the bond took (almost) all of the kinetic energy at some point.
+  EXPECT_LT(lowest_kinetic, 0.1 * e0);
+  // And they are still together: the gap stays below the elastic limit's.
+  EXPECT_LT(std::abs(snap.y[1] - snap.y[0] - 0.01 / 3), 1e-3 * 0.01);
+}
+
+TEST(Bonds, FastSeparationBreaksAndReleasesTheFractureEnergy) {
+  const double l = 0.01 * std::sqrt(2.0);
+  const double g = 30 * l;            // G_I times the edge, J/m
+  const double mass = 2650 * 0.5e-4;  // each triangle
+  // Kinetic energy 3 G_I L (reduced mass m/2): the bond breaks and they fly apart.
+  const double speed = std::sqrt(2 * 3 * g / (0.5 * mass));
+  Scene scene = bonded_square(speed);
+  scene.simulation.safety = 0.02;
+  auto solver = make_solver(scene, SolverConfig{});
+  solver->advance(4000);
+  const EnergyBudget b = solver->energy();
+  SolverState state;
+  solver->save_state(state);
+  ASSERT_EQ(state.bond_damage.size(), 2u);
+  EXPECT_EQ(state.bond_damage[0], 1.0);
+  EXPECT_EQ(state.bond_damage[1], 1.0);
+  EXPECT_EQ(b.elastic, 0.0);
+  // Mode I: the released energy is G_I per unit length of the edge (the law books it
+  // exactly, whatever the step).
+  EXPECT_NEAR(b.dissipated_fracture, g, 1e-6 * g);
+  // Energy: what the bond released is what the pair's kinetic energy lost.
+  Snapshot snap;
+  solver->snapshot(snap, false);
+  const double e0 = 0.5 * (0.5 * mass) * speed * speed;
+  EXPECT_NEAR(kinetic(snap) + b.dissipated_fracture, e0, 0.01 * e0);
+}
+
+TEST(Bonds, OpenMPEqualsSerialOnABreakingDisc) {
+  const std::string toml =
+      "[simulation]\nsteps = 1\nsafety = 0.2\nbackend = \"cpu\"\n"
+      "[[material]]\nname = \"g\"\ndensity = 2650\npenalty = 5e10\nfriction = 0.6\n"
+      "young_modulus = 40e9\ntensile_strength = 8e6\nshear_strength = 25e6\n"
+      "friction_angle = 35\nfracture_energy = 30\nshear_fracture_energy = 150\n"
+      "[[mesh]]\nkind = \"disc\"\ncenter = [0, 0]\nradius = 0.01\nsize = 0.002\n"
+      "material = \"g\"\nbonded = true\n";
+  Scene scene;
+  try {
+    scene = parse_scene(toml, "disc.toml");
+  } catch (const SceneError& e) {
+    GTEST_SKIP() << e.what();  // a build without Gmsh
+  }
+  // Spin it fast enough to tear the rim off: bonds break while OpenMP runs (from step
+  // 400 or so; 60 of 293 broken at step 500).
+  for (TriangleSpec& t : scene.triangles) {
+    const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
+    t.velocity = Vec2d{-c.y, c.x} * 20000.0;
+    t.angular_velocity = 20000;
+  }
+  SolverConfig serial_config;
+  auto serial = make_solver(scene, serial_config);
+  scene.simulation.backend = Backend::OpenMP;
+  SolverConfig parallel_config;
+  parallel_config.threads = 2;
+  auto parallel = make_solver(scene, parallel_config);
+  serial->advance(500);
+  parallel->advance(500);
+  Snapshot a, b;
+  serial->snapshot(a, true);
+  parallel->snapshot(b, true);
+  test::expect_identical(a, b);
+  const EnergyBudget ea = serial->energy(), eb = parallel->energy();
+  EXPECT_GT(ea.dissipated_fracture, 0.0) << "the test must break bonds";
+  EXPECT_EQ(ea.dissipated_fracture, eb.dissipated_fracture);
+  EXPECT_EQ(ea.elastic, eb.elastic);
+  SolverState sa, sb;
+  serial->save_state(sa);
+  parallel->save_state(sb);
+  EXPECT_EQ(sa.bond_damage, sb.bond_damage);
+  std::size_t broken = 0;
+  for (std::size_t k = 0; k < sa.bonds(); ++k)
+    broken += sa.bond_damage[2 * k] == 1 && sa.bond_damage[2 * k + 1] == 1;
+  EXPECT_GT(broken, 0u);
+  EXPECT_LT(broken, sa.bonds());
+
+  // A checkpoint's state continues the run bit for bit.
+  auto restarted = make_solver(scene, parallel_config);
+  restarted->load_state(sb);
+  restarted->advance(100);
+  parallel->advance(100);
+  Snapshot c, d;
+  restarted->snapshot(c, false);
+  parallel->snapshot(d, false);
+  test::expect_identical(c, d);
+  EXPECT_EQ(restarted->energy().dissipated_fracture, parallel->energy().dissipated_fracture);
+}
+
+TEST(Bonds, StateOfAnotherScenesBondsIsRefused) {
+  auto solver = make_solver(bonded_square(0), SolverConfig{});
+  SolverState state;
+  solver->save_state(state);
+  state.bond_damage.clear();
+  state.bond_dissipated.clear();
+  EXPECT_THROW(solver->load_state(state), Error);
+  solver->save_state(state);
+  state.bond_damage[0] = 1.5;
+  EXPECT_THROW(solver->load_state(state), Error);
+}
+
+TEST(Bonds, CudaRefusesABondedScene) {
+  Scene scene = bonded_square(0);
+  scene.simulation.backend = Backend::Cuda;
+  try {
+    make_solver(scene, SolverConfig{});
+    FAIL() << "a bonded scene ran on CUDA";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("cohesive bonds"), std::string::npos) << m;
+    EXPECT_NE(m.find("cpu"), std::string::npos) << m;
+  }
+  // auto never picks the GPU for it.
+  scene.simulation.backend = Backend::Auto;
+  auto solver = make_solver(scene, SolverConfig{});
+  EXPECT_EQ(solver->description().find("cuda"), std::string::npos) << solver->description();
+}
+
+}  // namespace
+}  // namespace tridem
