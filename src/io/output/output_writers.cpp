@@ -71,13 +71,11 @@ class StepFileWriter final : public OutputWriter {
   bool folder_made_ = false;
 };
 
-/// A CSV log with one block of rows per logging step, flushed each time so that a long
-/// run can be watched and its rows survive a crash.
-class CsvLog final : public OutputWriter {
+/// A CSV file of rows added as the run goes, flushed each time so that a long run can be
+/// watched and its rows survive a crash; a restarted run cuts it back to the checkpoint.
+class CsvRows : public OutputWriter {
  public:
-  using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
-  CsvLog(fs::path file, std::string_view header, Rows rows)
-      : file_(std::move(file)), header_(header), rows_(std::move(rows)) {}
+  CsvRows(fs::path file, std::string_view header) : file_(std::move(file)), header_(header) {}
 
   void start(const std::optional<ResumePoint>& resume) override {
     if (resume) {
@@ -90,16 +88,46 @@ class CsvLog final : public OutputWriter {
     out_->flush();
   }
 
-  void log(const Snapshot& s, const LogInputs& in) override {
-    rows_(*out_, s, in);
-    out_->flush();
-  }
+ protected:
+  OutFile& out() { return *out_; }
 
  private:
   fs::path file_;
   std::string_view header_;
-  Rows rows_;
   std::optional<OutFile> out_;
+};
+
+/// A log with one block of rows per logging step (energy.csv, walls.csv).
+class CsvLog final : public CsvRows {
+ public:
+  using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
+  CsvLog(fs::path file, std::string_view header, Rows rows)
+      : CsvRows(std::move(file), header), rows_(std::move(rows)) {}
+
+  void log(const Snapshot& s, const LogInputs& in) override {
+    rows_(out(), s, in);
+    out().flush();
+  }
+
+ private:
+  Rows rows_;
+};
+
+/// A [[measure]]'s file: a row of measure_region() at each of its steps.
+class MeasureLog final : public CsvRows {
+ public:
+  MeasureLog(const fs::path& dir, MeasureSpec spec, std::int64_t every)
+      : CsvRows(dir / spec.file_name(), kMeasureHeader), spec_(std::move(spec)), every_(every) {}
+
+  void measure(const Snapshot& s, bool last_step) override {
+    if (!measure_due(every_, s.step, last_step)) return;
+    write_measure_row(out(), measure_region(s, spec_.region));
+    out().flush();
+  }
+
+ private:
+  MeasureSpec spec_;
+  std::int64_t every_;
 };
 
 /// A file of the state the run ends (or stops) with: final.csv, bodies.csv.
@@ -144,6 +172,8 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   w.push_back(std::make_unique<CsvLog>(
       dir / "walls.csv", kWallsHeader,
       [](OutFile& out, const Snapshot& s, const LogInputs&) { write_wall_rows(out, s); }));
+  for (const MeasureSpec& m : settings.measures)
+    w.push_back(std::make_unique<MeasureLog>(dir, m, settings.measure_every(m)));
   w.push_back(std::make_unique<FinalCsv>(dir / "final.csv", write_final_csv));
   w.push_back(std::make_unique<FinalCsv>(dir / "bodies.csv", write_bodies_csv));
   return w;
