@@ -166,81 +166,189 @@ TEST(Measurements, ABodyIsOneGrainWithOneContactPerNeighbour) {
   EXPECT_NEAR(m.fabric_xx, 1, 1e-3);
 }
 
-/// A box [0, W] × [0, H] of four fixed walls (their faces the box's sides, meeting only
-/// at its corners), filled with a triangular lattice pressed against the walls and each
-/// other; no gravity; damped until it is static.
-struct PressedBox {
-  static constexpr double a = 0.1, squeeze = 0.01;
-  static constexpr int half_columns = 7, rows = 6;
-  double width() const { return (half_columns + 0.5) * a; }
-  double height() const { return rows * a * kSqrt3 / 2; }
-  enum Wall { Left, Right, Bottom, Top };
-  Scene scene() const {
-    Scene s = test::empty_scene(1e7, 2000, 0, 0.5);
-    s.simulation.local_damping = 0.3;
-    const double w = width(), h = height();
-    s.triangles.push_back(test::triangle({0, h}, {-h / 2, h / 2}, {0, 0}, {}, Motion::Fixed));
-    s.triangles.push_back(test::triangle({w, 0}, {w + h / 2, h / 2}, {w, h}, {}, Motion::Fixed));
-    s.triangles.push_back(test::triangle({0, 0}, {w / 2, -w / 2}, {w, 0}, {}, Motion::Fixed));
-    s.triangles.push_back(test::triangle({w, h}, {w / 2, h + w / 2}, {0, h}, {}, Motion::Fixed));
-    const double th = a * kSqrt3 / 2;
-    for (int j = 0; j < rows; ++j)
-      for (int k = 0; k < 2 * half_columns; ++k) {
-        // Triangle k of row j starts at x = k·a/2: up when k + j is even, else down.
-        const double x0 = k * a / 2, y0 = j * th;
-        TriangleSpec t = (k + j) % 2 == 0
-                             ? test::triangle({x0, y0}, {x0 + a, y0}, {x0 + a / 2, y0 + th})
-                             : test::triangle({x0, y0 + th}, {x0 + a / 2, y0}, {x0 + a, y0 + th});
-        const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
-        for (Vec2d& v : t.vertices) v = c + (v - c) * (1 + squeeze);
-        s.triangles.push_back(t);
-      }
-    return s;
+/// An equilateral triangle (side 0.1 m) pressed e = 1 mm into a fixed floor, moving along
+/// it at `speed`; friction 0.3, no damping, no gravity.
+Scene on_floor(double speed) {
+  Scene scene = test::empty_scene(1e7, 2000, 0.3, 0);
+  scene.triangles.push_back(test::floor_triangle(-1, 2, 0));
+  const double a = 0.1, e = 0.001;
+  scene.triangles.push_back(
+      test::triangle({0, -e}, {a, -e}, {a / 2, a * kSqrt3 / 2 - e}, {speed, 0}));
+  return scene;
+}
+
+TEST(Measurements, TheContactNetworkSplitsNormalAndTangentialAndSaysWhenItSlides) {
+  {
+    const Snapshot s = first_step(on_floor(0));
+    ASSERT_EQ(s.contacts.size(), 1u);
+    const ContactRecord& c = s.contacts[0];
+    // The normal from i into j: straight down into the floor, or up out of it.
+    const double towards_j = s.y[static_cast<std::size_t>(c.j)] - s.y[static_cast<std::size_t>(c.i)];
+    EXPECT_NEAR(c.nx, 0, 1e-12);
+    EXPECT_NEAR(c.ny, towards_j > 0 ? 1 : -1, 1e-12);
+    EXPECT_GT(c.normal_force(), 0) << "the floor pushes the triangle up";
+    // The floor's top edge runs e inside the triangle, parallel to its base: φ = 3e/h.
+    EXPECT_NEAR(c.depth, 3 * 0.001 / (0.1 * kSqrt3 / 2), 1e-12);
+    EXPECT_FALSE(c.sliding) << "at rest";
+    EXPECT_EQ(c.tangential_force(), 0);
   }
+  // Moving at 20 m/s: the friction spring stretches until it reaches the Coulomb cap μ·fn,
+  // then the contact slides at the cap, against the motion.
+  const auto solver = make_solver(on_floor(20), SolverConfig{});
+  Snapshot s;
+  int sticking = 0, sliding = 0;
+  for (int step = 1; step <= 200 && sliding < 3; ++step) {
+    solver->advance(1);
+    solver->snapshot(s, true);
+    if (s.contacts.empty()) break;
+    const ContactRecord& c = s.contacts[0];
+    const double on_triangle = c.i == 1 ? 1 : -1;
+    EXPECT_LT(on_triangle * c.fx, 0) << "friction opposes the motion, step " << step;
+    if (c.sliding) {
+      ++sliding;
+      EXPECT_NEAR(std::abs(c.tangential_force()), 0.3 * c.normal_force(), 1e-9 * c.normal_force());
+    } else {
+      EXPECT_EQ(sliding, 0) << "sticks again at step " << step;
+      ++sticking;
+      EXPECT_LT(std::abs(c.tangential_force()), 0.3 * c.normal_force());
+    }
+  }
+  EXPECT_GT(sticking, 0);
+  EXPECT_EQ(sliding, 3) << "the contact reached the cap while it lasted";
+}
+
+/// Four fixed walls whose faces are the sides of the box [0, W] × [0, H] (each a triangle
+/// with its face on one side, meeting the next only at a corner), in the order Left,
+/// Right, Bottom, Top.
+enum Wall { Left, Right, Bottom, Top };
+void add_box_walls(Scene& s, double w, double h) {
+  s.triangles.push_back(test::triangle({0, h}, {-h / 2, h / 2}, {0, 0}, {}, Motion::Fixed));
+  s.triangles.push_back(test::triangle({w, 0}, {w + h / 2, h / 2}, {w, h}, {}, Motion::Fixed));
+  s.triangles.push_back(test::triangle({0, 0}, {w / 2, -w / 2}, {w, 0}, {}, Motion::Fixed));
+  s.triangles.push_back(test::triangle({w, h}, {w / 2, h + w / 2}, {0, h}, {}, Motion::Fixed));
+}
+
+void enlarge(TriangleSpec& t, double scale) {
+  const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
+  for (Vec2d& v : t.vertices) v = c + (v - c) * scale;
+}
+
+/// A packing in the box, no gravity, damped (material damping and Cundall's local
+/// damping) until static.
+Snapshot settled(Scene s) {
+  s.materials[0].damping = 0.5;
+  s.simulation.local_damping = 0.3;
+  return test::run_to(s, Backend::Cpu, 20000);
+}
+
+/// What the walls hold: the force of the grains on each (the walls' contact force).
+struct WallLoads {
+  double left, right, bottom, top;
+  explicit WallLoads(const Snapshot& s)
+      : left(-s.fx[Left]), right(s.fx[Right]), bottom(-s.fy[Bottom]), top(s.fy[Top]) {}
 };
 
+/// The largest net force on a grain (walls excluded): zero in static equilibrium.
+double largest_net_force(const Snapshot& s) {
+  double largest = 0;
+  for (std::size_t i = 4; i < s.size(); ++i)
+    largest = std::max(largest, std::hypot(s.fx[i], s.fy[i]));
+  return largest;
+}
+
 TEST(Measurements, StressOfAStaticPackingEqualsTheWallForcesOverTheirLengths) {
-  const PressedBox box;
-  const Snapshot s = test::run_to(box.scene(), Backend::Cpu, 20000);
-  // Static: the grains' kinetic energy against the elastic energy scale of the contacts.
-  double kinetic = 0, largest_force = 0;
-  for (std::size_t i = 4; i < s.size(); ++i) {
-    kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
-    largest_force = std::max(largest_force, std::hypot(s.fx[i], s.fy[i]));
-  }
-  // The walls' loads: what the grains push on them (their contact force is the grains'
-  // on them), over the length of their faces.
-  const double w = box.width(), h = box.height();
-  const double left = -s.fx[PressedBox::Left], right = s.fx[PressedBox::Right];
-  const double bottom = -s.fy[PressedBox::Bottom], top = s.fy[PressedBox::Top];
-  ASSERT_GT(left, 0);
-  ASSERT_GT(bottom, 0);
-  // Balanced: the packing is in equilibrium.
-  EXPECT_NEAR(left, right, 1e-3 * left);
-  EXPECT_NEAR(bottom, top, 1e-3 * bottom);
-  EXPECT_LT(largest_force, 1e-4 * left) << "the grains' net forces vanish";
+  // Squares of side b, 8 × 6, each cut by its diagonal into two right triangles enlarged
+  // by 1 % about their centroids: the packing presses its faces flat on the walls, whose
+  // loads are then normal to them (a vertex pressed into a face would also load it along
+  // the face: see the next test), so σxx = (wall force)/H and σyy = (wall force)/W.
+  const double b = 0.1, w = 8 * b, h = 6 * b;
+  Scene scene = test::empty_scene(1e7, 2000, 0, 0);
+  add_box_walls(scene, w, h);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const Vec2d p{i * b, j * b};
+      for (TriangleSpec t : {test::triangle(p, p + Vec2d{b, 0}, p + Vec2d{b, b}),
+                             test::triangle(p, p + Vec2d{b, b}, p + Vec2d{0, b})}) {
+        enlarge(t, 1.01);
+        scene.triangles.push_back(t);
+      }
+    }
+  const Snapshot s = settled(scene);
+  const WallLoads wall(s);
+  ASSERT_GT(wall.left, 0);
+  ASSERT_GT(wall.bottom, 0);
+  EXPECT_NEAR(wall.left, wall.right, 1e-3 * wall.left);
+  EXPECT_NEAR(wall.bottom, wall.top, 1e-3 * wall.bottom);
+  EXPECT_LT(largest_net_force(s), 1e-4 * wall.left) << "static: the grains' net forces vanish";
 
   const Measurement m = measure_region(s, MeasureRegion{{0, 0}, {w, h}});
-  EXPECT_EQ(m.particles, 2 * PressedBox::half_columns * PressedBox::rows);
-  const double sxx_walls = 0.5 * (left + right) / h, syy_walls = 0.5 * (bottom + top) / w;
+  EXPECT_EQ(m.particles, 96);
+  const double sxx_walls = 0.5 * (wall.left + wall.right) / h;
+  const double syy_walls = 0.5 * (wall.bottom + wall.top) / w;
   EXPECT_NEAR(m.sxx, sxx_walls, 0.01 * sxx_walls);
   EXPECT_NEAR(m.syy, syy_walls, 0.01 * syy_walls);
   EXPECT_NEAR(m.sxy, 0, 0.01 * m.pressure);
   EXPECT_NEAR(m.syx, 0, 0.01 * m.pressure);
   EXPECT_NEAR(m.pressure, 0.5 * (sxx_walls + syy_walls), 0.01 * m.pressure);
-  // The whole domain (no region) measures the same grains, over their bounding box, which
-  // the squeezed grains make a little larger than the box.
+  EXPECT_NEAR(m.packing_fraction, 1, 0.05) << "a tiling, enlarged and pressed back";
+  std::printf("net force %.3g N/m; sxx %.6g vs walls %.6g (%.2g), syy %.6g vs walls %.6g "
+              "(%.2g), sxy %.3g, syx %.3g\n",
+              largest_net_force(s), m.sxx, sxx_walls, m.sxx / sxx_walls - 1, m.syy, syy_walls,
+              m.syy / syy_walls - 1, m.sxy, m.syx);
+}
+
+TEST(Measurements, StressOfAStaticPackingEqualsItsBoundaryTractions) {
+  // A triangular lattice (6 rows of 14 triangles, enlarged by 1 %) pressed into the box:
+  // the rows' ends press vertices into the side walls, which the potential force loads
+  // along the wall too, frictionless as it is. What holds exactly in static equilibrium
+  // without gravity is σ·A = −Σ f ⊗ x over the walls' contacts (f on the grain, at x).
+  constexpr double a = 0.1, th = a * kSqrt3 / 2;
+  constexpr int half_columns = 7, rows = 6;
+  const double w = (half_columns + 0.5) * a, h = rows * th;
+  Scene scene = test::empty_scene(1e7, 2000, 0, 0);
+  add_box_walls(scene, w, h);
+  for (int j = 0; j < rows; ++j)
+    for (int k = 0; k < 2 * half_columns; ++k) {
+      // Triangle k of row j starts at x = k·a/2: up when k + j is even, else down.
+      const double x0 = k * a / 2, y0 = j * th;
+      TriangleSpec t = (k + j) % 2 == 0
+                           ? test::triangle({x0, y0}, {x0 + a, y0}, {x0 + a / 2, y0 + th})
+                           : test::triangle({x0, y0 + th}, {x0 + a / 2, y0}, {x0 + a, y0 + th});
+      enlarge(t, 1.01);
+      scene.triangles.push_back(t);
+    }
+  const Snapshot s = settled(scene);
+  const WallLoads wall(s);
+  ASSERT_GT(wall.left, 0);
+  EXPECT_LT(largest_net_force(s), 1e-4 * wall.left) << "static: the grains' net forces vanish";
+  double txx = 0, txy = 0, tyx = 0, tyy = 0;  // −Σ f ⊗ x over the walls' contacts
+  for (const ContactRecord& c : s.contacts) {
+    const bool i_wall = c.i < 4, j_wall = c.j < 4;
+    if (i_wall == j_wall) continue;
+    const double sign = i_wall ? -1 : 1;  // the force on the grain
+    txx -= sign * c.fx * c.px;
+    txy -= sign * c.fx * c.py;
+    tyx -= sign * c.fy * c.px;
+    tyy -= sign * c.fy * c.py;
+  }
+  const Measurement m = measure_region(s, MeasureRegion{{0, 0}, {w, h}});
+  EXPECT_EQ(m.particles, 2 * half_columns * rows);
+  const double area = w * h, tolerance = 1e-3 * m.pressure;
+  EXPECT_NEAR(m.sxx, txx / area, tolerance);
+  EXPECT_NEAR(m.sxy, txy / area, tolerance);
+  EXPECT_NEAR(m.syx, tyx / area, tolerance);
+  EXPECT_NEAR(m.syy, tyy / area, tolerance);
+  // The side walls' normal forces alone still give σxx; σyy differs from the floor's and
+  // lid's by what the side walls carry along themselves.
+  EXPECT_NEAR(m.sxx, 0.5 * (wall.left + wall.right) / h, 0.01 * m.sxx);
+  // The whole domain (no region) measures the same grains, over their bounding box.
   const Measurement all = measure_region(s, std::nullopt);
   EXPECT_EQ(all.particles, m.particles);
   EXPECT_NEAR(all.sxx * all.area, m.sxx * m.area, 1e-9 * m.sxx * m.area);
-  RecordProperty("kinetic", std::to_string(kinetic));
-  RecordProperty("sxx", std::to_string(m.sxx));
-  RecordProperty("sxx_walls", std::to_string(sxx_walls));
-  RecordProperty("syy", std::to_string(m.syy));
-  RecordProperty("syy_walls", std::to_string(syy_walls));
-  std::printf("kinetic %.3g J/m, largest net force %.3g N/m; sxx %.6g vs walls %.6g, syy %.6g vs "
-              "walls %.6g, sxy %.3g, syx %.3g\n",
-              kinetic, largest_force, m.sxx, sxx_walls, m.syy, syy_walls, m.sxy, m.syx);
+  std::printf("net force %.3g N/m; sxx %.6g vs tractions %.6g, syy %.6g vs %.6g (floor and lid "
+              "alone: %.6g), sxy %.4g vs %.4g\n",
+              largest_net_force(s), m.sxx, txx / area, m.syy, tyy / area,
+              0.5 * (wall.bottom + wall.top) / w, m.sxy, txy / area);
 }
 
 }  // namespace
