@@ -22,20 +22,20 @@ namespace tridem {
 struct Measurement {
   std::int64_t step = 0;
   double time = 0;
-  double area = 0;               ///< of the region (the free grains' bounding box without one)
-  std::int64_t particles = 0;    ///< free grains whose centroid is inside
-  std::int64_t contacts = 0;     ///< grain contacts with at least one of those grains
-  std::int64_t rattlers = 0;     ///< of those grains, the rattlers
+  double area = 0;             ///< of the region (the free grains' bounding box without one)
+  std::int64_t particles = 0;  ///< free grains whose centroid is inside
+  std::int64_t contacts = 0;   ///< grain contacts with at least one of those grains
+  std::int64_t rattlers = 0;   ///< of those grains, the rattlers
   /// Love-Weber: −(1/A) Σ_p Σ_c f_i (x_c − x_p)_j over the grains p inside and their
   /// contacts c (force f on p, applied at x_c; x_p the grain's centroid).
   double sxx = 0, sxy = 0, syx = 0, syy = 0;
-  double pressure = 0;           ///< (sxx + syy) / 2
-  double deviatoric = 0;         ///< √(((sxx − syy)/2)² + ((sxy + syx)/2)²), the Mohr radius
-  double packing_fraction = 0;   ///< free triangles' area inside the region, over its area
-  double coordination = 0;       ///< contacts per grain inside (walls' contacts included)
+  double pressure = 0;          ///< (sxx + syy) / 2
+  double deviatoric = 0;        ///< √(((sxx − syy)/2)² + ((sxy + syx)/2)²), the Mohr radius
+  double packing_fraction = 0;  ///< free triangles' area inside the region, over its area
+  double coordination = 0;      ///< contacts per grain inside (walls' contacts included)
   double mechanical_coordination = 0;  ///< the same without rattlers and their contacts
   double fabric_xx = 0, fabric_xy = 0, fabric_yy = 0;  ///< <n_i n_j> over the grains' contacts
-  double mean_overlap = 0, max_overlap = 0;  ///< penetration depth φ of the contacts
+  double mean_overlap = 0, max_overlap = 0;            ///< penetration depth φ of the contacts
 };
 
 /// The measurements over `region` (nullopt: every free grain, over their bounding box).

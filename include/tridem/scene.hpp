@@ -111,12 +111,12 @@ struct MeasureRegion {
 /// A [[measure]] table: averages over a region (docs/experiments.md, "Measurements")
 /// logged to a CSV of the output directory, one row per logged step.
 struct MeasureSpec {
-  std::string name;           ///< letters, digits, '_' and '-'; unique among the measures
-  std::optional<MeasureRegion> region; ///< absent: the whole domain (every free particle)
+  std::string name;                     ///< letters, digits, '_' and '-'; unique among the measures
+  std::optional<MeasureRegion> region;  ///< absent: the whole domain (every free particle)
   /// Steps between rows (besides the last step); unset = [output] energy_every (its
   /// default included: log_every()); 0 = the last step only.
   std::optional<std::int64_t> every;
-  std::string file;           ///< in the output directory; empty = measure_<name>.csv
+  std::string file;  ///< in the output directory; empty = measure_<name>.csv
 
   std::string file_name() const { return file.empty() ? "measure_" + name + ".csv" : file; }
 };

@@ -53,9 +53,9 @@ int TimeLoop::run() {
   int signal = 0;
   while (solver_.step() < last_ && signal == 0) {
     const std::int64_t step = solver_.step();
-    std::int64_t target = std::min({next_multiple(step, every_, last_),
-                                    next_multiple(step, log_every_, last_),
-                                    next_multiple(step, checkpoint_every_, last_)});
+    std::int64_t target =
+        std::min({next_multiple(step, every_, last_), next_multiple(step, log_every_, last_),
+                  next_multiple(step, checkpoint_every_, last_)});
     for (std::int64_t every : measure_every_)
       target = std::min(target, next_multiple(step, every, last_));
     signal = advance_to(target);

@@ -62,9 +62,12 @@ std::vector<GrainContact> grain_contacts(const Snapshot& s) {
       plain += n;
       g.depth = std::max(g.depth, c.depth);
     }
-    const double length = std::hypot(weighted.x, weighted.y), plain_length = std::hypot(plain.x, plain.y);
-    if (length > 0) g.normal = weighted / length;
-    else if (plain_length > 0) g.normal = plain / plain_length;
+    const double length = std::hypot(weighted.x, weighted.y),
+                 plain_length = std::hypot(plain.x, plain.y);
+    if (length > 0)
+      g.normal = weighted / length;
+    else if (plain_length > 0)
+      g.normal = plain / plain_length;
     out.push_back(g);
   }
   return out;

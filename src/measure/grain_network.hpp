@@ -26,7 +26,7 @@ struct GrainContact {
   std::int64_t a = 0, b = 0;
   /// From a into b, unit: its triangle contacts' normals weighted by their normal forces.
   Vec2d normal{};
-  double depth = 0;   ///< the deepest of its triangle contacts (the contact law's φ)
+  double depth = 0;  ///< the deepest of its triangle contacts (the contact law's φ)
 };
 
 /// Every grain contact, in ascending (a, b) order, each once. Triangle contacts between

@@ -42,15 +42,15 @@ std::vector<Tensor> contact_moments(const Snapshot& s, const measure::Grains& gr
 /// The bounding box of the free triangles' vertices (the whole domain's region), or an
 /// empty one at the origin when there is none.
 MeasureRegion free_bounding_box(const Snapshot& s) {
-  MeasureRegion box{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
-                    {-std::numeric_limits<double>::infinity(),
-                     -std::numeric_limits<double>::infinity()}};
+  MeasureRegion box{
+      {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
+      {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
   bool any = false;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s.motion[i] != Motion::Free) continue;
     any = true;
-    for (const auto& [x, y] : {std::pair{s.x1[i], s.y1[i]}, std::pair{s.x2[i], s.y2[i]},
-                               std::pair{s.x3[i], s.y3[i]}}) {
+    for (const auto& [x, y] :
+         {std::pair{s.x1[i], s.y1[i]}, std::pair{s.x2[i], s.y2[i]}, std::pair{s.x3[i], s.y3[i]}}) {
       box.lo = {std::min(box.lo.x, x), std::min(box.lo.y, y)};
       box.hi = {std::max(box.hi.x, x), std::max(box.hi.y, y)};
     }
@@ -119,7 +119,8 @@ Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>
                     : measure::triangle_area(s, i);
   }
   out.packing_fraction = ratio(solid, out.area);
-  out.coordination = ratio(static_cast<double>(grain_contact_ends), static_cast<double>(out.particles));
+  out.coordination =
+      ratio(static_cast<double>(grain_contact_ends), static_cast<double>(out.particles));
   out.mechanical_coordination =
       ratio(static_cast<double>(mechanical_ends), static_cast<double>(mechanical_grains));
 
@@ -128,7 +129,8 @@ Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>
   Tensor fabric;
   double depth_sum = 0;
   for (const measure::GrainContact& c : contacts) {
-    const int ends = int(inside[static_cast<std::size_t>(c.a)]) + int(inside[static_cast<std::size_t>(c.b)]);
+    const int ends =
+        int(inside[static_cast<std::size_t>(c.a)]) + int(inside[static_cast<std::size_t>(c.b)]);
     if (ends == 0) continue;
     fabric.xx += ends * c.normal.x * c.normal.x;
     fabric.xy += ends * c.normal.x * c.normal.y;

@@ -44,7 +44,8 @@ TEST(GpuMeasurements, ContactFieldsAndMeasurementsAgreeWithSerial) {
   EXPECT_LE(sliding_differs, cpu.contacts.size() / 100);
 
   for (const std::optional<MeasureRegion>& region :
-       {std::optional<MeasureRegion>{}, std::optional<MeasureRegion>{MeasureRegion{{0, 0}, {1, 0.6}}}}) {
+       {std::optional<MeasureRegion>{},
+        std::optional<MeasureRegion>{MeasureRegion{{0, 0}, {1, 0.6}}}}) {
     const Measurement a = measure_region(cpu, region), b = measure_region(gpu, region);
     EXPECT_EQ(a.particles, b.particles);
     EXPECT_EQ(a.contacts, b.contacts);

@@ -64,8 +64,8 @@ TEST(Measurements, LatticeCoordinationFabricAndOverlapAreExact) {
   EXPECT_NEAR(m.fabric_xx + m.fabric_yy, 1, 1e-15);
   const double phi_h = 3 * lattice.d / (2 * lattice.a), phi_v = 3 * lattice.e / lattice.h();
   EXPECT_NEAR(m.max_overlap, std::max(phi_h, phi_v), 1e-12);
-  EXPECT_NEAR(m.mean_overlap, (lattice.horizontal() * phi_h + lattice.vertical() * phi_v) / contacts,
-              1e-12);
+  EXPECT_NEAR(m.mean_overlap,
+              (lattice.horizontal() * phi_h + lattice.vertical() * phi_v) / contacts, 1e-12);
 
   // A region around the inner grains by their centroids: each has 4 contacts.
   const Vec2d lo = lattice.corner(1, 1), hi = lattice.corner(5, 4);  // columns 1-4, rows 1-3
@@ -120,9 +120,9 @@ TEST(Measurements, PackingFractionOfATilingIsExact) {
   Snapshot s;
   make_solver(scene, SolverConfig{})->snapshot(s, true);
   // Inside the tiling, whatever the cut: 1.
-  for (const MeasureRegion r : {MeasureRegion{{0, 0}, {8 * b, 5 * b}},
-                                MeasureRegion{{0.0123, 0.0371}, {0.2897, 0.1999}},
-                                MeasureRegion{{0.31, 0.001}, {0.3333, 0.249}}}) {
+  for (const MeasureRegion r :
+       {MeasureRegion{{0, 0}, {8 * b, 5 * b}}, MeasureRegion{{0.0123, 0.0371}, {0.2897, 0.1999}},
+        MeasureRegion{{0.31, 0.001}, {0.3333, 0.249}}}) {
     const Measurement m = measure_region(s, r);
     EXPECT_NEAR(m.packing_fraction, 1, 1e-13) << r.lo.x << " " << r.lo.y;
   }
@@ -160,7 +160,8 @@ TEST(Measurements, ABodyIsOneGrainWithOneContactPerNeighbour) {
   EXPECT_EQ(g.coordination, (std::vector<std::int32_t>{1, 2, 1}));
   // The region's stress is the grains' own, weighted by their areas.
   const double area = b * b;
-  EXPECT_NEAR(m.sxx * m.area, area * (g.sxx[0] + g.sxx[1] + g.sxx[2]), 1e-9 * std::abs(m.sxx * m.area));
+  EXPECT_NEAR(m.sxx * m.area, area * (g.sxx[0] + g.sxx[1] + g.sxx[2]),
+              1e-9 * std::abs(m.sxx * m.area));
   EXPECT_GT(g.sxx[1], 0) << "the middle square is compressed along x";
   // The normals are along x, up to the small corner contacts: the fabric is nearly all xx.
   EXPECT_NEAR(m.fabric_xx, 1, 1e-3);
@@ -183,7 +184,8 @@ TEST(Measurements, TheContactNetworkSplitsNormalAndTangentialAndSaysWhenItSlides
     ASSERT_EQ(s.contacts.size(), 1u);
     const ContactRecord& c = s.contacts[0];
     // The normal from i into j: straight down into the floor, or up out of it.
-    const double towards_j = s.y[static_cast<std::size_t>(c.j)] - s.y[static_cast<std::size_t>(c.i)];
+    const double towards_j =
+        s.y[static_cast<std::size_t>(c.j)] - s.y[static_cast<std::size_t>(c.i)];
     EXPECT_NEAR(c.nx, 0, 1e-12);
     EXPECT_NEAR(c.ny, towards_j > 0 ? 1 : -1, 1e-12);
     EXPECT_GT(c.normal_force(), 0) << "the floor pushes the triangle up";

@@ -14,8 +14,8 @@ void write_contacts_csv(const std::filesystem::path& file, const Snapshot& s) {
   out.write("i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth\n");
   for (const ContactRecord& c : s.contacts)
     out.print("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.17g}\n",
-              c.i, c.j, c.fx, c.fy, c.px, c.py, c.nx, c.ny, c.normal_force(),
-              c.tangential_force(), c.sliding ? 1 : 0, c.depth);
+              c.i, c.j, c.fx, c.fy, c.px, c.py, c.nx, c.ny, c.normal_force(), c.tangential_force(),
+              c.sliding ? 1 : 0, c.depth);
   out.close();
 }
 

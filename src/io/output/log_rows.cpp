@@ -18,9 +18,9 @@ void write_measure_row(OutFile& out, const Measurement& m) {
             m.rattlers);
   out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},", m.sxx, m.sxy, m.syx, m.syy,
             m.pressure, m.deviatoric);
-  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
-            m.packing_fraction, m.coordination, m.mechanical_coordination, m.fabric_xx,
-            m.fabric_xy, m.fabric_yy, m.mean_overlap, m.max_overlap);
+  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", m.packing_fraction,
+            m.coordination, m.mechanical_coordination, m.fabric_xx, m.fabric_xy, m.fabric_yy,
+            m.mean_overlap, m.max_overlap);
 }
 
 void write_wall_rows(OutFile& out, const Snapshot& s) {

@@ -12,7 +12,7 @@ namespace tridem::scene_detail {
 namespace {
 
 // Files of the output directory that tridem writes itself: a measure must not take them.
-constexpr std::string_view kReservedFiles[] = {"energy.csv", "walls.csv", "final.csv",
+constexpr std::string_view kReservedFiles[] = {"energy.csv", "walls.csv",  "final.csv",
                                                "bodies.csv", "tridem.pvd", "contacts.pvd"};
 
 bool name_character(char c) {
@@ -46,8 +46,7 @@ std::optional<std::string> measure_file_problem(std::string_view file) {
   if (file.empty()) return "must not be empty (leave it out for measure_<name>.csv)";
   if (file.find('/') != std::string_view::npos || file.find('\\') != std::string_view::npos ||
       file == "." || file == "..")
-    return fmt::format("\"{}\" must be a file name in the output directory, without folders",
-                       file);
+    return fmt::format("\"{}\" must be a file name in the output directory, without folders", file);
   for (std::string_view reserved : kReservedFiles)
     if (file == reserved) return fmt::format("\"{}\" is a file tridem writes itself", file);
   return std::nullopt;

@@ -50,9 +50,8 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 }
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
-  static constexpr std::string_view kKnown[] = {"simulation", "output", "material",
-                                                "triangle",   "body",   "generate",
-                                                "import",     "measure"};
+  static constexpr std::string_view kKnown[] = {"simulation", "output",   "material", "triangle",
+                                                "body",       "generate", "import",   "measure"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;

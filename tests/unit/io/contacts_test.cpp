@@ -81,7 +81,8 @@ TEST(Contacts, NoContactsGiveHeaderOnlyAndEmptyNetwork) {
   s.contacts.clear();
   write_contacts_csv(tmp.path() / "c.csv", s);
   write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
-  EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"), (std::vector<std::string>{"i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth"}));
+  EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"),
+            (std::vector<std::string>{"i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth"}));
   const io::VtkXmlFile f =
       io::parse_vtk_xml("c.vtp", test::read_file(tmp.path() / "c.vtp"));
   EXPECT_EQ(f.piece.at("NumberOfLines"), "0");

@@ -45,8 +45,8 @@ TEST(SceneMeasure, ReadsEveryKeyAndItsDefaults) {
 
 TEST(SceneMeasure, EveryDefaultsToTheLogsCadenceAndItsDefault) {
   // energy_every unset: the logs follow [output] every, and so do the measures.
-  const Scene s = parse_scene(with_measures("[output]\nevery = 25\n", "[[measure]]\nname = \"m\"\n"),
-                              "good.toml");
+  const Scene s = parse_scene(
+      with_measures("[output]\nevery = 25\n", "[[measure]]\nname = \"m\"\n"), "good.toml");
   EXPECT_EQ(s.output.measure_every(s.output.measures.at(0)), 25);
   const Scene none = parse_scene(with_measures("", ""), "good.toml");
   EXPECT_TRUE(none.output.measures.empty());
@@ -58,9 +58,9 @@ TEST(SceneMeasure, RefusesAnUnknownKey) {
 }
 
 TEST(SceneMeasure, RefusesAnEmptyOrMalformedRegion) {
-  expect_refused(with_measures("", "[[measure]]\nname = \"m\"\nregion = [[1, 0], [1, 2]]\n"),
-                 {"bad.toml:9:", "[[measure]] #1", "'region'", "is empty",
-                  "xmin < xmax and ymin < ymax"});
+  expect_refused(
+      with_measures("", "[[measure]]\nname = \"m\"\nregion = [[1, 0], [1, 2]]\n"),
+      {"bad.toml:9:", "[[measure]] #1", "'region'", "is empty", "xmin < xmax and ymin < ymax"});
   expect_refused(with_measures("", "[[measure]]\nname = \"m\"\nregion = [[0, 2], [1, 1]]\n"),
                  {"bad.toml:9:", "'region'", "is empty"});
   expect_refused(with_measures("", "[[measure]]\nname = \"m\"\nregion = [[0, 0]]\n"),
