@@ -41,9 +41,9 @@ RunSummary run(const Scene& s, std::optional<std::int64_t> steps = std::nullopt,
 }
 
 void expect_same_outputs(const fs::path& a, const fs::path& b) {
-  for (const char* f : {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
-                        "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv",
-                        "measure_all.csv"})
+  for (const char* f :
+       {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
+        "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv", "measure_all.csv"})
     EXPECT_EQ(test::read_file(a / f), test::read_file(b / f)) << f;
 }
 
