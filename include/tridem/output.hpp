@@ -20,8 +20,8 @@ namespace tridem {
 struct EnergyRow {
   std::int64_t step = 0;
   double time = 0;
-  double kinetic = 0;           ///< J/m
-  double momentum_x = 0;        ///< kg/s (per unit thickness)
+  double kinetic = 0;     ///< J/m
+  double momentum_x = 0;  ///< kg/s (per unit thickness)
   double momentum_y = 0;
   double angular_momentum = 0;  ///< about the origin, kg·m/s
   double potential = 0;         ///< gravitational, −Σ m g·c (zero at the origin), J/m
@@ -46,8 +46,11 @@ void write_final_csv(const std::filesystem::path& file, const Snapshot&);
 /// bodies.csv: one row per body (Snapshot::body_count()), in body-id order; without bodies
 /// of several triangles, one per triangle, from the triangle columns.
 void write_bodies_csv(const std::filesystem::path& file, const Snapshot&);
+/// `grain_stress`: the per-grain stress, pressure and coordination arrays, from the
+/// snapshot's contacts (a run writes them when [output] contacts is on: the contacts then
+/// come with every frame).
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot&,
-                     Encoding = Encoding::Binary);
+                     Encoding = Encoding::Binary, bool grain_stress = true);
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
 void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
                         Encoding = Encoding::Binary);
@@ -65,6 +68,13 @@ void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&,
 /// that is not such a frame.
 Snapshot read_vtu_frame(const std::filesystem::path& file);
 
+/// Whether a [[measure]] writing every `every` steps has a row at `step`: at the positive
+/// multiples of `every` (every > 0) and at the run's last step; never at step 0, before
+/// any contact force has been computed.
+inline bool measure_due(std::int64_t every, std::int64_t step, bool last_step) {
+  return step > 0 && (last_step || (every > 0 && step % every == 0));
+}
+
 /// Where a restarted run takes over the outputs of the run it continues.
 struct ResumePoint {
   std::int64_t step = 0;
@@ -77,6 +87,7 @@ struct ResumePoint {
 ///   frames/frame_<step>.vtu        one per write_frame(), listed in tridem.pvd
 ///   contacts/contacts_<step>.csv   and .vtp, with each frame when settings.contacts,
 ///                                  the .vtp files listed in contacts.pvd
+///   measure_<name>.csv             a row per measure() call due for that [[measure]]
 ///   final.csv, bodies.csv          from write_final()
 /// The .pvd collections are replaced atomically after every frame, so they stay valid
 /// if the run dies. Every failure to create or write throws RunError.
@@ -94,6 +105,9 @@ class OutputSet {
   /// One row of energy.csv (with the solver's budget under gravity g) and walls.csv.
   void log(const Snapshot&, Vec2d gravity = {}, const EnergyBudget& budget = {});
   void write_final(const Snapshot&);
+  /// A row of each [[measure]] due at the snapshot's step (measure_due); the snapshot
+  /// must hold the contacts. `last_step`: the run's last step.
+  void measure(const Snapshot&, bool last_step);
 
   const std::filesystem::path& dir() const;
 

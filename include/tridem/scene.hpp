@@ -124,6 +124,26 @@ struct SimulationSettings {
 /// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
 enum class Encoding { Binary, Ascii };
 
+/// The region of a [[measure]]: an axis-aligned rectangle, lo < hi in both coordinates.
+struct MeasureRegion {
+  Vec2d lo{}, hi{};
+  double area() const { return (hi.x - lo.x) * (hi.y - lo.y); }
+  bool contains(Vec2d p) const { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
+};
+
+/// A [[measure]] table: averages over a region (docs/experiments.md, "Measurements")
+/// logged to a CSV of the output directory, one row per logged step.
+struct MeasureSpec {
+  std::string name;                     ///< letters, digits, '_' and '-'; unique among the measures
+  std::optional<MeasureRegion> region;  ///< absent: the whole domain (every free particle)
+  /// Steps between rows (besides the last step); unset = [output] energy_every (its
+  /// default included: log_every()); 0 = the last step only.
+  std::optional<std::int64_t> every;
+  std::string file;  ///< in the output directory; empty = measure_<name>.csv
+
+  std::string file_name() const { return file.empty() ? "measure_" + name + ".csv" : file; }
+};
+
 struct OutputSettings {
   std::string dir = "out";
   std::int64_t every = 0;              ///< steps between frames; 0 = no frames
@@ -135,6 +155,9 @@ struct OutputSettings {
   std::optional<std::int64_t> energy_every;
 
   std::int64_t log_every() const { return energy_every.value_or(every); }
+
+  std::vector<MeasureSpec> measures;  ///< the [[measure]] tables, in file order
+  std::int64_t measure_every(const MeasureSpec& m) const { return m.every.value_or(log_every()); }
 };
 
 struct Scene {

@@ -12,12 +12,23 @@
 namespace tridem {
 
 /// One contact between particles i and j at a frame: the total force that j exerts on i
-/// (i receives +force, j receives −force) and the point where it acts.
+/// (i receives +force, j receives −force) and the point where it acts; its unit normal
+/// (nx, ny) from i into j, so that force = −normal_force()·n + tangential_force()·t with
+/// t = (−ny, nx); whether the Coulomb cap held it (sliding); and its penetration depth
+/// (the contact law's φ: 0 at an edge, 1 at a centroid).
 struct ContactRecord {
   std::int64_t i = 0;
   std::int64_t j = 0;
   double fx = 0, fy = 0;
   double px = 0, py = 0;
+  double nx = 0, ny = 0;
+  bool sliding = false;
+  double depth = 0;
+
+  /// > 0 when the contact pushes i and j apart (damping can make it slightly negative).
+  double normal_force() const { return -(fx * nx + fy * ny); }
+  /// Along t = (−ny, nx), the normal turned by +90°.
+  double tangential_force() const { return -fx * ny + fy * nx; }
 };
 
 /// Structure of arrays, one entry per particle in id order: the shown fields of

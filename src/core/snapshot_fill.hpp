@@ -87,10 +87,18 @@ inline void append_contacts(Snapshot& out, std::size_t n, const Offset* offset,
     for (auto s = offset[e]; s < offset[e + 1]; ++s) {
       const auto& r = result[s];
       if (!r.touching) continue;
-      out.contacts.push_back({static_cast<std::int64_t>(e), static_cast<std::int64_t>(partner[s]),
-                              r.force_a.x, r.force_a.y,
-                              cx[e] + static_cast<double>(r.point.x),
-                              cy[e] + static_cast<double>(r.point.y)});
+      ContactRecord c;
+      c.i = static_cast<std::int64_t>(e);
+      c.j = static_cast<std::int64_t>(partner[s]);
+      c.fx = r.force_a.x;
+      c.fy = r.force_a.y;
+      c.px = cx[e] + static_cast<double>(r.point.x);
+      c.py = cy[e] + static_cast<double>(r.point.y);
+      c.nx = r.normal.x;
+      c.ny = r.normal.y;
+      c.sliding = r.sliding;
+      c.depth = r.depth;
+      out.contacts.push_back(c);
     }
 }
 

@@ -34,12 +34,15 @@ TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, Checkpoin
       last_(scene.simulation.steps),
       every_(scene.output.every),
       log_every_(scene.output.log_every()),
-      checkpoint_every_(scene.output.checkpoint_every) {}
+      checkpoint_every_(scene.output.checkpoint_every) {
+  for (const MeasureSpec& m : scene.output.measures)
+    measure_every_.push_back(scene.output.measure_every(m));
+}
 
 void TimeLoop::start(bool resumed) {
   if (!resumed) {
     const std::int64_t step = solver_.step();
-    emit(step, every_ > 0 && (is_due(step, every_) || step == last_), true);
+    emit(step, every_ > 0 && (is_due(step, every_) || step == last_), true, measure_due_at(step));
   } else if (solver_.step() == last_) {  // nothing left to run
     solver_.snapshot(snap_, false);
     out_.write_final(snap_);
@@ -50,9 +53,12 @@ int TimeLoop::run() {
   int signal = 0;
   while (solver_.step() < last_ && signal == 0) {
     const std::int64_t step = solver_.step();
-    signal = advance_to(std::min({next_multiple(step, every_, last_),
-                                  next_multiple(step, log_every_, last_),
-                                  next_multiple(step, checkpoint_every_, last_)}));
+    std::int64_t target =
+        std::min({next_multiple(step, every_, last_), next_multiple(step, log_every_, last_),
+                  next_multiple(step, checkpoint_every_, last_)});
+    for (std::int64_t every : measure_every_)
+      target = std::min(target, next_multiple(step, every, last_));
+    signal = advance_to(target);
     if (signal == 0) write_due(solver_.step());
   }
   bar_.finish();
@@ -92,15 +98,26 @@ void TimeLoop::advance_chunk(std::int64_t target) {
 void TimeLoop::write_due(std::int64_t step) {
   const bool frame = every_ > 0 && (is_due(step, every_) || step == last_);
   const bool log = is_due(step, log_every_) || step == last_;
-  if (frame || log) emit(step, frame, log);
+  const bool measure = measure_due_at(step);
+  if (frame || log || measure) emit(step, frame, log, measure);
   if (is_due(step, checkpoint_every_) || (checkpoint_every_ > 0 && step == last_))
     save_checkpoint(files_.checkpoint);
 }
 
-void TimeLoop::emit(std::int64_t step, bool frame, bool log) {
-  solver_.snapshot(snap_, frame && scene_.output.contacts);
+bool TimeLoop::measure_due_at(std::int64_t step) const {
+  for (std::int64_t every : measure_every_)
+    if (measure_due(every, step, step == last_)) return true;
+  return false;
+}
+
+void TimeLoop::emit(std::int64_t step, bool frame, bool log, bool measure) {
+  // Frames take the contacts when [output] contacts asks for them (the contact files and
+  // the frames' per-grain stress come from them); a measure always does. Without them a
+  // frame is the state alone: on the GPU the contacts are the larger part of a download.
+  solver_.snapshot(snap_, (frame && scene_.output.contacts) || measure);
   if (frame) out_.write_frame(snap_);
   if (log) out_.log(snap_, scene_.simulation.gravity, solver_.energy());
+  if (measure) out_.measure(snap_, step == last_);
   if (step == last_) out_.write_final(snap_);
 }
 

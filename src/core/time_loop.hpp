@@ -11,6 +11,7 @@
 #include <atomic>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace tridem {
 
@@ -43,7 +44,8 @@ class TimeLoop {
   int advance_to(std::int64_t target);
   void advance_chunk(std::int64_t target);
   void write_due(std::int64_t step);
-  void emit(std::int64_t step, bool frame, bool log);
+  void emit(std::int64_t step, bool frame, bool log, bool measure);
+  bool measure_due_at(std::int64_t step) const;
   /// A checkpoint to `file` and final.csv of the state the solver holds now (no log row
   /// or frame, which an uninterrupted run would not have at this step).
   void keep_state(const std::filesystem::path& file);
@@ -57,6 +59,7 @@ class TimeLoop {
   StateFiles files_;
   ProgressBar bar_;
   std::int64_t last_, every_, log_every_, checkpoint_every_;
+  std::vector<std::int64_t> measure_every_;  ///< of each [[measure]]
   std::int64_t chunk_ = 1;
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints

@@ -50,7 +50,11 @@ struct PairForce {
   /// Energy removed by Coulomb sliding over this step (J/m): μ·f_n times the slip, the
   /// part of the step's tangential displacement that the spring did not keep. >= 0.
   Real friction_dissipation = 0;
+  /// The contact's unit normal N, from a into b (the force on a is −f_n·N + f_t·T, T = N
+  /// turned +90°): what the contact network reports as its normal and tangential parts.
+  Vec2<Real> normal{};
   bool touching = false;
+  bool sliding = false;  ///< the Coulomb cap held the tangential force this step
 };
 
 /// The load of one contactor edge inside a target triangle.
@@ -317,6 +321,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   Vec2<Real> n_ab = b.c - a.c;
   if (f_potential > Real(0)) n_ab = out.force_a / (-f_potential);
   else n_ab = n_ab / norm(n_ab);
+  out.normal = n_ab;
   // Stiffnesses: along N, N·K·N of the loads' stiffness matrix K = p·Σ n ⊗ ∇φ·ℓ (what a
   // normal approach meets); tangential k_t = p_t·Σ 3ℓ/h (= (p_t/p)·k_n with k_n the bound
   // p·Σ 3ℓ/h of any direction's stiffness).
@@ -359,6 +364,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
     const Vec2<Real> kept = root_k > Real(0) ? f_tangent / (-root_k) : Vec2<Real>{};
     if (root_k > Real(0)) out.friction_dissipation = cap * (norm(u) - norm(kept)) / root_k;
     u = kept;
+    out.sliding = true;
   } else {
     // Sticking: spring and dashpot, together no more than the cap.
     f_tangent = f_spring - v_t * c_tangent;

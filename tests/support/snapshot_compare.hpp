@@ -70,8 +70,10 @@ inline void expect_identical(const Snapshot& a, const Snapshot& b) {
   ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "contact records";
   for (std::size_t k = 0; k < a.contacts.size(); ++k) {
     const ContactRecord &p = a.contacts[k], &q = b.contacts[k];
-    const bool same = p.i == q.i && p.j == q.j && same_bits(p.fx, q.fx) &&
-                      same_bits(p.fy, q.fy) && same_bits(p.px, q.px) && same_bits(p.py, q.py);
+    const bool same = p.i == q.i && p.j == q.j && same_bits(p.fx, q.fx) && same_bits(p.fy, q.fy) &&
+                      same_bits(p.px, q.px) && same_bits(p.py, q.py) && same_bits(p.nx, q.nx) &&
+                      same_bits(p.ny, q.ny) && p.sliding == q.sliding &&
+                      same_bits(p.depth, q.depth);
     if (!same) {
       ADD_FAILURE() << "contact record " << k << " differs: " << ::testing::PrintToString(p)
                     << " against " << ::testing::PrintToString(q);

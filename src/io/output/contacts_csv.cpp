@@ -9,9 +9,13 @@ namespace tridem {
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot& s) {
   io::check_contacts(s, file.string());
   io::OutFile out(file);
-  out.write("i,j,fx,fy,px,py\n");
+  // Columns after py were appended by issue 15 (the contact network's normal and
+  // tangential parts); readers of the first six are unaffected.
+  out.write("i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth\n");
   for (const ContactRecord& c : s.contacts)
-    out.print("{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.i, c.j, c.fx, c.fy, c.px, c.py);
+    out.print("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},{:.17g}\n",
+              c.i, c.j, c.fx, c.fy, c.px, c.py, c.nx, c.ny, c.normal_force(), c.tangential_force(),
+              c.sliding ? 1 : 0, c.depth);
   out.close();
 }
 

@@ -17,7 +17,9 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
   io::check_contacts(s, file.string());
   const std::size_t m = s.contacts.size();
 
-  std::vector<double> points(6 * m), force(3 * m), magnitude(m);
+  std::vector<double> points(6 * m), force(3 * m), magnitude(m), normal(3 * m), fn(m), ft(m),
+      depth(m);
+  std::vector<std::int32_t> sliding(m);
   std::vector<std::int64_t> connectivity(2 * m), offsets(m);
   for (std::size_t k = 0; k < m; ++k) {
     const ContactRecord& c = s.contacts[k];
@@ -29,6 +31,12 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
     force[3 * k] = c.fx;
     force[3 * k + 1] = c.fy;
     magnitude[k] = std::hypot(c.fx, c.fy);
+    normal[3 * k] = c.nx;
+    normal[3 * k + 1] = c.ny;
+    fn[k] = c.normal_force();
+    ft[k] = c.tangential_force();
+    sliding[k] = c.sliding ? 1 : 0;
+    depth[k] = c.depth;
     connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
     connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
     offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
@@ -49,6 +57,11 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
   out.write("      </Lines>\n      <CellData Scalars=\"magnitude\" Vectors=\"force\">\n");
   io::write_data_array<double>(out, "force", force, 3, encoding, 8);
   io::write_data_array<double>(out, "magnitude", magnitude, 1, encoding, 8);
+  io::write_data_array<double>(out, "normal", normal, 3, encoding, 8);
+  io::write_data_array<double>(out, "normal_force", fn, 1, encoding, 8);
+  io::write_data_array<double>(out, "tangential_force", ft, 1, encoding, 8);
+  io::write_data_array<std::int32_t>(out, "sliding", sliding, 1, encoding, 8);
+  io::write_data_array<double>(out, "depth", depth, 1, encoding, 8);
   out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
   io::end_vtk_file(out);
   out.close();

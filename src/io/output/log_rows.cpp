@@ -13,6 +13,16 @@ void write_energy_row(OutFile& out, const EnergyRow& r) {
             r.total(), b.dissipated_fracture);
 }
 
+void write_measure_row(OutFile& out, const Measurement& m) {
+  out.print("{},{:.17g},{:.17g},{},{},{},", m.step, m.time, m.area, m.particles, m.contacts,
+            m.rattlers);
+  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},", m.sxx, m.sxy, m.syx, m.syy,
+            m.pressure, m.deviatoric);
+  out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", m.packing_fraction,
+            m.coordination, m.mechanical_coordination, m.fabric_xx, m.fabric_xy, m.fabric_yy,
+            m.mean_overlap, m.max_overlap);
+}
+
 void write_wall_rows(OutFile& out, const Snapshot& s) {
   check_snapshot(s, out.path().string());
   for (std::size_t k = 0; k < s.size(); ++k)

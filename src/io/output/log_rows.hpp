@@ -2,6 +2,7 @@
 // The per-step logs: their headers are a contract with users' scripts (see
 // docs/output-format.md), so they live here once.
 #include "io/output/out_file.hpp"
+#include "tridem/measurements.hpp"
 #include "tridem/output.hpp"
 
 #include <string_view>
@@ -15,7 +16,15 @@ inline constexpr std::string_view kWallsHeader = "step,time,id,fx,fy,torque\n";
 inline constexpr std::string_view kBondsHeader =
     "step,time,intact,damaged,broken,fracture_energy\n";
 
+/// A [[measure]]'s file (tridem/measurements.hpp's Measurement, in its order).
+inline constexpr std::string_view kMeasureHeader =
+    "step,time,area,particles,contacts,rattlers,sxx,sxy,syx,syy,pressure,deviatoric,"
+    "packing_fraction,coordination,mechanical_coordination,fabric_xx,fabric_xy,fabric_yy,"
+    "mean_overlap,max_overlap\n";
+
 void write_energy_row(OutFile&, const EnergyRow&);
+
+void write_measure_row(OutFile&, const Measurement&);
 
 /// One row per fixed or prescribed particle: the contact force and torque on it.
 void write_wall_rows(OutFile&, const Snapshot&);

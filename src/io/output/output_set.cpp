@@ -48,6 +48,10 @@ void OutputSet::log(const Snapshot& s, Vec2d gravity, const EnergyBudget& budget
   for (auto& w : impl_->writers) w->log(s, in);
 }
 
+void OutputSet::measure(const Snapshot& s, bool last_step) {
+  for (auto& w : impl_->writers) w->measure(s, last_step);
+}
+
 void OutputSet::write_final(const Snapshot& s) {
   for (auto& w : impl_->writers) w->final_state(s);
 }

@@ -31,6 +31,9 @@ class OutputWriter {
   virtual void start(const std::optional<ResumePoint>& resume) = 0;
   virtual void frame(const Snapshot&) {}                  ///< every [output] every steps
   virtual void log(const Snapshot&, const LogInputs&) {}  ///< every energy_every steps
+  /// At every step where some [[measure]] is due (measure_due), and only there; the
+  /// snapshot holds the contacts. `last_step`: the run's last step.
+  virtual void measure(const Snapshot&, bool /*last_step*/) {}
   virtual void final_state(const Snapshot&) {}            ///< the state a run ends or stops with
 };
 

@@ -76,18 +76,14 @@ class StepFileWriter final : public OutputWriter {
   bool folder_made_ = false;
 };
 
-/// A CSV log with one block of rows per logging step, flushed each time so that a long
-/// run can be watched and its rows survive a crash.
-class CsvLog final : public OutputWriter {
+/// A CSV file of rows added as the run goes, flushed each time so that a long run can be
+/// watched and its rows survive a crash; a restarted run cuts it back to the checkpoint.
+class CsvRows : public OutputWriter {
  public:
-  using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
   /// `only_with_bonds`: the file is made at the first row of a scene with cohesive bonds
   /// (bonds.csv), and never for other scenes.
-  CsvLog(fs::path file, std::string_view header, Rows rows, bool only_with_bonds = false)
-      : file_(std::move(file)),
-        header_(header),
-        rows_(std::move(rows)),
-        only_with_bonds_(only_with_bonds) {}
+  CsvRows(fs::path file, std::string_view header, bool only_with_bonds = false)
+      : file_(std::move(file)), header_(header), only_with_bonds_(only_with_bonds) {}
 
   void start(const std::optional<ResumePoint>& resume) override {
     std::error_code ec;
@@ -105,22 +101,58 @@ class CsvLog final : public OutputWriter {
     out_->flush();
   }
 
-  void log(const Snapshot& s, const LogInputs& in) override {
-    if (only_with_bonds_ && s.bond_a.empty()) return;
+ protected:
+  /// The file to add the rows of `s` to, or null when this scene gets no such file.
+  OutFile* rows_for(const Snapshot& s) {
+    if (only_with_bonds_ && s.bond_a.empty()) return nullptr;
     if (!out_) {
       out_.emplace(file_);
       out_->write(header_);
     }
-    rows_(*out_, s, in);
-    out_->flush();
+    return &*out_;
   }
 
  private:
   fs::path file_;
   std::string_view header_;
-  Rows rows_;
   bool only_with_bonds_;
   std::optional<OutFile> out_;
+};
+
+/// A log with one block of rows per logging step (energy.csv, walls.csv, bonds.csv).
+class CsvLog final : public CsvRows {
+ public:
+  using Rows = std::function<void(OutFile&, const Snapshot&, const LogInputs&)>;
+  CsvLog(fs::path file, std::string_view header, Rows rows, bool only_with_bonds = false)
+      : CsvRows(std::move(file), header, only_with_bonds), rows_(std::move(rows)) {}
+
+  void log(const Snapshot& s, const LogInputs& in) override {
+    OutFile* out = rows_for(s);
+    if (out == nullptr) return;
+    rows_(*out, s, in);
+    out->flush();
+  }
+
+ private:
+  Rows rows_;
+};
+
+/// A [[measure]]'s file: a row of measure_region() at each of its steps.
+class MeasureLog final : public CsvRows {
+ public:
+  MeasureLog(const fs::path& dir, MeasureSpec spec, std::int64_t every)
+      : CsvRows(dir / spec.file_name(), kMeasureHeader), spec_(std::move(spec)), every_(every) {}
+
+  void measure(const Snapshot& s, bool last_step) override {
+    if (!measure_due(every_, s.step, last_step)) return;
+    OutFile& out = *rows_for(s);
+    write_measure_row(out, measure_region(s, spec_.region));
+    out.flush();
+  }
+
+ private:
+  MeasureSpec spec_;
+  std::int64_t every_;
 };
 
 /// A file of the state the run ends (or stops) with: final.csv, bodies.csv.
@@ -148,7 +180,9 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   std::vector<std::unique_ptr<OutputWriter>> w;
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kFrameFiles, ".vtu", "tridem.pvd", ".png"},
-      [encoding](const fs::path& f, const Snapshot& s) { write_vtu_frame(f, s, encoding); }));
+      [encoding, contacts = settings.contacts](const fs::path& f, const Snapshot& s) {
+        write_vtu_frame(f, s, encoding, contacts);
+      }));
   const bool contacts = settings.contacts;
   w.push_back(std::make_unique<StepFileWriter>(dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
                                                contacts ? Write(write_contacts_csv) : Write()));
@@ -175,6 +209,8 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
         write_bond_row(out, s, in.budget.dissipated_fracture);
       },
       true));
+  for (const MeasureSpec& m : settings.measures)
+    w.push_back(std::make_unique<MeasureLog>(dir, m, settings.measure_every(m)));
   w.push_back(std::make_unique<FinalCsv>(dir / "final.csv", write_final_csv));
   w.push_back(std::make_unique<FinalCsv>(dir / "bodies.csv", write_bodies_csv));
   return w;

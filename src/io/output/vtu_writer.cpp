@@ -3,6 +3,7 @@
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "io/output/vtk_xml_writer.hpp"
+#include "tridem/measurements.hpp"
 #include "tridem/output.hpp"
 
 #include <fmt/format.h>
@@ -27,7 +28,8 @@ std::vector<double> interleave3(const std::vector<double>& a, const std::vector<
 
 }  // namespace
 
-void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encoding encoding) {
+void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encoding encoding,
+                     bool with_grain_stress) {
   io::check_snapshot(s, file.string());
   io::check_bodies(s, file.string(), /*members_only=*/s.body_x.empty());
   const std::size_t n = s.size();
@@ -76,6 +78,26 @@ void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encod
   // The body of each triangle (its own id when it is a body of one member): ParaView
   // colours by it, and `tridem render --color body` reads it back.
   io::write_data_array<std::int64_t>(out, "body", body, 1, encoding, 8);
+  // Each grain's own Love-Weber stress and contact count (tridem/measurements.hpp), on
+  // every triangle of the grain; zeros where the snapshot holds no contacts (step 0).
+  // Left out without the contacts: a frame would otherwise show zeros for every grain.
+  if (with_grain_stress) {
+    const GrainStress grain = grain_stress(s);
+    std::vector<double> stress(9 * n), pressure(n);
+    std::vector<std::int32_t> coordination(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto g = static_cast<std::size_t>(body[k]);
+      stress[9 * k] = grain.sxx[g];
+      stress[9 * k + 1] = grain.sxy[g];
+      stress[9 * k + 3] = grain.syx[g];
+      stress[9 * k + 4] = grain.syy[g];
+      pressure[k] = 0.5 * (grain.sxx[g] + grain.syy[g]);
+      coordination[k] = grain.coordination[g];
+    }
+    io::write_data_array<double>(out, "stress", stress, 9, encoding, 8);
+    io::write_data_array<double>(out, "pressure", pressure, 1, encoding, 8);
+    io::write_data_array<std::int32_t>(out, "coordination", coordination, 1, encoding, 8);
+  }
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
   io::end_vtk_file(out);
   out.close();

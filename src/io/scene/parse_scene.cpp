@@ -51,7 +51,8 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
   static constexpr std::string_view kKnown[] = {"simulation", "output",   "material", "triangle",
-                                                "body",       "generate", "import",   "mesh"};
+                                                "body",       "generate", "import",   "mesh",
+                                                "measure"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -62,7 +63,7 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
   if (first)
     throw SceneError(
         fmt::format("{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]], [[mesh]])",
+                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]], [[mesh]], [[measure]])",
                     where(source, first->source()), first->str()));
 }
 
@@ -93,6 +94,10 @@ Scene parse_scene(std::string_view toml_text, std::string source_name) {
   scene.simulation = scene_detail::parse_simulation(*simulation, source);
   if (const toml::table* output = single_table(root, "output", source))
     scene.output = scene_detail::parse_output(*output, source);
+  const auto measures = blocks(root, "measure", source);
+  for (std::size_t i = 0; i < measures.size(); ++i)
+    scene.output.measures.push_back(
+        scene_detail::parse_measure(*measures[i], source, i + 1, scene.output.measures));
 
   const auto materials = blocks(root, "material", source);
   if (materials.empty())

@@ -6,6 +6,7 @@
 #include "tridem/scene.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,18 @@ namespace tridem::scene_detail {
 
 SimulationSettings parse_simulation(const toml::table& table, const std::string& source);
 OutputSettings parse_output(const toml::table& table, const std::string& source);
+
+/// One [[measure]] block: `number` is its 1-based position among them, `earlier` those
+/// before it (names and files must be unique).
+MeasureSpec parse_measure(const toml::table& table, const std::string& source, std::size_t number,
+                          const std::vector<MeasureSpec>& earlier);
+/// The rules of a [[measure]], shared by its reader and validate_scene: why a name, a
+/// region or a file is refused, or why it clashes with an earlier measure; nullopt if not.
+std::optional<std::string> measure_name_problem(std::string_view name);
+std::optional<std::string> measure_region_problem(const MeasureRegion& region);
+std::optional<std::string> measure_file_problem(std::string_view file);
+std::optional<std::string> measure_clash(const MeasureSpec& m,
+                                         const std::vector<MeasureSpec>& earlier);
 
 /// `number` is the 1-based position among the [[material]] blocks; `earlier` are those
 /// before it (names must be unique).

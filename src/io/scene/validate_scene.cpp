@@ -27,6 +27,24 @@ class Refuser {
   std::string prefix_;
 };
 
+void check_measures(const std::vector<MeasureSpec>& measures, const Refuser& refuse) {
+  for (std::size_t k = 0; k < measures.size(); ++k) {
+    const MeasureSpec& m = measures[k];
+    const auto fail = [&](std::string_view key, const std::string& why) {
+      refuse(fmt::format("[[measure]] #{} {}{}", k + 1, key.empty() ? "" : fmt::format("{} ", key),
+                         why));
+    };
+    if (auto why = scene_detail::measure_name_problem(m.name)) fail("name", *why);
+    if (m.region)
+      if (auto why = scene_detail::measure_region_problem(*m.region)) fail("region", *why);
+    if (m.every && *m.every < 0) fail("every", fmt::format("must be >= 0, got {}", *m.every));
+    if (!m.file.empty())
+      if (auto why = scene_detail::measure_file_problem(m.file)) fail("file", *why);
+    const std::vector<MeasureSpec> earlier(measures.begin(), measures.begin() + k);
+    if (auto why = scene_detail::measure_clash(m, earlier)) fail("", *why);
+  }
+}
+
 void check_settings(const Scene& scene, const Refuser& refuse) {
   const SimulationSettings& s = scene.simulation;
   if (s.duration != 0) {
@@ -63,6 +81,7 @@ void check_settings(const Scene& scene, const Refuser& refuse) {
   if (scene.output.energy_every && *scene.output.energy_every < 0)
     refuse(fmt::format("[output] energy_every must be >= 0, got {}", *scene.output.energy_every));
   if (scene.output.dir.empty()) refuse("[output] dir must not be empty");
+  check_measures(scene.output.measures, refuse);
 }
 
 void check_materials(const Scene& scene, const Refuser& refuse) {

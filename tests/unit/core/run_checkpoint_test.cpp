@@ -23,6 +23,9 @@ Scene pile(const fs::path& dir) {
   s.output.dir = dir.string();
   s.output.every = 50;
   s.output.checkpoint_every = 100;
+  MeasureSpec all;  // a [[measure]]'s file is cut back and continued like the logs
+  all.name = "all";
+  s.output.measures.push_back(all);
   return s;
 }
 
@@ -38,8 +41,9 @@ RunSummary run(const Scene& s, std::optional<std::int64_t> steps = std::nullopt,
 }
 
 void expect_same_outputs(const fs::path& a, const fs::path& b) {
-  for (const char* f : {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
-                        "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv"})
+  for (const char* f :
+       {"energy.csv", "walls.csv", "final.csv", "tridem.pvd", "contacts.pvd",
+        "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv", "measure_all.csv"})
     EXPECT_EQ(test::read_file(a / f), test::read_file(b / f)) << f;
 }
 
@@ -56,6 +60,8 @@ TEST(RunCheckpoint, RestartContinuesTheOutputsExactly) {
   fs::copy_file(dir.path() / "broken" / "checkpoint.ckpt", saved);
   run(broken, 250, saved);
   ASSERT_TRUE(fs::exists(dir.path() / "broken" / "frames" / "frame_000000250.vtu"));
+  ASSERT_EQ(test::read_lines(dir.path() / "broken" / "measure_all.csv").size(), 1u + 5u)
+      << "rows at 50 ... 250, the 250 one to be replaced";
 
   const RunSummary s = run(broken, std::nullopt, saved);
   EXPECT_EQ(s.steps, 100);

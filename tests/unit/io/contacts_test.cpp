@@ -18,12 +18,22 @@ TEST(Contacts, CsvHoldsEveryContact) {
 
   const auto lines = test::read_lines(tmp.path() / "contacts" / "contacts_000001200.csv");
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "i,j,fx,fy,px,py");
+  EXPECT_EQ(lines[0], "i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth");
   for (std::size_t k = 0; k < 2; ++k) {
     const ContactRecord& c = s.contacts[k];
     EXPECT_EQ(test::numbers(lines[1 + k]),
-              (std::vector<double>{double(c.i), double(c.j), c.fx, c.fy, c.px, c.py}));
+              (std::vector<double>{double(c.i), double(c.j), c.fx, c.fy, c.px, c.py, c.nx, c.ny,
+                                   c.normal_force(), c.tangential_force(), c.sliding ? 1.0 : 0.0,
+                                   c.depth}));
   }
+  // The split adds back to the force: f = −fn·n + ft·t, t = (−ny, nx). Contact 0: n = (0.6,
+  // 0.8), t = (−0.8, 0.6), f = (−3, 2): fn = 1.8 − 1.6 = 0.2, ft = 2.4 + 1.2 = 3.6.
+  const ContactRecord& c = s.contacts[0];
+  EXPECT_NEAR(c.normal_force(), 0.2, 1e-15);
+  EXPECT_NEAR(c.tangential_force(), 3.6, 1e-15);
+  EXPECT_DOUBLE_EQ(-c.normal_force() * c.nx - c.tangential_force() * c.ny, c.fx);
+  EXPECT_DOUBLE_EQ(-c.normal_force() * c.ny + c.tangential_force() * c.nx, c.fy);
+  EXPECT_EQ(test::numbers(lines[1]).size(), 12u);
 }
 
 TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
@@ -39,6 +49,12 @@ TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
   const auto offsets = io::decode_array(f, *io::find_array(f, "Lines", "offsets"), 1, 2);
   const auto force = io::decode_array(f, *io::find_array(f, "CellData", "force"), 3, 2);
   const auto magnitude = io::decode_array(f, *io::find_array(f, "CellData", "magnitude"), 1, 2);
+  const auto normal = io::decode_array(f, *io::find_array(f, "CellData", "normal"), 3, 2);
+  const auto fn = io::decode_array(f, *io::find_array(f, "CellData", "normal_force"), 1, 2);
+  const auto ft = io::decode_array(f, *io::find_array(f, "CellData", "tangential_force"), 1, 2);
+  const auto sliding = io::decode_array(f, *io::find_array(f, "CellData", "sliding"), 1, 2);
+  const auto depth = io::decode_array(f, *io::find_array(f, "CellData", "depth"), 1, 2);
+  EXPECT_EQ(sliding, (std::vector<double>{1, 0}));
   EXPECT_EQ(offsets, (std::vector<double>{2, 4}));
   for (std::size_t k = 0; k < 2; ++k) {
     const ContactRecord& c = s.contacts[k];
@@ -51,6 +67,11 @@ TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
     EXPECT_EQ(force[3 * k + 1], c.fy);
     EXPECT_EQ(force[3 * k + 2], 0);
     EXPECT_DOUBLE_EQ(magnitude[k], std::hypot(c.fx, c.fy));
+    EXPECT_EQ(normal[3 * k], c.nx);
+    EXPECT_EQ(normal[3 * k + 1], c.ny);
+    EXPECT_EQ(fn[k], c.normal_force());
+    EXPECT_EQ(ft[k], c.tangential_force());
+    EXPECT_EQ(depth[k], c.depth);
   }
 }
 
@@ -60,7 +81,8 @@ TEST(Contacts, NoContactsGiveHeaderOnlyAndEmptyNetwork) {
   s.contacts.clear();
   write_contacts_csv(tmp.path() / "c.csv", s);
   write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
-  EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"), (std::vector<std::string>{"i,j,fx,fy,px,py"}));
+  EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"),
+            (std::vector<std::string>{"i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth"}));
   const io::VtkXmlFile f =
       io::parse_vtk_xml("c.vtp", test::read_file(tmp.path() / "c.vtp"));
   EXPECT_EQ(f.piece.at("NumberOfLines"), "0");

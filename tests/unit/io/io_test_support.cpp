@@ -33,7 +33,9 @@ Snapshot sample_snapshot() {
   s.inertia = {83.3, 60.1, 5000};
   s.material = {0, 1, 0};
   s.motion = {Motion::Free, Motion::Free, Motion::Fixed};
-  s.contacts = {{0, 1, -3.0, 2.0, 1.2, 0.3}, {0, 2, 0.25, 20.0 / 3.0, 0.4, -0.05}};
+  // Normals (0.6, 0.8) and (0, -1): unit vectors; the first slides.
+  s.contacts = {{0, 1, -3.0, 2.0, 1.2, 0.3, 0.6, 0.8, true, 0.0125},
+                {0, 2, 0.25, 20.0 / 3.0, 0.4, -0.05, 0.0, -1.0, false, 1.0 / 3.0}};
   return s;
 }
 

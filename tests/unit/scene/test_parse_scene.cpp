@@ -49,6 +49,13 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
   EXPECT_EQ(s.output.encoding, Encoding::Ascii);
   EXPECT_EQ(s.output.checkpoint_every, 500);
   EXPECT_EQ(s.output.energy_every, 20);
+  ASSERT_EQ(s.output.measures.size(), 1u);
+  EXPECT_EQ(s.output.measures[0].name, "core");
+  ASSERT_TRUE(s.output.measures[0].region.has_value());
+  EXPECT_EQ(s.output.measures[0].region->lo.y, 2);
+  EXPECT_EQ(s.output.measures[0].region->hi.x, 5);
+  EXPECT_EQ(s.output.measures[0].every, 40);
+  EXPECT_EQ(s.output.measures[0].file_name(), "core.csv");
 
   ASSERT_EQ(s.materials.size(), 2u);
   EXPECT_EQ(s.materials[0].name, "rock");

@@ -1,0 +1,171 @@
+// Love-Weber stress, packing fraction, coordination, fabric and overlaps of a region
+// (tridem/measurements.hpp; the formulas are in docs/experiments.md, "Measurements").
+#include "tridem/measurements.hpp"
+
+#include "measure/grain_network.hpp"
+#include "measure/region_clip.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tridem {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct Tensor {
+  double xx = 0, xy = 0, yx = 0, yy = 0;
+};
+
+/// Σ_c f_i (x_c − x_p)_j of every grain p over its triangle contacts: f on p, at x_c.
+std::vector<Tensor> contact_moments(const Snapshot& s, const measure::Grains& grains) {
+  std::vector<Tensor> m(grains.size());
+  for (const ContactRecord& c : s.contacts) {
+    const auto a = static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(c.i)));
+    const auto b = static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(c.j)));
+    if (a == b) continue;
+    // i (in grain a) receives +f, j (in grain b) −f.
+    for (const auto& [g, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
+      const double lx = c.px - grains.centroid[g].x, ly = c.py - grains.centroid[g].y;
+      const double fx = sign * c.fx, fy = sign * c.fy;
+      m[g].xx += fx * lx;
+      m[g].xy += fx * ly;
+      m[g].yx += fy * lx;
+      m[g].yy += fy * ly;
+    }
+  }
+  return m;
+}
+
+/// The bounding box of the free triangles' vertices (the whole domain's region), or an
+/// empty one at the origin when there is none.
+MeasureRegion free_bounding_box(const Snapshot& s) {
+  MeasureRegion box{
+      {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
+      {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
+  bool any = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.motion[i] != Motion::Free) continue;
+    any = true;
+    for (const auto& [x, y] :
+         {std::pair{s.x1[i], s.y1[i]}, std::pair{s.x2[i], s.y2[i]}, std::pair{s.x3[i], s.y3[i]}}) {
+      box.lo = {std::min(box.lo.x, x), std::min(box.lo.y, y)};
+      box.hi = {std::max(box.hi.x, x), std::max(box.hi.y, y)};
+    }
+  }
+  return any ? box : MeasureRegion{};
+}
+
+double ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
+
+}  // namespace
+
+Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>& region) {
+  const measure::Grains grains = measure::grains_of(s);
+  const std::vector<measure::GrainContact> contacts = measure::grain_contacts(s);
+  const measure::Neighbours neighbours = measure::neighbours_of(grains.size(), contacts);
+  const std::vector<bool> rattler = measure::rattlers_of(grains, neighbours);
+
+  Measurement out;
+  out.step = s.step;
+  out.time = s.time;
+  const MeasureRegion where = region ? *region : free_bounding_box(s);
+  out.area = where.area();
+
+  // The grains measured: free, with their centroid inside (every free grain without a
+  // region: the bounding box holds them all).
+  std::vector<bool> inside(grains.size(), false);
+  for (std::size_t g = 0; g < grains.size(); ++g)
+    inside[g] = grains.free[g] && (!region || region->contains(grains.centroid[g]));
+
+  const std::vector<Tensor> moment = contact_moments(s, grains);
+  Tensor sum;
+  std::int64_t grain_contact_ends = 0, mechanical_ends = 0, mechanical_grains = 0;
+  for (std::size_t g = 0; g < grains.size(); ++g) {
+    if (!inside[g]) continue;
+    ++out.particles;
+    sum.xx += moment[g].xx;
+    sum.xy += moment[g].xy;
+    sum.yx += moment[g].yx;
+    sum.yy += moment[g].yy;
+    grain_contact_ends += neighbours.first[g + 1] - neighbours.first[g];
+    if (rattler[g]) {
+      ++out.rattlers;
+      continue;
+    }
+    ++mechanical_grains;
+    for (auto k = neighbours.first[g]; k < neighbours.first[g + 1]; ++k)
+      if (!rattler[static_cast<std::size_t>(neighbours.grain[static_cast<std::size_t>(k)])])
+        ++mechanical_ends;
+  }
+  // Compression positive: a pressed grain's contact forces point into it, against the
+  // branch vectors.
+  const double inv_area = out.area > 0 ? 1.0 / out.area : kNaN;
+  out.sxx = -sum.xx * inv_area;
+  out.sxy = -sum.xy * inv_area;
+  out.syx = -sum.yx * inv_area;
+  out.syy = -sum.yy * inv_area;
+  out.pressure = 0.5 * (out.sxx + out.syy);
+  out.deviatoric = std::hypot(0.5 * (out.sxx - out.syy), 0.5 * (out.sxy + out.syx));
+
+  double solid = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.motion[i] != Motion::Free) continue;
+    solid += region ? measure::area_inside({Vec2d{s.x1[i], s.y1[i]}, Vec2d{s.x2[i], s.y2[i]},
+                                            Vec2d{s.x3[i], s.y3[i]}},
+                                           *region)
+                    : measure::triangle_area(s, i);
+  }
+  out.packing_fraction = ratio(solid, out.area);
+  out.coordination =
+      ratio(static_cast<double>(grain_contact_ends), static_cast<double>(out.particles));
+  out.mechanical_coordination =
+      ratio(static_cast<double>(mechanical_ends), static_cast<double>(mechanical_grains));
+
+  // Fabric over the contacts of the grains inside, each contact once per grain inside
+  // (n n does not depend on the normal's sign); overlaps over the contacts, each once.
+  Tensor fabric;
+  double depth_sum = 0;
+  for (const measure::GrainContact& c : contacts) {
+    const int ends =
+        int(inside[static_cast<std::size_t>(c.a)]) + int(inside[static_cast<std::size_t>(c.b)]);
+    if (ends == 0) continue;
+    fabric.xx += ends * c.normal.x * c.normal.x;
+    fabric.xy += ends * c.normal.x * c.normal.y;
+    fabric.yy += ends * c.normal.y * c.normal.y;
+    ++out.contacts;
+    depth_sum += c.depth;
+    out.max_overlap = std::max(out.max_overlap, c.depth);
+  }
+  const auto ends = static_cast<double>(grain_contact_ends);
+  out.fabric_xx = ratio(fabric.xx, ends);
+  out.fabric_xy = ratio(fabric.xy, ends);
+  out.fabric_yy = ratio(fabric.yy, ends);
+  out.mean_overlap = ratio(depth_sum, static_cast<double>(out.contacts));
+  if (out.contacts == 0) out.max_overlap = kNaN;
+  return out;
+}
+
+GrainStress grain_stress(const Snapshot& s) {
+  const measure::Grains grains = measure::grains_of(s);
+  const std::vector<Tensor> moment = contact_moments(s, grains);
+  const measure::Neighbours neighbours =
+      measure::neighbours_of(grains.size(), measure::grain_contacts(s));
+  GrainStress out;
+  const std::size_t n = grains.size();
+  for (auto* v : {&out.sxx, &out.sxy, &out.syx, &out.syy}) v->resize(n);
+  out.coordination.resize(n);
+  for (std::size_t g = 0; g < n; ++g) {
+    const double scale = grains.area[g] > 0 ? -1.0 / grains.area[g] : 0.0;
+    out.sxx[g] = scale * moment[g].xx;
+    out.sxy[g] = scale * moment[g].xy;
+    out.syx[g] = scale * moment[g].yx;
+    out.syy[g] = scale * moment[g].yy;
+    out.coordination[g] = static_cast<std::int32_t>(neighbours.first[g + 1] - neighbours.first[g]);
+  }
+  return out;
+}
+
+}  // namespace tridem
