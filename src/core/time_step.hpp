@@ -25,7 +25,7 @@ struct StepLimit {
   /// member), or -1 for a single triangle.
   std::int64_t body = -1;
   std::int64_t body_members = 0;
-  bool bonds = false;          ///< set by the cohesive bonds' springs instead (docs/fracture.md)
+  bool bonds = false;  ///< set by the cohesive bonds' springs instead (docs/fracture.md)
 
   /// "particle 3 pressed on every edge by fixed or prescribed particle 0 (0.0001 m
   /// thick: a thin wall ...)", or "" when no particle is free.

@@ -50,9 +50,9 @@ const toml::table* single_table(const toml::table& root, std::string_view name,
 }
 
 void reject_unknown_top_level(const toml::table& root, const std::string& source) {
-  static constexpr std::string_view kKnown[] = {"simulation", "output",   "material", "triangle",
-                                                "body",       "generate", "import",   "mesh",
-                                                "measure"};
+  static constexpr std::string_view kKnown[] = {"simulation", "output", "material",
+                                                "triangle",   "body",   "generate",
+                                                "import",     "mesh",   "measure"};
   const toml::key* first = nullptr;
   for (const auto& [key, value] : root) {
     bool known = false;
@@ -61,10 +61,10 @@ void reject_unknown_top_level(const toml::table& root, const std::string& source
       first = &key;
   }
   if (first)
-    throw SceneError(
-        fmt::format("{}: unknown top-level table or key '{}' (expected [simulation], [output], "
-                    "[[material]], [[triangle]], [[body]], [[generate]], [[import]], [[mesh]], [[measure]])",
-                    where(source, first->source()), first->str()));
+    throw SceneError(fmt::format(
+        "{}: unknown top-level table or key '{}' (expected [simulation], [output], "
+        "[[material]], [[triangle]], [[body]], [[generate]], [[import]], [[mesh]], [[measure]])",
+        where(source, first->source()), first->str()));
 }
 
 /// The body of the last triangle of `triangles`, alone.

@@ -114,7 +114,6 @@ TEST(SceneParse, FullSceneGivesExpectedValues) {
 
 TEST(SceneParse, OmittedKeysTakeDefaults) {
   const Scene s = read_scene(kScenes / "minimal.toml");
-  const SimulationSettings d;
   EXPECT_EQ(s.simulation.steps, 10);
   EXPECT_FALSE(s.simulation.dt.has_value());
   EXPECT_DOUBLE_EQ(s.simulation.safety, 0.1);
