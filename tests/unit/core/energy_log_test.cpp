@@ -47,8 +47,8 @@ TEST(EnergyLog, HasItsOwnIntervalIndependentOfFrames) {
             (std::vector<double>{0, 30, 60, 90, 120, 150, 180, 210, 240, 250}));
   // walls.csv is logged with energy.csv: 3 walls per logged step.
   EXPECT_EQ(logged_steps(dir.path() / "walls.csv").size(), 30u);
-  for (const char* frame : {"frame_000000000.vtu", "frame_000000100.vtu", "frame_000000200.vtu",
-                            "frame_000000250.vtu"})
+  for (const char* frame :
+       {"frame_000000000.vtu", "frame_000000100.vtu", "frame_000000200.vtu", "frame_000000250.vtu"})
     EXPECT_TRUE(fs::exists(dir.path() / "frames" / frame)) << frame;
   EXPECT_FALSE(fs::exists(dir.path() / "frames" / "frame_000000030.vtu"));
 }
@@ -71,12 +71,14 @@ TEST(EnergyLog, RowsCarryTheBudget) {
   const auto lines = test::read_lines(dir.path() / "energy.csv");
   ASSERT_EQ(lines.size(), 7u);
   const auto first = test::numbers(lines[1]), last = test::numbers(lines.back());
-  ASSERT_EQ(last.size(), 13u);
+  ASSERT_EQ(last.size(), 14u);  // dissipated_fracture appended after total (issue 14)
   EXPECT_NE(first[6], 0) << "potential under gravity";
   EXPECT_EQ(first[7], 0) << "no contact evaluated at step 0";
   EXPECT_GT(last[8], 0) << "damping dissipated";
-  // total = kinetic + potential + elastic + dissipations - wall work
-  EXPECT_DOUBLE_EQ(last[12], last[2] + last[6] + last[7] + last[8] + last[9] + last[10] - last[11]);
+  EXPECT_EQ(last[13], 0) << "no bonds, no fracture";
+  // total = kinetic + potential + elastic + dissipations (fracture's too) - wall work
+  EXPECT_DOUBLE_EQ(last[12], last[2] + last[6] + last[7] + last[8] + last[9] + last[10] + last[13] -
+                                 last[11]);
 }
 
 TEST(EnergyLog, SceneKeyIsReadAndChecked) {
