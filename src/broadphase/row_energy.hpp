@@ -8,6 +8,8 @@
 #include "physics/integrate.hpp"
 #include "tridem/energy_budget.hpp"
 
+#include <cstdint>
+
 namespace tridem {
 
 struct RowEnergy {
@@ -19,16 +21,17 @@ struct RowEnergy {
 /// does no work. Work of a wall W over the step: −(F_W·v_W + τ_W·ω_W)·dt, F_W and τ_W the
 /// contact force and torque on it. A pair of two walls is never listed, so the partner of
 /// a wall is free.
-template <class Real, class Offset, class Index, class WallVelocity>
+/// `result` holds PairForce or physics::PairLoad records (the fields read are in both).
+template <class Record, class Offset, class Index, class WallVelocity>
 TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, const Index* partner,
-                                      const physics::PairForce<Real>* result,
+                                      const Record* result,
                                       WallVelocity&& wall_velocity, double dt) {
   RowEnergy sum;
   Vec2d v_e{};
   double w_e = 0;
   const bool e_moves = wall_velocity(e, v_e, w_e);
   for (auto s = offset[e]; s < offset[e + 1]; ++s) {
-    const physics::PairForce<Real>& r = result[s];
+    const Record& r = result[s];
     sum.damping += static_cast<double>(r.damping_dissipation);
     sum.friction += static_cast<double>(r.friction_dissipation);
     const Vec2d f{static_cast<double>(r.force_a.x), static_cast<double>(r.force_a.y)};
@@ -48,9 +51,9 @@ TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, cons
 /// EnergyAccumulator order; host vectors or device pointers) when the backend writes it:
 /// its own row of pairs (row_energy) and, if free, what local damping took from it over
 /// the step from `before` to `after` under force f and torque m.
-template <class Sums, class Real, class Offset, class Index, class WallVelocity>
+template <class Sums, class Real, class Offset, class Index, class Record, class WallVelocity>
 TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* offset,
-                                      const Index* partner, const physics::PairForce<Real>* result,
+                                      const Index* partner, const Record* result,
                                       WallVelocity&& wall_velocity, bool free,
                                       const physics::Pose<double>& before,
                                       const physics::Pose<double>& after, Vec2<Real> f, Real m,

@@ -2,6 +2,7 @@
 
 #include "core/particle_model.hpp"
 #include "physics/contact_force.hpp"
+#include "physics/pair_record.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/snapshot.hpp"
 
@@ -22,10 +23,11 @@ std::size_t gpu_bytes(std::size_t n, std::size_t pairs) {
   const std::size_t per_particle =
       bytes_per_particle<Real>([](auto f) { for_each_gpu_particle_field(f); }) +
       kGpuListBytesPerParticle;
-  // Per pair: partner and slip twice (new and old list), emitter, slot id, result,
-  // reverse sort keys and slots, and CUB's sort scratch (keys and values).
+  // Per pair: partner and slip twice (new and old list), emitter, slot id, result (load
+  // and detail), reverse sort keys and slots, and CUB's sort scratch (keys and values).
   const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +
-                               sizeof(physics::PairForce<Real>) + 4 + 4 + 8;
+                               sizeof(physics::PairLoad<Real>) +
+                               sizeof(physics::PairDetail<Real>) + 4 + 4 + 8;
   return n * per_particle + pairs * per_pair + (16u << 20);
 }
 

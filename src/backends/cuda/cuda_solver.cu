@@ -145,6 +145,7 @@ template <class Real>
 void CudaSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     params_.time_new = physics::time_after_step(step_, params_.dt);
+    params_.details = s + 1 == steps;  // only then are this step's pair results read
     run_step(*this, kPipeline, *events_);
     ++step_;
     time_ += params_.dt;
@@ -311,6 +312,7 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
   int s = offset[emitter];
   while (!(result[s].depth > params_.max_depth)) ++s;
   const int j = partner[s];
+  pairs_->clear_details();
   auto position = [this](int i) {
     Vec2d xy;
     TRIDEM_CUDA_CHECK(cudaMemcpy(&xy.x, d_.x.data() + i, sizeof(double), cudaMemcpyDeviceToHost));

@@ -4,6 +4,7 @@
 // particles, read consecutive addresses.
 #include "physics/contact_laws.hpp"
 #include "physics/motion_program.hpp"
+#include "physics/pair_record.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/particle_fields.hpp"
 
@@ -32,7 +33,8 @@ struct PairArrays {
   const int* partner;
   const int* emitter;
   physics::PairSlip<Real>* slip;
-  physics::PairForce<Real>* result;
+  physics::PairLoad<Real>* load;      ///< what every step reads of a pair's result
+  physics::PairDetail<Real>* detail;  ///< the rest: written only when StepParams::details
   const int* reverse_offset;  ///< n + 1
   const int* reverse_slot;
 };
@@ -50,6 +52,9 @@ struct StepParams {
   /// each step from its index (physics::time_after_step).
   physics::ProgramTable programs;
   double time_new;
+  /// This step's results will be read (the last step of an advance() call): the pairs
+  /// write their PairDetail too. A pair deeper than max_depth always writes it.
+  bool details;
 };
 
 /// What the host reads back after every step.

@@ -83,7 +83,11 @@ void PairListBuilder<Real>::reserve_pairs(std::size_t pairs) {
   grow(slip_);
   grow(emitter_);
   grow(slot_id_);
-  grow(result_);
+  grow(load_);
+  if (detail_.size() < pairs) {
+    detail_.allocate(pairs);
+    clear_details();
+  }
   grow(sorted_partner_);
   grow(reverse_slot_);
   size_temp_storage();
@@ -250,7 +254,7 @@ void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vect
 template <class Real>
 PairArrays<Real> PairListBuilder<Real>::arrays() const {
   return {count_,         offset_.data(),        partner_.data(),
-          emitter_.data(), slip_.data(),          result_.data(),
+          emitter_.data(), slip_.data(),          load_.data(), detail_.data(),
           reverse_offset_.data(), reverse_slot_.data()};
 }
 
@@ -273,11 +277,22 @@ void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>&
     slip->resize(count);
     copy(*slip, slip_);
   }
+  std::vector<physics::PairLoad<Real>> load(result ? count : 0);
+  std::vector<physics::PairDetail<Real>> detail(result ? count : 0);
+  copy(load, load_);
+  copy(detail, detail_);
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   if (result) {
     result->resize(count);
-    copy(*result, result_);
+    for (std::size_t s = 0; s < count; ++s) (*result)[s] = physics::joined(load[s], detail[s]);
   }
-  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+}
+
+template <class Real>
+void PairListBuilder<Real>::clear_details() const {
+  if (detail_.size() > 0)
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(detail_.data(), 0, detail_.size() * sizeof(detail_.data()[0]),
+                                      stream_));
 }
 
 template class PairListBuilder<float>;

@@ -55,10 +55,14 @@ class PairListBuilder {
   std::size_t capacity() const { return partner_.size(); }
   std::int64_t builds() const { return builds_; }
 
-  /// The list of the last step on the host (for contact output and checkpoints).
+  /// The list of the last step on the host (for contact output and checkpoints). The
+  /// results' details are those of the last step that wrote them (StepParams::details).
   void download(std::vector<int>& offset, std::vector<int>& partner,
                 std::vector<physics::PairSlip<Real>>* slip,
                 std::vector<physics::PairForce<Real>>* result) const;
+  /// Zeroes the details, so that a deep pair reported once is not found again in a slot
+  /// that a later step leaves unwritten.
+  void clear_details() const;
 
  private:
   void reserve_pairs(std::size_t pairs);
@@ -98,7 +102,8 @@ class PairListBuilder {
   DeviceBuffer<int> partner_, old_partner_;
   DeviceBuffer<physics::PairSlip<Real>> slip_, old_slip_;
   DeviceBuffer<int> emitter_, slot_id_;
-  DeviceBuffer<physics::PairForce<Real>> result_;
+  DeviceBuffer<physics::PairLoad<Real>> load_;
+  DeviceBuffer<physics::PairDetail<Real>> detail_;  ///< zeroed when allocated
   // Reverse index: slots sorted by partner.
   DeviceBuffer<int> sorted_partner_, reverse_slot_, reverse_offset_;
   DeviceBuffer<std::uint8_t> temp_;  ///< CUB scratch

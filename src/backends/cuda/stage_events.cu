@@ -6,6 +6,7 @@ namespace tridem::cuda {
 
 StageEvents::StageEvents(cudaStream_t stream) : stream_(stream) {
   every = kSampleEvery;
+  shares_of_wall = true;
   for (auto& step : events_)
     for (cudaEvent_t& e : step) TRIDEM_CUDA_CHECK(cudaEventCreate(&e));
 }
@@ -55,7 +56,7 @@ StageTimes StageEvents::times() const {
   drain();
   StageTimes t;
   fill(t, seconds_.data());
-  t.clock = "CUDA events";
+  t.clock = "CUDA events (shares of the steps' wall time)";
   return t;
 }
 

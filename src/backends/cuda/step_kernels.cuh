@@ -53,7 +53,8 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   const int e = q.emitter[s], j = q.partner[s];
   if constexpr (kBodies) {
     if (physics::same_body(member_body, e, j)) {
-      q.result[s] = physics::PairForce<Real>{};
+      q.load[s] = physics::PairLoad<Real>{};
+      if (sp.details) q.detail[s] = physics::PairDetail<Real>{};
       q.slip[s] = physics::PairSlip<Real>{};
       return;
     }
@@ -63,10 +64,12 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   const Vec2d origin{p.x[e], p.y[e]};
   const physics::PairForce<Real> result = physics::SceneContactLaw::force(
       load_body(p, e, origin), load_body(p, j, origin), law, static_cast<Real>(sp.dt), slip);
-  q.result[s] = result;
+  q.load[s] = physics::load_of(result);
   q.slip[s] = slip;
+  const bool deep = result.depth > sp.max_depth;
+  if (sp.details || deep) q.detail[s] = physics::detail_of(result);
   // The lowest emitter, as the CPU reports it, whatever order the threads run in.
-  if (result.depth > sp.max_depth) atomicMin(&status->deep, e);
+  if (deep) atomicMin(&status->deep, e);
 }
 
 template <class Real>
@@ -95,7 +98,7 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
   if (i >= p.n || (p.free[i] != 0) == prescribed) return;
   Vec2<Real> f;
   Real t;
-  sum_pair_forces(i, q.offset, q.reverse_offset, q.reverse_slot, q.result, f, t);
+  sum_pair_forces(i, q.offset, q.reverse_offset, q.reverse_slot, q.load, f, t);
   p.fx[i] = f.x;
   p.fy[i] = f.y;
   p.torque[i] = t;
@@ -140,7 +143,7 @@ __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const Pair
     return true;
   };
   double* const* sums = p.energy;
-  tridem::add_step_energy(sums, i, q.offset, q.partner, q.result, wall_velocity, is_free, before,
+  tridem::add_step_energy(sums, i, q.offset, q.partner, q.load, wall_velocity, is_free, before,
                           after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
                           sp.gravity, sp.local_damping, sp.dt);
 }
@@ -198,7 +201,7 @@ __global__ void row_elastic_kernel(int n, PairArrays<Real> q, double* out) {
   if (i >= n) return;
   double sum = 0;
   for (int s = q.offset[i]; s < q.offset[i + 1]; ++s)
-    sum += static_cast<double>(q.result[s].elastic_energy);
+    sum += static_cast<double>(q.detail[s].elastic_energy);
   out[i] = sum;
 }
 

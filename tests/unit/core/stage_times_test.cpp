@@ -130,6 +130,48 @@ TEST(StageTimes, ASampledClockDoesNotScaleTheFirstStepsOneOffCost) {
   EXPECT_LT(t.total(), 0.2) << "20 x the 40 ms first step would be 0.8 s";
 }
 
+/// A clock whose readings slow the steps it samples, as CUDA's event records slow a
+/// launch-bound step: 2 ms inside every timed stage.
+struct IntrusiveStopwatch : StageStopwatch {
+  void end_stage(Stage stage) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    StageStopwatch::end_stage(stage);
+  }
+};
+
+/// Stages of 1 ms (pair forces) and 3 ms (integrate).
+struct UnevenBackend {
+  void run_stage(Stage stage) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(stage == Stage::PairForces ? 1 : 3));
+  }
+};
+
+// Scaled by the step count, the two slowed samples of eight steps would sum to about 64 ms
+// against 40 ms of steps; as shares of the steps' wall time they sum to no more than the
+// run took, and the slower stage keeps the larger share.
+TEST(StageTimes, SharesOfWallSumToTheStepsTimeWhenSamplingSlowsTheSamples) {
+  constexpr std::array<Stage, 2> pipeline = {Stage::PairForces, Stage::Integrate};
+  UnevenBackend backend;
+  IntrusiveStopwatch clock;
+  clock.every = 4;
+  clock.shares_of_wall = true;
+  const auto start = std::chrono::steady_clock::now();
+  for (int s = 0; s < 8; ++s) run_step(backend, pipeline, clock);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const StageTimes t = clock.times();
+  EXPECT_EQ(t.timed_steps, 2);
+  EXPECT_LE(t.total(), wall);
+  EXPECT_GE(t.total(), 8 * 4e-3);  // at least what the stages slept
+  EXPECT_GT(t.seconds[static_cast<int>(Stage::Integrate)],
+            t.seconds[static_cast<int>(Stage::PairForces)]);
+  // The same clock scaled by the step count overstates the run: what the fix is for.
+  IntrusiveStopwatch counting;
+  counting.every = 4;
+  for (int s = 0; s < 8; ++s) run_step(backend, pipeline, counting);
+  EXPECT_GT(counting.times().total(), t.total() * 1.2);
+}
+
 // A run shorter than the first sample has no stage times, and its table says so rather
 // than showing zeros.
 TEST(StageTimes, TableOfARunWithNoTimedStepSaysSo) {
