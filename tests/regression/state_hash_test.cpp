@@ -44,7 +44,7 @@ constexpr HashCase kCases[] = {
     {"grid", Method::Grid, Precision::Double, ContactTest::Exact, 0x1bfb0035529ccf25,
      0x226b5204d7f095dc},
     {"grid-float", Method::Grid, Precision::Float, ContactTest::Exact, 0xfef6e2c8d89186fa,
-     0xdc0e4b6a1d5b4a14},
+     0xf4c67066dd607b62},
     {"all-pairs", Method::AllPairs, Precision::Double, ContactTest::Exact, 0x1bfb0035529ccf25,
      0x226b5204d7f095dc},
     {"single-domain", Method::SingleDomain, Precision::Double, ContactTest::Exact,
@@ -54,7 +54,7 @@ constexpr HashCase kCases[] = {
     {"decomposition", Method::Decomposition, Precision::Double, ContactTest::Exact,
      0x1bfb0035529ccf25, 0x226b5204d7f095dc},
     {"decomposition-float", Method::Decomposition, Precision::Float, ContactTest::Exact,
-     0xfef6e2c8d89186fa, 0xdc0e4b6a1d5b4a14},
+     0xfef6e2c8d89186fa, 0xf4c67066dd607b62},
 };
 
 constexpr std::int64_t kSteps = 300;
