@@ -6,12 +6,10 @@
 #   bench/compare_builds.sh OUTDIR NAME...    env: BENCH_ARGS (default: dense_pile 10^4..10^6,
 #                                             cuda and cuda-float), ROUNDS (3)
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
+source "$(dirname "$0")/../scripts/device_env.sh"
 out="${1:?give an output folder}"
 shift
 mkdir -p "$out"
-"$root/scripts/device_unpack.sh"
-export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv >"$out/gpu.txt"
 args=${BENCH_ARGS:---backends=cuda,cuda-float --min_n=1e4 --max_n=1e6 --scenes=dense_pile}
 for round in $(seq 1 "${ROUNDS:-3}"); do

@@ -4,13 +4,10 @@
 #   bench/run_gpu_tests_on_device.sh OUTDIR NAME=FILTER=SECONDS...
 #   (NAME: tridem_tests or tridem_tests_X; e.g. tridem_tests='*Gpu*'=400)
 set -uo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
+source "$(dirname "$0")/../scripts/device_env.sh"
 out="${1:?give an output folder}"
 shift
 mkdir -p "$out"
-"$root/scripts/device_unpack.sh"
-export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-if [ ! -e /work/main/tests ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
 status=0
 for spec in "$@"; do
   IFS='=' read -r name filter seconds <<<"$spec"
