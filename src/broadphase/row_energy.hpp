@@ -24,8 +24,8 @@ struct RowEnergy {
 /// `result` holds PairForce or physics::PairLoad records (the fields read are in both).
 template <class Record, class Offset, class Index, class WallVelocity>
 TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, const Index* partner,
-                                      const Record* result,
-                                      WallVelocity&& wall_velocity, double dt) {
+                                      const Record* result, WallVelocity&& wall_velocity,
+                                      double dt) {
   RowEnergy sum;
   Vec2d v_e{};
   double w_e = 0;

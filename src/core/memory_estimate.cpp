@@ -26,8 +26,8 @@ std::size_t gpu_bytes(std::size_t n, std::size_t pairs) {
   // Per pair: partner and slip twice (new and old list), emitter, slot id, result (load
   // and detail), reverse sort keys and slots, and CUB's sort scratch (keys and values).
   const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +
-                               sizeof(physics::PairLoad<Real>) +
-                               sizeof(physics::PairDetail<Real>) + 4 + 4 + 8;
+                               sizeof(physics::PairLoad<Real>) + sizeof(physics::PairDetail<Real>) +
+                               4 + 4 + 8;
   return n * per_particle + pairs * per_pair + (16u << 20);
 }
 

@@ -253,9 +253,8 @@ void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vect
 
 template <class Real>
 PairArrays<Real> PairListBuilder<Real>::arrays() const {
-  return {count_,         offset_.data(),        partner_.data(),
-          emitter_.data(), slip_.data(),          load_.data(), detail_.data(),
-          reverse_offset_.data(), reverse_slot_.data()};
+  return {count_,       offset_.data(), partner_.data(),        emitter_.data(),     slip_.data(),
+          load_.data(), detail_.data(), reverse_offset_.data(), reverse_slot_.data()};
 }
 
 template <class Real>
@@ -291,8 +290,8 @@ void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>&
 template <class Real>
 void PairListBuilder<Real>::clear_details() const {
   if (detail_.size() > 0)
-    TRIDEM_CUDA_CHECK(cudaMemsetAsync(detail_.data(), 0, detail_.size() * sizeof(detail_.data()[0]),
-                                      stream_));
+    TRIDEM_CUDA_CHECK(
+        cudaMemsetAsync(detail_.data(), 0, detail_.size() * sizeof(detail_.data()[0]), stream_));
 }
 
 template class PairListBuilder<float>;

@@ -1,9 +1,9 @@
 // The GPU keeps a pair's result as a load (read every step) and a detail (read by output):
 // taken apart and joined again it is the same PairForce, and the sums every backend makes
 // of a row (forces, torques, energy) read the same numbers from either record.
+#include "physics/pair_record.hpp"
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
-#include "physics/pair_record.hpp"
 #include "physics/restitution.hpp"
 
 #include <gtest/gtest.h>
@@ -75,15 +75,17 @@ TEST(PairRecord, RowSumsReadTheSameFromLoadsAsFromWholeResults) {
   for (int i = 0; i < 3; ++i) {
     V f_whole, f_load;
     double t_whole = 0, t_load = 0;
-    tridem::sum_pair_forces(i, offset.data(), reverse_offset.data(), reverse_slot.data(), whole.data(),
-                    f_whole, t_whole);
-    tridem::sum_pair_forces(i, offset.data(), reverse_offset.data(), reverse_slot.data(), loads.data(),
-                    f_load, t_load);
+    tridem::sum_pair_forces(i, offset.data(), reverse_offset.data(), reverse_slot.data(),
+                            whole.data(), f_whole, t_whole);
+    tridem::sum_pair_forces(i, offset.data(), reverse_offset.data(), reverse_slot.data(),
+                            loads.data(), f_load, t_load);
     EXPECT_EQ(f_whole.x, f_load.x);
     EXPECT_EQ(f_whole.y, f_load.y);
     EXPECT_EQ(t_whole, t_load);
-    const tridem::RowEnergy a = tridem::row_energy(i, offset.data(), partner.data(), whole.data(), moving_wall, 1e-4);
-    const tridem::RowEnergy b = tridem::row_energy(i, offset.data(), partner.data(), loads.data(), moving_wall, 1e-4);
+    const tridem::RowEnergy a =
+        tridem::row_energy(i, offset.data(), partner.data(), whole.data(), moving_wall, 1e-4);
+    const tridem::RowEnergy b =
+        tridem::row_energy(i, offset.data(), partner.data(), loads.data(), moving_wall, 1e-4);
     EXPECT_EQ(a.damping, b.damping);
     EXPECT_EQ(a.friction, b.friction);
     EXPECT_EQ(a.wall_work, b.wall_work);
@@ -91,7 +93,8 @@ TEST(PairRecord, RowSumsReadTheSameFromLoadsAsFromWholeResults) {
   // The rows are not empty: the comparison above compared something.
   V f;
   double t = 0;
-  tridem::sum_pair_forces(0, offset.data(), reverse_offset.data(), reverse_slot.data(), loads.data(), f, t);
+  tridem::sum_pair_forces(0, offset.data(), reverse_offset.data(), reverse_slot.data(),
+                          loads.data(), f, t);
   EXPECT_NE(f.x, 0);
 }
 
