@@ -144,7 +144,10 @@ void LiveView::closed(int client) {
   clients_.erase(client);
   // Nobody left to resume it: a run paused by a browser that has gone carries on.
   if (clients_.empty() && paused_.exchange(false)) {
-    if (log_) fmt::print(log_, "live: the last client has gone: the run resumes\n");
+    if (log_) {
+      fmt::print(log_, "live: the last client has gone: the run resumes\n");
+      std::fflush(log_);
+    }
     wake_.notify_all();
   }
 }
