@@ -11,8 +11,8 @@
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 
-#include <filesystem>
 #include <chrono>
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <thread>

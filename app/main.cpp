@@ -97,25 +97,30 @@ int main(int argc, char** argv) {
       ->check(existing("checkpoint"));
   run_cmd->add_flag("--force", run_args.force, "Run even if dt is above the stability limit");
   run_cmd->add_flag("--quiet", run_args.quiet, "No progress bar");
-  auto* live_opt = run_cmd
-      ->add_option("--live", run_args.live,
-                   "Serve a live view of the run in the browser on PORT (default 8765; "
-                   "docs/live-view.md)")
-      ->expected(0, 1)
-      ->check(port_number());
-  run_cmd->add_option("--live-host", run_args.live_host,
-                      "Address the live view listens on (default 127.0.0.1, this machine only)")
+  auto* live_opt =
+      run_cmd
+          ->add_option("--live", run_args.live,
+                       "Serve a live view of the run in the browser on PORT (default 8765; "
+                       "docs/live-view.md)")
+          ->expected(0, 1)
+          ->check(port_number());
+  run_cmd
+      ->add_option("--live-host", run_args.live_host,
+                   "Address the live view listens on (default 127.0.0.1, this machine only)")
       ->needs(live_opt);
-  run_cmd->add_flag("--live-paused", run_args.live_paused,
-                    "With --live: hold the run after its first step until the page resumes it")
+  run_cmd
+      ->add_flag("--live-paused", run_args.live_paused,
+                 "With --live: hold the run after its first step until the page resumes it")
       ->needs(live_opt);
 
   ViewArgs view_args;
   auto* view_cmd =
       cli.add_subcommand("view", "Serve the live view's page over a finished run's frames");
   view_cmd->add_option("dir", view_args.dir, "Output directory (with frames/*.vtu)")
-      ->required()->check(existing("output directory"));
-  view_cmd->add_option("--port", view_args.port, "Port (default 8765)")->check(CLI::Range(0, 65535));
+      ->required()
+      ->check(existing("output directory"));
+  view_cmd->add_option("--port", view_args.port, "Port (default 8765)")
+      ->check(CLI::Range(0, 65535));
   view_cmd->add_option("--host", view_args.host, "Address to listen on (default 127.0.0.1)");
 
   std::string info_scene;

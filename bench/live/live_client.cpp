@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
       buffer.clear();
       beast::error_code ec;
       ws.read(buffer, ec);
-      if (ec) break;  // the run has ended and the server closed
+      if (ec) break;                // the run has ended and the server closed
       if (ws.got_text()) continue;  // state and stats
       const auto* data = static_cast<const unsigned char*>(buffer.data().data());
       std::uint32_t kind = 0;
@@ -66,9 +66,8 @@ int main(int argc, char** argv) {
     std::printf("{\"frames\": %lld, \"seconds\": %.3f, \"fps\": %.2f, \"mb_per_s\": %.2f, "
                 "\"first_step\": %lld, \"last_step\": %lld}\n",
                 static_cast<long long>(frames), span,
-                frames > 1 ? static_cast<double>(frames - 1) / span : 0.0,
-                bytes / span / 1e6, static_cast<long long>(first_step),
-                static_cast<long long>(last_step));
+                frames > 1 ? static_cast<double>(frames - 1) / span : 0.0, bytes / span / 1e6,
+                static_cast<long long>(first_step), static_cast<long long>(last_step));
     beast::error_code ec;
     ws.close(websocket::close_code::normal, ec);
   } catch (const std::exception& e) {

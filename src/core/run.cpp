@@ -97,8 +97,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   }
 
   OutputSet out(scene.output, scene.output.dir, scene.output.encoding, resume);
-  TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress,
-                options.observer);
+  TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress, options.observer);
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
   loop.start(resume.has_value());

@@ -41,10 +41,14 @@ ClientMessage parse_client_message(std::string_view text) {
   ClientMessage m;
   using K = ClientMessage::Kind;
   const bool bare = space == std::string_view::npos;
-  if (word == "next" && bare) m.kind = K::Next;
-  else if (word == "pause" && bare) m.kind = K::Pause;
-  else if (word == "resume" && bare) m.kind = K::Resume;
-  else if (word == "step" && bare) m.kind = K::Step;
+  if (word == "next" && bare)
+    m.kind = K::Next;
+  else if (word == "pause" && bare)
+    m.kind = K::Pause;
+  else if (word == "resume" && bare)
+    m.kind = K::Resume;
+  else if (word == "step" && bare)
+    m.kind = K::Step;
   else if (word == "fps" && !bare) {
     if (!parse_number(arg, kMinFps, kMaxFps, m.value))
       return invalid(fmt::format("fps wants a whole number from {} to {}, got '{}'", kMinFps,

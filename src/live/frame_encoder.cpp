@@ -26,9 +26,7 @@ void put_array(std::string& out, const std::vector<T>& values) {
 }
 
 /// A finite float, so that a blown-up value cannot poison the page's ranges.
-float finite(double v) {
-  return std::isfinite(v) ? static_cast<float>(v) : 0.0F;
-}
+float finite(double v) { return std::isfinite(v) ? static_cast<float>(v) : 0.0F; }
 
 }  // namespace
 
@@ -96,8 +94,7 @@ std::string encode_frame(const FrameData& f) {
   put(out, std::uint32_t{0});
   put(out, f.time);
   put(out, f.step);
-  for (std::size_t k = 0; k < 2 * fields; ++k)
-    put(out, k < f.ranges.size() ? f.ranges[k] : 0.0F);
+  for (std::size_t k = 0; k < 2 * fields; ++k) put(out, k < f.ranges.size() ? f.ranges[k] : 0.0F);
   put_array(out, f.x);
   put_array(out, f.y);
   put_array(out, f.angle);
@@ -140,9 +137,8 @@ std::string encode_stats(const FrameData& f, bool paused, int fps) {
   return fmt::format(
       R"({{"step":{},"time":{},"kinetic":{},"potential":{},"elastic":{},"dissipated":{},)"
       R"("wall_work":{},"wall_fx":{},"wall_fy":{},"paused":{},"fps":{}}})",
-      f.step, num(f.time), num(f.kinetic), num(f.potential), num(f.elastic),
-      num(f.dissipated), num(f.wall_work), num(f.wall_fx), num(f.wall_fy),
-      paused ? "true" : "false", fps);
+      f.step, num(f.time), num(f.kinetic), num(f.potential), num(f.elastic), num(f.dissipated),
+      num(f.wall_work), num(f.wall_fx), num(f.wall_fy), paused ? "true" : "false", fps);
 }
 
 }  // namespace tridem::live

@@ -34,7 +34,7 @@ struct FrameData {
   double time = 0;
   std::vector<float> x, y, angle;
   std::vector<std::vector<float>> fields;  ///< speed, force[, damage]
-  std::vector<float> ranges;  ///< min, max of each field over the free triangles
+  std::vector<float> ranges;               ///< min, max of each field over the free triangles
   double kinetic = 0, potential = 0, elastic = 0, dissipated = 0, wall_work = 0;
   double wall_fx = 0, wall_fy = 0;  ///< the contact force on the fixed and prescribed triangles
   std::size_t size() const { return x.size(); }

@@ -67,9 +67,8 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     beast::get_lowest_layer(ws_).expires_never();
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(kMaxWebSocketMessage);
-    ws_.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
-      self->on_accept(ec);
-    });
+    ws_.async_accept(request,
+                     [self = shared_from_this()](beast::error_code ec) { self->on_accept(ec); });
   }
 
   void send(LiveServer::Message message, bool binary) {
@@ -129,10 +128,9 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 
   void write_next() {
     ws_.binary(queue_.front().second);
-    ws_.async_write(asio::buffer(*queue_.front().first),
-                    [self = shared_from_this()](beast::error_code ec, std::size_t) {
-                      self->on_write(ec);
-                    });
+    ws_.async_write(
+        asio::buffer(*queue_.front().first),
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_write(ec); });
   }
 
   void on_write(beast::error_code ec) {
@@ -141,8 +139,10 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       return;
     }
     queue_.pop_front();
-    if (!queue_.empty()) write_next();
-    else if (closing_) send_close();
+    if (!queue_.empty())
+      write_next();
+    else if (closing_)
+      send_close();
   }
 
   void send_close() {
@@ -181,10 +181,9 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     parser_->header_limit(kMaxRequestHeader);
     parser_->body_limit(kMaxRequestBody);
     stream_.expires_after(std::chrono::seconds(30));
-    http::async_read(stream_, buffer_, *parser_,
-                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
-                       self->on_read(ec);
-                     });
+    http::async_read(
+        stream_, buffer_, *parser_,
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_read(ec); });
   }
 
  private:
@@ -201,8 +200,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     http::request<http::string_body> request = parser_->release();
     if (websocket::is_upgrade(request) && request.target() == "/ws" && !server_.stopping) {
       const int id = server_.next_id++;
-      std::make_shared<WsSession>(stream_.release_socket(), server_, id)
-          ->start(std::move(request));
+      std::make_shared<WsSession>(stream_.release_socket(), server_, id)->start(std::move(request));
       return;
     }
     respond(request);
@@ -254,14 +252,13 @@ void LiveServer::Impl::accept() {
   });
 }
 
-LiveServer::LiveServer(const std::string& host, unsigned short port, Events& events,
-                       std::FILE* log)
+LiveServer::LiveServer(const std::string& host, unsigned short port, Events& events, std::FILE* log)
     : impl_(std::make_unique<Impl>(events, log)) {
   beast::error_code ec;
   const asio::ip::address address = asio::ip::make_address(host, ec);
   if (ec)
-    throw Error(fmt::format("--live-host '{}' is not an IP address (e.g. 127.0.0.1 or 0.0.0.0)",
-                            host));
+    throw Error(
+        fmt::format("--live-host '{}' is not an IP address (e.g. 127.0.0.1 or 0.0.0.0)", host));
   const tcp::endpoint endpoint(address, port);
   tcp::acceptor& a = impl_->acceptor;
   a.open(endpoint.protocol(), ec);

@@ -22,7 +22,8 @@ LiveView::LiveView(const LiveOptions& options, Vec2d gravity, std::FILE* log)
       log_(log),
       paused_(options.start_paused),
       fps_(std::clamp<int>(options.fps, kMinFps, kMaxFps)),
-      server_(std::make_unique<LiveServer>(options.host, options.port, static_cast<LiveServer::Events&>(*this), log)) {
+      server_(std::make_unique<LiveServer>(options.host, options.port,
+                                           static_cast<LiveServer::Events&>(*this), log)) {
   if (log_) {
     fmt::print(log_, "live view on http://{}:{}/ (tridem serves it while the run lasts){}\n",
                options.host.find(':') == std::string::npos ? options.host
@@ -132,7 +133,8 @@ void LiveView::received(int client, const ClientMessage& m) {
       break;
     case K::Fps: fps_.store(static_cast<int>(m.value)); break;
     case K::Seek:
-      if (log_) fmt::print(log_, "live: client {}: seek is for replays (tridem view); dropped\n", client);
+      if (log_)
+        fmt::print(log_, "live: client {}: seek is for replays (tridem view); dropped\n", client);
       return;
     case K::Invalid: return;
   }

@@ -33,7 +33,8 @@ void angles_from_vertices(const Snapshot& first, Snapshot& snap) {
 ReplayView::ReplayView(const fs::path& dir, const LiveOptions& options, std::FILE* log)
     : files_(replay_frames(dir)), log_(log), first_(read_vtu_frame(files_.front())) {
   geometry_ = std::make_shared<const std::string>(encode_geometry(first_));
-  server_ = std::make_unique<LiveServer>(options.host, options.port, static_cast<LiveServer::Events&>(*this), log);
+  server_ = std::make_unique<LiveServer>(options.host, options.port,
+                                         static_cast<LiveServer::Events&>(*this), log);
   if (log_) {
     fmt::print(log_, "replay of {} frame{} of {} on http://{}:{}/ (Ctrl-C to stop)\n",
                files_.size(), files_.size() == 1 ? "" : "s", dir.string(), options.host,
@@ -47,11 +48,11 @@ ReplayView::~ReplayView() { server_.reset(); }
 void ReplayView::opened(int client) {
   clients_[client] = Client{};
   server_->send(client, geometry_, true);
-  server_->send(client,
-                std::make_shared<const std::string>(fmt::format(
-                    R"({{"state":{{"paused":true,"fps":10,"ended":false,"replay":{}}}}})",
-                    files_.size())),
-                false);
+  server_->send(
+      client,
+      std::make_shared<const std::string>(fmt::format(
+          R"({{"state":{{"paused":true,"fps":10,"ended":false,"replay":{}}}}})", files_.size())),
+      false);
 }
 
 void ReplayView::send_frame(int client, std::size_t index) {

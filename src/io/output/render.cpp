@@ -186,8 +186,8 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
   lo = o.speed_min.value_or(any_free ? lo : 0);
   hi = o.speed_max.value_or(any_free ? hi : 0);
 
-  const Box region = o.region ? Box{(*o.region)[0], (*o.region)[1], (*o.region)[2], (*o.region)[3]}
-                              : bounds(s);
+  const Box region =
+      o.region ? Box{(*o.region)[0], (*o.region)[1], (*o.region)[2], (*o.region)[3]} : bounds(s);
   if (region.empty() || !(region.x1 > region.x0 && region.y1 > region.y0))
     throw Error(fmt::format("cannot render '{}': the region to draw is empty", png.string()));
   const Layout l = layout(region, o, by_speed && o.colorbar && any_free);

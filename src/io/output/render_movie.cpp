@@ -56,8 +56,7 @@ std::size_t render_movie(const fs::path& dir, const fs::path& mp4, const RenderO
     throw Error(fmt::format("{}: no frames/*.vtu here; run with [output] every > 0 to write "
                             "frames",
                             dir.string()));
-  if (fps < 1 || fps > 120)
-    throw Error(fmt::format("movie frame rate {} is outside 1..120", fps));
+  if (fps < 1 || fps > 120) throw Error(fmt::format("movie frame rate {} is outside 1..120", fps));
   // One speed range and one region for all frames: colours and picture do not jump.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::array<double, 4> region{lo, lo, -lo, -lo};
@@ -65,7 +64,8 @@ std::size_t render_movie(const fs::path& dir, const fs::path& mp4, const RenderO
     const Snapshot s = read_vtu_frame(f);
     for (std::size_t k = 0; k < s.size(); ++k) {
       const double v = std::hypot(s.vx[k], s.vy[k]);
-      if (s.motion[k] == Motion::Free && std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (s.motion[k] == Motion::Free && std::isfinite(v))
+        lo = std::min(lo, v), hi = std::max(hi, v);
       for (auto [x, y] : {std::pair{s.x1[k], s.y1[k]}, {s.x2[k], s.y2[k]}, {s.x3[k], s.y3[k]}}) {
         if (!std::isfinite(x) || !std::isfinite(y)) continue;
         region[0] = std::min(region[0], x), region[1] = std::min(region[1], y);

@@ -36,9 +36,9 @@ TEST(LiveClientMessage, RefusesBadNumbersWithAReason) {
 }
 
 TEST(LiveClientMessage, RefusesUnknownEmptyAndGarbage) {
-  for (std::string bad : {std::string(), std::string("PAUSE"), std::string("pause now"),
-                          std::string(" next"), std::string("next\n"), std::string("{\"cmd\":1}"),
-                          std::string("\0\xff\x01garbage", 10)}) {
+  for (std::string bad :
+       {std::string(), std::string("PAUSE"), std::string("pause now"), std::string(" next"),
+        std::string("next\n"), std::string("{\"cmd\":1}"), std::string("\0\xff\x01garbage", 10)}) {
     const ClientMessage m = parse_client_message(bad);
     EXPECT_EQ(m.kind, K::Invalid) << bad;
     // The log line quotes it in printable characters only.

@@ -17,8 +17,8 @@ Snapshot three_triangles() {
   s.resize(3);
   s.step = 1234567;
   s.time = 0.125;
-  const double local[3][6] = {{-1, -1, 2, -1, -1, 2}, {0.5, -0.25, 0, 0.5, -0.5, -0.25},
-                              {-3, -0.5, 3, -0.5, 0, 1}};
+  const double local[3][6] = {
+      {-1, -1, 2, -1, -1, 2}, {0.5, -0.25, 0, 0.5, -0.5, -0.25}, {-3, -0.5, 3, -0.5, 0, 1}};
   const double cx[3] = {1, 4, 0}, cy[3] = {2, 2.5, -1}, th[3] = {0.5, -1.25, 0};
   for (std::size_t k = 0; k < 3; ++k) {
     s.x[k] = cx[k];
@@ -60,8 +60,8 @@ TEST(LiveFrameEncoder, GeometryIsEachTriangleAboutItsCentroidAtAngleZero) {
     EXPECT_NEAR(at<float>(g, 16 + 24 + 4 * static_cast<std::size_t>(v)), local1[v], 1e-6) << v;
   const std::size_t ids = 16 + 24 * 3;
   for (std::uint32_t k = 0; k < 3; ++k) {
-    EXPECT_EQ(at<std::uint32_t>(g, ids + 4 * k), k);           // material
-    EXPECT_EQ(at<std::uint32_t>(g, ids + 12 + 4 * k), k);      // body: its own
+    EXPECT_EQ(at<std::uint32_t>(g, ids + 4 * k), k);       // material
+    EXPECT_EQ(at<std::uint32_t>(g, ids + 12 + 4 * k), k);  // body: its own
   }
   EXPECT_EQ(at<std::uint32_t>(g, ids + 24 + 8), 1U);  // motion of the wall: fixed
 }
@@ -91,12 +91,12 @@ TEST(LiveFrameEncoder, FrameCarriesPosesFieldsRangesAndWallForce) {
   EXPECT_FLOAT_EQ(at<float>(b, 40), 1);
   EXPECT_FLOAT_EQ(at<float>(b, 44), 2);
   const std::size_t base = 48;
-  EXPECT_FLOAT_EQ(at<float>(b, base + 4), 4);            // x[1]
-  EXPECT_FLOAT_EQ(at<float>(b, base + 12 + 4), 2.5);     // y[1]
-  EXPECT_FLOAT_EQ(at<float>(b, base + 24 + 4), -1.25);   // angle[1]
-  EXPECT_FLOAT_EQ(at<float>(b, base + 36), 5);           // speed[0]
-  EXPECT_FLOAT_EQ(at<float>(b, base + 36 + 4), 0.5);     // speed[1]
-  EXPECT_FLOAT_EQ(at<float>(b, base + 48 + 8), 10);      // force[2]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 4), 4);           // x[1]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 12 + 4), 2.5);    // y[1]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 24 + 4), -1.25);  // angle[1]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 36), 5);          // speed[0]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 36 + 4), 0.5);    // speed[1]
+  EXPECT_FLOAT_EQ(at<float>(b, base + 48 + 8), 10);     // force[2]
 }
 
 TEST(LiveFrameEncoder, BondDamageIsTheLargestOfATrianglesBonds) {

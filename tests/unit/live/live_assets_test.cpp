@@ -24,9 +24,9 @@ TEST(LiveAssets, ServesThePageByExactPath) {
 }
 
 TEST(LiveAssets, NoOtherPathIsServed) {
-  for (const char* path : {"", "index.html", "/index.html/", "/../../etc/passwd", "/etc/passwd",
-                           "/live.js/..", "//live.js", "/LIVE.JS", "/ws", "/favicon.ico",
-                           "/%2e%2e/CMakeLists.txt"})
+  for (const char* path :
+       {"", "index.html", "/index.html/", "/../../etc/passwd", "/etc/passwd", "/live.js/..",
+        "//live.js", "/LIVE.JS", "/ws", "/favicon.ico", "/%2e%2e/CMakeLists.txt"})
     EXPECT_FALSE(find_asset(path)) << path;
 }
 
