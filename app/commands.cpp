@@ -2,6 +2,8 @@
 #include "restart_command.hpp"
 
 #include "interrupt.hpp"
+#include "live/live_view.hpp"
+#include "live/replay_view.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/render.hpp"
@@ -9,8 +11,11 @@
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <fmt/format.h>
+#include <memory>
+#include <thread>
 
 namespace tridem::app {
 
@@ -50,7 +55,17 @@ int run(const RunArgs& args) {
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.interrupt = &install_interrupt_handlers();
+  std::unique_ptr<live::LiveView> live_view;
+  if (args.live) {
+    live::LiveOptions lo;
+    lo.host = args.live_host;
+    lo.start_paused = args.live_paused;
+    if (!args.live->empty()) lo.port = static_cast<unsigned short>(std::stoi(*args.live));
+    live_view = std::make_unique<live::LiveView>(lo, scene.simulation.gravity, stdout);
+    options.observer = live_view.get();
+  }
   const RunSummary summary = run_scene(scene, options);
+  live_view.reset();  // the last frame sent, the connections closed
   if (!summary.interrupted_by) return 0;
   // The same command line, so that the restarted run has the same overrides: the
   // checkpoint refuses any other physics.
@@ -99,6 +114,18 @@ int info(const std::string& path) {
 
 int render(const RenderArgs& args) {
   const fs::path input = args.input;
+  if (!args.movie.empty()) {
+    if (!fs::is_directory(input))
+      throw Error(fmt::format("--movie takes an output directory (with frames/*.vtu), not "
+                              "the file '{}'",
+                              input.string()));
+    RenderOptions opt;
+    opt.width = args.width;
+    opt.color_by = value_in(kColorByNames, args.color).value_or(opt.color_by);
+    const std::size_t frames = render_movie(input, args.movie, opt, args.movie_fps);
+    fmt::print("{} ({} frames at {} per second)\n", args.movie, frames, args.movie_fps);
+    return 0;
+  }
   const fs::path frame = fs::is_directory(input) ? last_frame(input) : input;
   const Snapshot snap = read_vtu_frame(frame);
   RenderOptions opt;
@@ -109,6 +136,16 @@ int render(const RenderArgs& args) {
       args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
   render_png(snap, out, opt);
   fmt::print("{}\n", out.string());
+  return 0;
+}
+
+int view(const ViewArgs& args) {
+  live::LiveOptions lo;
+  lo.host = args.host;
+  lo.port = static_cast<unsigned short>(args.port);
+  const std::atomic<int>& interrupt = install_interrupt_handlers();
+  const live::ReplayView replay(args.dir, lo, stdout);
+  while (interrupt.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   return 0;
 }
 

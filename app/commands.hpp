@@ -21,6 +21,10 @@ struct RunArgs {
   int device = 0;
   bool force = false;
   bool quiet = false;
+  /// --live [PORT]: the live view (docs/live-view.md); empty text for the default port.
+  std::optional<std::string> live;
+  std::string live_host = "127.0.0.1";
+  bool live_paused = false;
 };
 /// 0 when the run finished; 128 + the signal's number when SIGINT or SIGTERM stopped it
 /// (after it wrote its checkpoint).
@@ -33,7 +37,17 @@ struct RenderArgs {
   std::string out;    ///< PNG path; default next to the input
   std::string color = "speed";
   int width = 1200;
+  std::string movie;  ///< --movie FILE.mp4: every frame of the directory, through ffmpeg
+  int movie_fps = 25;
 };
 int render(const RenderArgs&);
+
+struct ViewArgs {
+  std::string dir;  ///< an output directory with frames/*.vtu
+  std::string host = "127.0.0.1";
+  int port = 8765;
+};
+/// Serves the live view's page over a finished run's frames until Ctrl-C.
+int view(const ViewArgs&);
 
 }  // namespace tridem::app

@@ -43,6 +43,20 @@ CLI::Validator at_least(long long least) {
       fmt::format("INT>={}", least));
 }
 
+/// A TCP port, or nothing (the option's default).
+CLI::Validator port_number() {
+  return CLI::Validator(
+      [](std::string& text) {
+        long long v = 0;
+        return text.empty() || (CLI::detail::lexical_cast(text, v) && v >= 0 && v <= 65535)
+                   ? std::string()
+                   : fmt::format("must be a port number (0 to 65535), got '{}' (put --live "
+                                 "after the scene file, or give it a port)",
+                                 text);
+      },
+      "PORT");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -83,6 +97,31 @@ int main(int argc, char** argv) {
       ->check(existing("checkpoint"));
   run_cmd->add_flag("--force", run_args.force, "Run even if dt is above the stability limit");
   run_cmd->add_flag("--quiet", run_args.quiet, "No progress bar");
+  auto* live_opt =
+      run_cmd
+          ->add_option("--live", run_args.live,
+                       "Serve a live view of the run in the browser on PORT (default 8765; "
+                       "docs/live-view.md)")
+          ->expected(0, 1)
+          ->check(port_number());
+  run_cmd
+      ->add_option("--live-host", run_args.live_host,
+                   "Address the live view listens on (default 127.0.0.1, this machine only)")
+      ->needs(live_opt);
+  run_cmd
+      ->add_flag("--live-paused", run_args.live_paused,
+                 "With --live: hold the run after its first step until the page resumes it")
+      ->needs(live_opt);
+
+  ViewArgs view_args;
+  auto* view_cmd =
+      cli.add_subcommand("view", "Serve the live view's page over a finished run's frames");
+  view_cmd->add_option("dir", view_args.dir, "Output directory (with frames/*.vtu)")
+      ->required()
+      ->check(existing("output directory"));
+  view_cmd->add_option("--port", view_args.port, "Port (default 8765)")
+      ->check(CLI::Range(0, 65535));
+  view_cmd->add_option("--host", view_args.host, "Address to listen on (default 127.0.0.1)");
 
   std::string info_scene;
   auto* info_cmd = cli.add_subcommand("info", "Describe a scene: particles, time step, memory");
@@ -100,6 +139,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(spelling_list(tridem::kColorByNames)));
   render_cmd->add_option("--width", render_args.width, "Image width in pixels")
       ->check(CLI::Range(16, 16384));
+  render_cmd->add_option("--movie", render_args.movie,
+                         "Every frame of the output directory to this MP4 (needs the ffmpeg "
+                         "program), with time labels and one colour range");
+  render_cmd->add_option("--fps", render_args.movie_fps, "Frames per second of the movie")
+      ->check(CLI::Range(1, 120));
 
   try {
     cli.parse(argc, argv);
@@ -113,6 +157,7 @@ int main(int argc, char** argv) {
     if (*run_cmd) return run(run_args);
     if (*info_cmd) return info(info_scene);
     if (*render_cmd) return render(render_args);
+    if (*view_cmd) return view(view_args);
   } catch (const tridem::Error& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 1;

@@ -3,6 +3,7 @@
 // shell over this, and tests drive it too.
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
+#include "tridem/step_observer.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -27,6 +28,10 @@ struct RunOptions {
   /// signal number, set by a signal handler), the run stops at the step boundary, writes
   /// its checkpoint and final.csv and returns with RunSummary::interrupted_by set.
   const std::atomic<int>* interrupt = nullptr;
+  /// Watches the run step by step (tridem run --live): the time loop then advances one
+  /// step at a time and calls it after each (it returns at once when no viewer wants a
+  /// frame). Not owned; null for none.
+  StepObserver* observer = nullptr;
 };
 
 struct RunSummary {

@@ -97,11 +97,17 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   }
 
   OutputSet out(scene.output, scene.output.dir, scene.output.encoding, resume);
-  TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress);
+  TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress, options.observer);
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
   loop.start(resume.has_value());
-  summary.interrupted_by = loop.run();
+  try {
+    summary.interrupted_by = loop.run();
+  } catch (...) {
+    if (options.observer) options.observer->run_ended(*solver);
+    throw;
+  }
+  if (options.observer) options.observer->run_ended(*solver);
   if (summary.interrupted_by) summary.checkpoint = loop.files().checkpoint.string();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -23,12 +23,13 @@ bool is_due(std::int64_t step, std::int64_t every) { return every > 0 && step % 
 }  // namespace
 
 TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, CheckpointMeta meta,
-                   const std::atomic<int>* interrupt, bool progress)
+                   const std::atomic<int>* interrupt, bool progress, StepObserver* observer)
     : solver_(solver),
       out_(out),
       scene_(scene),
       meta_(std::move(meta)),
       interrupt_(interrupt),
+      observer_(observer),
       files_(scene.output.dir),
       bar_(scene.simulation.steps, progress && is_terminal(stderr)),
       last_(scene.simulation.steps),
@@ -79,9 +80,11 @@ int TimeLoop::advance_to(std::int64_t target) {
 // in every step, and an interruption is seen within a fraction of a second.
 void TimeLoop::advance_chunk(std::int64_t target) {
   const auto t0 = std::chrono::steady_clock::now();
-  const std::int64_t steps = std::min(chunk_, target - solver_.step());
+  // A watched run goes step by step: its viewer may pause it between any two steps.
+  const std::int64_t steps = observer_ ? 1 : std::min(chunk_, target - solver_.step());
   try {
     solver_.advance(steps);
+    if (observer_) observer_->after_step(solver_, interrupt_);
   } catch (const RunError& e) {
     // A blow-up: the solver holds the last good state; keep it for diagnosis or a restart.
     bar_.finish();

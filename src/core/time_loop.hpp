@@ -7,6 +7,7 @@
 #include "tridem/checkpoint.hpp"
 #include "tridem/output.hpp"
 #include "tridem/solver.hpp"
+#include "tridem/step_observer.hpp"
 
 #include <atomic>
 #include <filesystem>
@@ -27,7 +28,7 @@ class TimeLoop {
  public:
   /// `out` must outlive the loop; `meta` goes into every checkpoint.
   TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, CheckpointMeta meta,
-           const std::atomic<int>* interrupt, bool progress);
+           const std::atomic<int>* interrupt, bool progress, StepObserver* observer = nullptr);
 
   /// Writes the outputs of step 0 (a fresh run), or final.csv when a restarted run is
   /// already at its end.
@@ -56,6 +57,7 @@ class TimeLoop {
   const Scene& scene_;
   CheckpointMeta meta_;
   const std::atomic<int>* interrupt_;
+  StepObserver* observer_;  ///< the live view, or null
   StateFiles files_;
   ProgressBar bar_;
   std::int64_t last_, every_, log_every_, checkpoint_every_;

@@ -186,7 +186,11 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
   lo = o.speed_min.value_or(any_free ? lo : 0);
   hi = o.speed_max.value_or(any_free ? hi : 0);
 
-  const Layout l = layout(bounds(s), o, by_speed && o.colorbar && any_free);
+  const Box region =
+      o.region ? Box{(*o.region)[0], (*o.region)[1], (*o.region)[2], (*o.region)[3]} : bounds(s);
+  if (region.empty() || !(region.x1 > region.x0 && region.y1 > region.y0))
+    throw Error(fmt::format("cannot render '{}': the region to draw is empty", png.string()));
+  const Layout l = layout(region, o, by_speed && o.colorbar && any_free);
   const std::unique_ptr<cairo_surface_t, CairoDeleter> surface(
       cairo_image_surface_create(CAIRO_FORMAT_ARGB32, l.width, l.height));
   check(cairo_surface_status(surface.get()), png, "to create the image");
@@ -237,6 +241,14 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
     cairo_stroke(cr);
   }
   if (l.bar_width > 0) draw_colorbar(cr, l, lo, hi);
+  if (!o.label.empty()) {
+    const double font = std::clamp(0.022 * l.width, 10.0, 22.0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, font);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    cairo_move_to(cr, 0.5 * font, 1.4 * font);
+    cairo_show_text(cr, o.label.c_str());
+  }
 
   check(cairo_status(cr), png, "while drawing");
   cairo_surface_flush(surface.get());

@@ -46,6 +46,21 @@ void StepFiles::remove(const fs::path& dir, std::string_view extension,
   }
 }
 
+std::vector<fs::path> StepFiles::all(const fs::path& dir, std::string_view extension) const {
+  std::vector<std::pair<std::int64_t, fs::path>> found;
+  std::error_code ec;
+  const fs::path where = dir / folder;
+  if (fs::is_directory(where, ec))
+    for (const auto& entry : fs::directory_iterator(where, ec))
+      if (const auto step = step_of(entry.path().filename().string(), extension))
+        found.emplace_back(*step, entry.path());
+  std::sort(found.begin(), found.end());
+  std::vector<fs::path> out;
+  out.reserve(found.size());
+  for (auto& f : found) out.push_back(std::move(f.second));
+  return out;
+}
+
 std::optional<fs::path> StepFiles::last(const fs::path& dir, std::string_view extension) const {
   std::optional<fs::path> found;
   std::int64_t highest = -1;

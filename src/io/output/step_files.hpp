@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tridem::io {
 
@@ -25,6 +26,9 @@ struct StepFiles {
   /// all of them; nothing else in the folder is touched.
   void remove(const std::filesystem::path& dir, std::string_view extension,
               std::optional<std::int64_t> after = std::nullopt) const;
+  /// Every file of this kind ending in `extension`, in step order.
+  std::vector<std::filesystem::path> all(const std::filesystem::path& dir,
+                                         std::string_view extension) const;
   /// The file of this kind ending in `extension` with the highest step, or none.
   std::optional<std::filesystem::path> last(const std::filesystem::path& dir,
                                             std::string_view extension) const;
