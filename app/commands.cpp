@@ -11,6 +11,9 @@
 
 #include <filesystem>
 #include <fmt/format.h>
+#ifdef TRIDEM_WITH_MPI
+#include "mpi/mpi_run.hpp"
+#endif
 
 namespace tridem::app {
 
@@ -42,7 +45,7 @@ SceneOverrides overrides(const RunArgs& args) {
 }  // namespace
 
 int run(const RunArgs& args) {
-  const Scene scene = apply_overrides(read_scene(args.scene), overrides(args));
+  auto read = [&] { return apply_overrides(read_scene(args.scene), overrides(args)); };
   RunOptions options;
   options.force = args.force;
   options.threads = args.threads;
@@ -50,14 +53,21 @@ int run(const RunArgs& args) {
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.interrupt = &install_interrupt_handlers();
-  const RunSummary summary = run_scene(scene, options);
-  if (!summary.interrupted_by) return 0;
-  // The same command line, so that the restarted run has the same overrides: the
-  // checkpoint refuses any other physics.
-  const std::string same_run = restart_command(args.command_line, summary.checkpoint);
-  fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
-             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, same_run);
-  return exit_code_for_signal(summary.interrupted_by);
+  auto report = [&](const RunSummary& summary) {
+    if (!summary.interrupted_by) return 0;
+    // The same command line, so that the restarted run has the same overrides: the
+    // checkpoint refuses any other physics.
+    const std::string same_run = restart_command(args.command_line, summary.checkpoint);
+    fmt::print(stderr,
+               "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
+               signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
+               same_run);
+    return exit_code_for_signal(summary.interrupted_by);
+  };
+#ifdef TRIDEM_WITH_MPI
+  if (args.ranks > 1) return mpi::run_on_ranks(read, options, report);
+#endif
+  return report(run_scene(read(), options));
 }
 
 int info(const std::string& path) {

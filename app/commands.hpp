@@ -21,6 +21,7 @@ struct RunArgs {
   int device = 0;
   bool force = false;
   bool quiet = false;
+  int ranks = 1;  ///< MPI ranks of the job (mpirun -np N); above 1, src/mpi/ runs it
 };
 /// 0 when the run finished; 128 + the signal's number when SIGINT or SIGTERM stopped it
 /// (after it wrote its checkpoint).

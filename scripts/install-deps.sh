@@ -9,7 +9,8 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config \
   libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev \
+  libopenmpi-dev openmpi-bin
 # The fuzz build (scripts/run-fuzzers.sh): clang with libFuzzer and its sanitizer
 # runtimes, and clang's OpenMP.
 $SUDO apt-get install -y -qq --no-install-recommends \

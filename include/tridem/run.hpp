@@ -7,10 +7,15 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace tridem {
+
+struct ParticleModel;
+struct TimeStep;
 
 /// How to run a scene, besides what the scene says (a command line's overrides of the
 /// scene's settings are applied to the scene first: apply_overrides in scene_io.hpp).
@@ -27,6 +32,11 @@ struct RunOptions {
   /// signal number, set by a signal handler), the run stops at the step boundary, writes
   /// its checkpoint and final.csv and returns with RunSummary::interrupted_by set.
   const std::atomic<int>* interrupt = nullptr;
+  /// Builds the run's solver in place of make_solver, from the scene, model and time step
+  /// the run derived (MPI ranks: src/mpi/mpi_run.cpp); empty = make_solver.
+  std::function<std::unique_ptr<Solver>(const Scene&, const ParticleModel&, const TimeStep&,
+                                        const SolverConfig&)>
+      make_solver;
 };
 
 struct RunSummary {
