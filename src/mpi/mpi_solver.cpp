@@ -98,6 +98,8 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     what = "cohesive bonds (a bonded [[mesh]])";
   else if (!model.programs.empty())
     what = "motion programs and servo walls";
+  else if (scene.simulation.method == Method::AllPairs)
+    what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
   else if (scene.simulation.backend == Backend::Cuda)
     what = "backend = \"cuda\" (GPU ranks)";
   if (!what) return {};
@@ -258,10 +260,11 @@ bool MpiSolver<Real>::drifted() const {
 
 template <class Real>
 int MpiSolver<Real>::authority(std::int32_t a, std::int32_t b) const {
-  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
-  if (model_.motion[ua] == Motion::Free) return plan_.owner[ua];
-  if (model_.motion[ub] == Motion::Free) return plan_.owner[ub];
-  return 0;
+  // The owner of the emitter's row, else of the partner (a wall that emits nothing is the
+  // partner of a grain); two walls are never a pair.
+  const int oa = plan_.owner[static_cast<std::size_t>(a)];
+  if (oa >= 0) return oa;
+  return std::max(0, plan_.owner[static_cast<std::size_t>(b)]);
 }
 
 template <class Real>
@@ -271,9 +274,7 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   std::vector<double> mine;
   std::vector<std::size_t> own;
   for (std::size_t k = 0; k < global_.size(); ++k) {
-    const auto g = static_cast<std::size_t>(global_[k]);
-    const bool wall = model_.motion[g] != Motion::Free;
-    if (wall ? rank_ == 0 : plan_.owner[g] == rank_) own.push_back(k);
+    if (reports(global_[k])) own.push_back(k);
   }
   std::size_t pairs = 0;
   for (std::size_t p = 0; p < ls.pairs(); ++p)
@@ -414,11 +415,14 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
   for (std::size_t r = 0; r < ranks; ++r) {
     if (static_cast<int>(r) == rank_) continue;
     for (std::int32_t g : plan_.held[r])
-      if (plan_.owns(rank_, g)) send_[r].push_back(local_of_[static_cast<std::size_t>(g)]);
+      if (plan_.owns(rank_, g) && model_.motion[static_cast<std::size_t>(g)] == Motion::Free)
+        send_[r].push_back(local_of_[static_cast<std::size_t>(g)]);
   }
+  // Walls are stepped by every rank: only grains are sent.
   for (std::size_t k = 0; k < global_.size(); ++k) {
-    const int owner = plan_.owner[static_cast<std::size_t>(global_[k])];
-    if (owner >= 0 && owner != rank_)
+    const auto g = static_cast<std::size_t>(global_[k]);
+    const int owner = plan_.owner[g];
+    if (owner >= 0 && owner != rank_ && model_.motion[g] == Motion::Free)
       recv_[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(k));
   }
   const int per = state_arrays();
@@ -449,8 +453,7 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   std::vector<double> rows, loads, contacts;
   for (std::size_t k = 0; k < global_.size(); ++k) {
     const auto g = static_cast<std::size_t>(global_[k]);
-    const bool wall = model_.motion[g] != Motion::Free;
-    if (!(wall ? rank_ == 0 : plan_.owner[g] == rank_)) continue;
+    if (!reports(global_[k])) continue;
     rows.push_back(static_cast<double>(g));
     Snapshot::for_each_field([&](auto field) {
       for_each_array(ls.column(field), [&](const std::vector<double>& v, int) { rows.push_back(v[k]); });
@@ -579,8 +582,7 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
   std::vector<double> sums, elastic;
   for (std::size_t k = 0; k < global_.size(); ++k) {
     const auto g = static_cast<std::size_t>(global_[k]);
-    const bool wall = model_.motion[g] != Motion::Free;
-    if (!(wall ? rank_ == 0 : plan_.owner[g] == rank_)) continue;
+    if (!reports(global_[k])) continue;
     sums.push_back(static_cast<double>(g));
     for (const auto& v : energy) sums.push_back(v[k]);
   }

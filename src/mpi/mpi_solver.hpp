@@ -78,6 +78,12 @@ class MpiSolver final : public Solver {
   void broadcast_state(SolverState& s) const;
   /// Which rank's copy of pair (a, b) (global ids, a the emitter) is the true one.
   int authority(std::int32_t a, std::int32_t b) const;
+  /// Whether this rank reports particle g (state, energy sums, snapshot row): its owner,
+  /// or rank 0 for a wall that emits nothing (every rank has the same copy).
+  bool reports(std::int32_t g) const {
+    const int owner = plan_.owner[static_cast<std::size_t>(g)];
+    return owner >= 0 ? owner == rank_ : rank_ == 0;
+  }
   std::string global_ids(const std::string& message) const;
   void measure_bandwidth();
 

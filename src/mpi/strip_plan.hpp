@@ -12,8 +12,10 @@
 //    particle has moved half the skin from where the plan saw it;
 //  - the free particle with the longest edge: it sets the cell grid's size, so that every
 //    rank bins, and picks emitters, as one rank does;
-//  - every wall (fixed or prescribed particle): each rank steps them itself, identically,
-//    and rank 0 reports them.
+//  - every wall (fixed or prescribed particle): each rank steps them itself, identically.
+//    A wall no longer than the cell size emits its pairs with higher ids (emitter_rule.hpp):
+//    it is owned like a grain (its row, and the energy the row adds to it, then live on one
+//    rank); rank 0 reports the other walls.
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -34,7 +36,8 @@ struct StripInput {
 struct StripPlan {
   int axis = 0;                  ///< 0: strips across x (cut at x = const), 1: across y
   double margin = 0;             ///< 2 R + skin
-  std::vector<int> owner;        ///< per particle: its rank; walls: -1 (rank 0 reports them)
+  /// Per particle: its rank; -1 for a wall that emits nothing (rank 0 reports it).
+  std::vector<int> owner;
   /// Per rank: every particle it holds (own, ghosts, walls), ascending.
   std::vector<std::vector<std::int32_t>> held;
   /// Per rank: the lowest and highest centroid coordinate of its own particles along the
