@@ -58,10 +58,9 @@ int run(const RunArgs& args) {
     // The same command line, so that the restarted run has the same overrides: the
     // checkpoint refuses any other physics.
     const std::string same_run = restart_command(args.command_line, summary.checkpoint);
-    fmt::print(stderr,
-               "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
-               signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint,
-               same_run);
+    fmt::print(
+        stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
+        signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, same_run);
     return exit_code_for_signal(summary.interrupted_by);
   };
 #ifdef TRIDEM_WITH_MPI

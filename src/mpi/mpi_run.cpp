@@ -39,8 +39,8 @@ int run_on_ranks(const std::function<Scene()>& read, RunOptions options,
       solver = std::make_unique<MpiSolver<float>>(MPI_COMM_WORLD, scene, model, ts, os_interrupt,
                                                   &agreed_interrupt);
     else
-      solver = std::make_unique<MpiSolver<double>>(MPI_COMM_WORLD, scene, model, ts,
-                                                   os_interrupt, &agreed_interrupt);
+      solver = std::make_unique<MpiSolver<double>>(MPI_COMM_WORLD, scene, model, ts, os_interrupt,
+                                                   &agreed_interrupt);
     if (rank == 0) return solver;
     const bool ok = scene.simulation.precision == Precision::Float
                         ? static_cast<MpiSolver<float>&>(*solver).serve()

@@ -148,8 +148,9 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   // The scene's initial state as a whole state, and the first plan from it.
   SolverState whole;
   SolverState::for_each_field([&](auto field) {
-    for_each_array(whole.column(field),
-                   [&](std::vector<double>& v, int k) { v = initial_column<double>(field, model_, k); });
+    for_each_array(whole.column(field), [&](std::vector<double>& v, int k) {
+      v = initial_column<double>(field, model_, k);
+    });
   });
   decompose(whole);
 }
@@ -311,7 +312,8 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
   std::size_t at = 0;
   while (at < all.size()) {
-    const auto particles = static_cast<std::size_t>(all[at]), rank_pairs = static_cast<std::size_t>(all[at + 1]);
+    const auto particles = static_cast<std::size_t>(all[at]),
+               rank_pairs = static_cast<std::size_t>(all[at + 1]);
     at += 2;
     for (std::size_t q = 0; q < particles; ++q) {
       const auto g = static_cast<std::size_t>(all[at++]);
@@ -456,7 +458,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     if (!reports(global_[k])) continue;
     rows.push_back(static_cast<double>(g));
     Snapshot::for_each_field([&](auto field) {
-      for_each_array(ls.column(field), [&](const std::vector<double>& v, int) { rows.push_back(v[k]); });
+      for_each_array(ls.column(field),
+                     [&](const std::vector<double>& v, int) { rows.push_back(v[k]); });
     });
     for (const auto* v : {&ls.x1, &ls.y1, &ls.x2, &ls.y2, &ls.x3, &ls.y3, &ls.mass, &ls.inertia})
       rows.push_back((*v)[k]);
@@ -471,7 +474,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
       for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
         const std::int32_t ge = global_[e];
-        const std::int32_t gj = global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
+        const std::int32_t gj =
+            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
         const bool we = model_.motion[static_cast<std::size_t>(ge)] != Motion::Free;
         const bool wj = model_.motion[static_cast<std::size_t>(gj)] != Motion::Free;
         if (!(we || wj) || authority(ge, gj) != rank_) continue;
@@ -546,9 +550,10 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
       s.contacts.push_back(c);
     }
   }
-  std::sort(s.contacts.begin(), s.contacts.end(), [](const ContactRecord& a, const ContactRecord& b) {
-    return std::tie(a.i, a.j) < std::tie(b.i, b.j);
-  });
+  std::sort(s.contacts.begin(), s.contacts.end(),
+            [](const ContactRecord& a, const ContactRecord& b) {
+              return std::tie(a.i, a.j) < std::tie(b.i, b.j);
+            });
   if (step() == 0) return;
   std::sort(wall_loads.begin(), wall_loads.end(), [](const Load& a, const Load& b) {
     return std::tie(a.wall, a.role, a.other) < std::tie(b.wall, b.role, b.other);
@@ -592,7 +597,8 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
     for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
       for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
         const std::int32_t ge = global_[e];
-        const std::int32_t gj = global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
+        const std::int32_t gj =
+            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
         const auto value = static_cast<double>(force[static_cast<std::size_t>(s)].elastic_energy);
         if (value != 0 && authority(ge, gj) == rank_)
           elastic.insert(elastic.end(), {double(ge), double(gj), value});
@@ -727,7 +733,8 @@ void MpiSolver<Real>::measure_bandwidth() {
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double slowest = 0;
   MPI_Allreduce(&seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  const double bytes = static_cast<double>(block * sizeof(double) * static_cast<std::size_t>(ranks_ - 1));
+  const double bytes =
+      static_cast<double>(block * sizeof(double) * static_cast<std::size_t>(ranks_ - 1));
   bandwidth_ = slowest > 0 ? bytes / slowest : 0;
 }
 

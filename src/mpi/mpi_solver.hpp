@@ -99,7 +99,7 @@ class MpiSolver final : public Solver {
   std::atomic<int>* agreed_interrupt_;
 
   StripPlan plan_;
-  std::vector<std::int32_t> global_;  ///< local index -> global id (ascending)
+  std::vector<std::int32_t> global_;    ///< local index -> global id (ascending)
   std::vector<std::int32_t> local_of_;  ///< global id -> local index, -1 when not held
   std::unique_ptr<CpuSolver<Real>> local_;
   bool redecompose_ = false;

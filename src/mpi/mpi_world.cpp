@@ -5,8 +5,8 @@
 namespace tridem::mpi {
 
 World::World(int& argc, char**& argv) {
-  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
-                        std::getenv("PMIX_RANK");
+  const bool launched =
+      std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
   if (!launched) return;
   int initialised = 0;
   MPI_Initialized(&initialised);

@@ -24,18 +24,18 @@
 namespace tridem::mpi {
 
 struct StripInput {
-  std::vector<double> x, y;                ///< centroids
+  std::vector<double> x, y;  ///< centroids
   std::vector<Motion> motion;
-  std::vector<double> radius;              ///< farthest vertex from the centroid
+  std::vector<double> radius;  ///< farthest vertex from the centroid
   std::vector<double> longest_edge;
-  std::vector<std::int32_t> contacts;      ///< pairs with history, per particle
+  std::vector<std::int32_t> contacts;  ///< pairs with history, per particle
   int ranks = 1;
   double skin = 0;
 };
 
 struct StripPlan {
-  int axis = 0;                  ///< 0: strips across x (cut at x = const), 1: across y
-  double margin = 0;             ///< 2 R + skin
+  int axis = 0;       ///< 0: strips across x (cut at x = const), 1: across y
+  double margin = 0;  ///< 2 R + skin
   /// Per particle: its rank; -1 for a wall that emits nothing (rank 0 reports it).
   std::vector<int> owner;
   /// Per rank: every particle it holds (own, ghosts, walls), ascending.

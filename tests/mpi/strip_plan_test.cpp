@@ -79,7 +79,8 @@ TEST(MpiStripPlan, StripsRunAcrossTheLongerSideAndTheCellSetterIsTheLongestEdge)
   EXPECT_EQ(p.axis, 1);
   EXPECT_EQ(p.cell_setter, 42);
   // Strips are ordered along y: rank r's own particles lie below rank r+1's.
-  for (int r = 0; r + 1 < 3; ++r) EXPECT_LE(p.hi[static_cast<std::size_t>(r)], p.lo[static_cast<std::size_t>(r + 1)]);
+  for (int r = 0; r + 1 < 3; ++r)
+    EXPECT_LE(p.hi[static_cast<std::size_t>(r)], p.lo[static_cast<std::size_t>(r + 1)]);
 }
 
 TEST(MpiStripPlan, AWallAsSmallAsAGrainIsOwnedLikeOneAndHeldEverywhere) {
