@@ -16,6 +16,9 @@
 #include <fmt/format.h>
 #include <memory>
 #include <thread>
+#ifdef TRIDEM_WITH_MPI
+#include "mpi/mpi_run.hpp"
+#endif
 
 namespace tridem::app {
 
@@ -47,7 +50,7 @@ SceneOverrides overrides(const RunArgs& args) {
 }  // namespace
 
 int run(const RunArgs& args) {
-  const Scene scene = apply_overrides(read_scene(args.scene), overrides(args));
+  auto read = [&] { return apply_overrides(read_scene(args.scene), overrides(args)); };
   RunOptions options;
   options.force = args.force;
   options.threads = args.threads;
@@ -55,6 +58,26 @@ int run(const RunArgs& args) {
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.interrupt = &install_interrupt_handlers();
+  auto report = [&](const RunSummary& summary) {
+    if (!summary.interrupted_by) return 0;
+    // The same command line, so that the restarted run has the same overrides: the
+    // checkpoint refuses any other physics.
+    const std::string same_run = restart_command(args.command_line, summary.checkpoint);
+    fmt::print(
+        stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
+        signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, same_run);
+    return exit_code_for_signal(summary.interrupted_by);
+  };
+#ifdef TRIDEM_WITH_MPI
+  if (args.ranks > 1) {
+    if (args.live)
+      throw Error(fmt::format("--live watches a run of one rank; this job has {} ranks: run it "
+                              "without mpirun, or without --live",
+                              args.ranks));
+    return mpi::run_on_ranks(read, options, report);
+  }
+#endif
+  const Scene scene = read();
   std::unique_ptr<live::LiveView> live_view;
   if (args.live) {
     live::LiveOptions lo;
@@ -66,13 +89,7 @@ int run(const RunArgs& args) {
   }
   const RunSummary summary = run_scene(scene, options);
   live_view.reset();  // the last frame sent, the connections closed
-  if (!summary.interrupted_by) return 0;
-  // The same command line, so that the restarted run has the same overrides: the
-  // checkpoint refuses any other physics.
-  const std::string same_run = restart_command(args.command_line, summary.checkpoint);
-  fmt::print(stderr, "interrupted by {} at step {}: checkpoint written to {}\ncontinue with: {}\n",
-             signal_name(summary.interrupted_by), summary.last_step, summary.checkpoint, same_run);
-  return exit_code_for_signal(summary.interrupted_by);
+  return report(summary);
 }
 
 int info(const std::string& path) {

@@ -25,6 +25,7 @@ struct RunArgs {
   std::optional<std::string> live;
   std::string live_host = "127.0.0.1";
   bool live_paused = false;
+  int ranks = 1;  ///< MPI ranks of the job (mpirun -np N); above 1, src/mpi/ runs it
 };
 /// 0 when the run finished; 128 + the signal's number when SIGINT or SIGTERM stopped it
 /// (after it wrote its checkpoint).

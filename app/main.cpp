@@ -4,6 +4,10 @@
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
+#ifdef TRIDEM_WITH_MPI
+#include "mpi/mpi_world.hpp"
+#endif
+
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fmt/format.h>
@@ -61,6 +65,13 @@ CLI::Validator port_number() {
 
 int main(int argc, char** argv) {
   using namespace tridem::app;
+#ifdef TRIDEM_WITH_MPI
+  // Under mpirun every rank runs this; only rank 0 prints errors (the ranks agree on them).
+  const tridem::mpi::World world(argc, argv);
+  const bool prints_errors = world.rank() == 0;
+#else
+  const bool prints_errors = true;
+#endif
   CLI::App cli{"tridem: 2D discrete element simulation of triangular particles "
                "(Munjiza's potential contact force)", "tridem"};
   cli.set_version_flag("--version", std::string("tridem ") + TRIDEM_VERSION);
@@ -68,6 +79,9 @@ int main(int argc, char** argv) {
 
   RunArgs run_args;
   run_args.command_line.assign(argv, argv + argc);
+#ifdef TRIDEM_WITH_MPI
+  run_args.ranks = world.size();
+#endif
   auto* run_cmd = cli.add_subcommand("run", "Run a scene and write its outputs");
   run_cmd->add_option("scene", run_args.scene, "Scene file (TOML)")->required()->check(existing("scene file"));
   run_cmd->add_option("--out", run_args.out, "Output directory (overrides [output] dir)");
@@ -150,7 +164,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help, --version
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "error: {}\n(tridem --help lists the commands and options)\n", e.what());
+    if (prints_errors)
+      fmt::print(stderr, "error: {}\n(tridem --help lists the commands and options)\n", e.what());
     return 1;
   }
   try {
@@ -159,10 +174,10 @@ int main(int argc, char** argv) {
     if (*render_cmd) return render(render_args);
     if (*view_cmd) return view(view_args);
   } catch (const tridem::Error& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    if (prints_errors) fmt::print(stderr, "error: {}\n", e.what());
     return 1;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    if (prints_errors) fmt::print(stderr, "error: {}\n", e.what());
     return 1;
   }
   return 0;

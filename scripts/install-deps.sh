@@ -9,7 +9,8 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config \
   libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev libboost-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev libboost-dev \
+  libopenmpi-dev openmpi-bin
 # The live view's browser test (tests/browser: headless chromium through selenium) and
 # `tridem render --movie` (the ffmpeg program).
 $SUDO apt-get install -y -qq --no-install-recommends \

@@ -10,7 +10,7 @@ seconds=${1:-60}
 cxx=${TRIDEM_FUZZ_CXX:-clang++-14}
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" \
   -DTRIDEM_BUILD_FUZZERS=ON -DTRIDEM_BUILD_TESTS=OFF -DTRIDEM_BUILD_BENCH=OFF \
-  -DTRIDEM_ENABLE_CUDA=OFF >/dev/null
+  -DTRIDEM_ENABLE_CUDA=OFF -DTRIDEM_WITH_MPI=OFF >/dev/null
 cmake --build build-fuzz --target scene_reader_fuzz checkpoint_reader_fuzz
 mkdir -p build-fuzz/artifacts
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

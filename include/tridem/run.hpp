@@ -8,10 +8,15 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace tridem {
+
+struct ParticleModel;
+struct TimeStep;
 
 /// How to run a scene, besides what the scene says (a command line's overrides of the
 /// scene's settings are applied to the scene first: apply_overrides in scene_io.hpp).
@@ -32,6 +37,11 @@ struct RunOptions {
   /// step at a time and calls it after each (it returns at once when no viewer wants a
   /// frame). Not owned; null for none.
   StepObserver* observer = nullptr;
+  /// Builds the run's solver in place of make_solver, from the scene, model and time step
+  /// the run derived (MPI ranks: src/mpi/mpi_run.cpp); empty = make_solver.
+  std::function<std::unique_ptr<Solver>(const Scene&, const ParticleModel&, const TimeStep&,
+                                        const SolverConfig&)>
+      make_solver;
 };
 
 struct RunSummary {

@@ -76,7 +76,8 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
   scene.simulation.steps = steps_to_reach(scene.simulation, ts.chosen);
-  const auto solver = make_solver(scene, model, ts, config);
+  const auto solver = options.make_solver ? options.make_solver(scene, model, ts, config)
+                                          : make_solver(scene, model, ts, config);
   const auto free = static_cast<std::size_t>(
       std::count(model.motion.begin(), model.motion.end(), Motion::Free));
   // What the checkpoints of this run record, and what a restart must match.

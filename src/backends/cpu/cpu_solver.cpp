@@ -149,7 +149,13 @@ void CpuSolver<Real>::run_stage(Stage stage) {
       if (bonds() > 0) add_bond_loads();
       if (n_bodies_ > 0) gather_bodies();
       return;
-    case Stage::Check: return n_bodies_ > 0 ? check_body_runaway() : check_runaway();
+    case Stage::Check:
+      if (n_bodies_ > 0)
+        check_body_runaway();
+      else
+        check_runaway();
+      if (check_hook_) check_hook_();
+      return;
     case Stage::Integrate:
       if (bonds() > 0) commit_bonds();
       return n_bodies_ > 0 ? integrate_bodies() : integrate();

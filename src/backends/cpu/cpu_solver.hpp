@@ -21,6 +21,7 @@
 #include "tridem/solver.hpp"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -60,6 +61,16 @@ class CpuSolver final : public Solver {
   TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   std::size_t bodies() const { return n_bodies_; }
   std::size_t bonds() const { return bond_a_.size(); }
+
+  /// The pairs of the last completed step and their forces (between steps): MPI ranks
+  /// (src/mpi/) sum the walls' loads, the elastic energy and the contacts across ranks
+  /// from them, in the order one solver would.
+  const PairList& last_pairs() const { return old_pairs_; }
+  const std::vector<physics::PairForce<Real>>& last_forces() const { return result_; }
+  /// Called after every step's Check, before anything is written; it may throw RunError
+  /// (MPI ranks agree there whether every rank's step is good, so that a blow-up on one
+  /// leaves every rank at the last good state).
+  void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
 
  private:
   void update_geometry();
@@ -153,6 +164,7 @@ class CpuSolver final : public Solver {
   std::vector<physics::PairForce<Real>> result_;
   ReverseIndex reverse_;
   StageStopwatch stopwatch_;
+  std::function<void()> check_hook_;
 };
 
 }  // namespace tridem

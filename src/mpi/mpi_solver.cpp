@@ -1,0 +1,777 @@
+#include "mpi/mpi_solver.hpp"
+
+#include "core/particle_columns.hpp"
+#include "mpi/agreement.hpp"
+#include "tridem/error.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <fmt/format.h>
+#include <regex>
+#include <tuple>
+
+namespace tridem::mpi {
+
+namespace {
+
+/// The particles `ids` of `m`, in that order: the model of one rank's copy of the scene.
+ParticleModel slice(const ParticleModel& m, const std::vector<std::int32_t>& ids) {
+  ParticleModel out;
+  auto take = [&](auto& to, const auto& from) {
+    to.clear();
+    to.reserve(ids.size());
+    for (std::int32_t i : ids) to.push_back(from[static_cast<std::size_t>(i)]);
+  };
+  take(out.offsets, m.offsets);
+  take(out.centroid, m.centroid);
+  take(out.area, m.area);
+  take(out.mass, m.mass);
+  take(out.inertia, m.inertia);
+  take(out.longest_edge, m.longest_edge);
+  take(out.smallest_height, m.smallest_height);
+  take(out.material, m.material);
+  take(out.motion, m.motion);
+  take(out.velocity, m.velocity);
+  take(out.angular_velocity, m.angular_velocity);
+  take(out.program, m.program);
+  out.programs = m.programs;
+  out.program_knots = m.program_knots;
+  return out;  // bodies of several triangles are refused on more than one rank
+}
+
+/// Calls f(array) for each array of the State fields of a solver's storage, in the
+/// order of particle_fields.hpp: what a ghost takes from its owner every step.
+template <class Storage, class F>
+void for_each_state_array(Storage& s, F&& f) {
+  for_each_particle_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::State)
+      for_each_array(s.column(field), [&](auto& v, int) { f(v); });
+  });
+}
+
+int state_arrays() {
+  int count = 0;
+  for_each_particle_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::State) count += decltype(field)::count;
+  });
+  return count;
+}
+
+/// Every rank's `mine`, one after the other in rank order: on every rank (`all`) or on
+/// rank 0 only (others get nothing).
+std::vector<double> collect(MPI_Comm comm, const std::vector<double>& mine, bool all) {
+  int ranks = 1, rank = 0;
+  MPI_Comm_size(comm, &ranks);
+  MPI_Comm_rank(comm, &rank);
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  if (all)
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  else
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  long long total = 0;
+  for (int r = 0; r < ranks; ++r) {
+    displs[static_cast<std::size_t>(r)] = static_cast<int>(total);
+    total += counts[static_cast<std::size_t>(r)];
+  }
+  std::vector<double> out(all || rank == 0 ? static_cast<std::size_t>(total) : 0);
+  if (all)
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, out.data(), counts.data(), displs.data(),
+                   MPI_DOUBLE, comm);
+  else
+    MPI_Gatherv(mine.data(), count, MPI_DOUBLE, out.data(), counts.data(), displs.data(),
+                MPI_DOUBLE, 0, comm);
+  return out;
+}
+
+std::int32_t as_id(double v) { return static_cast<std::int32_t>(v); }
+
+}  // namespace
+
+std::string refusal(const Scene& scene, const ParticleModel& model) {
+  const char* what = nullptr;
+  if (!model.bodies.empty())
+    what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\")";
+  else if (!scene.bonds.empty())
+    what = "cohesive bonds (a bonded [[mesh]])";
+  else if (!model.programs.empty())
+    what = "motion programs and servo walls";
+  else if (scene.simulation.method == Method::AllPairs)
+    what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
+  else if (scene.simulation.backend == Backend::Cuda)
+    what = "backend = \"cuda\" (GPU ranks)";
+  if (!what) return {};
+  return fmt::format("{}: {} are not split across MPI ranks yet (docs/scaling.md); run "
+                     "this scene on one rank (without mpirun, or mpirun -np 1)",
+                     scene.source.empty() ? std::string("scene") : scene.source, what);
+}
+
+template <class Real>
+MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleModel& model,
+                           const TimeStep& ts, const std::atomic<int>* os_interrupt,
+                           std::atomic<int>* agreed_interrupt)
+    : comm_(comm),
+      scene_(scene),
+      model_(model),
+      ts_(ts),
+      n_(model.size()),
+      os_interrupt_(os_interrupt),
+      agreed_interrupt_(agreed_interrupt) {
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &ranks_);
+  // The first collective: a rank that failed before (reading the scene) takes part in it
+  // from mpi_run.cpp, so that every rank stops with that rank's message.
+  const std::string why = refusal(scene, model);
+  if (auto m = agree(comm_, why.empty() ? std::nullopt : std::optional<std::string>(why)))
+    throw SceneError(*m);
+
+  radius_.resize(n_);
+  double largest = 0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    double r = 0;
+    for (const Vec2d& v : model_.offsets[i]) r = std::max(r, std::hypot(v.x, v.y));
+    radius_[i] = r;
+    if (model_.motion[i] == Motion::Free) largest = std::max(largest, r);
+  }
+  // A skin of one particle radius: the plan lasts until something moves half of it.
+  skin_ = largest;
+
+  char version[MPI_MAX_LIBRARY_VERSION_STRING] = {};
+  int length = 0;
+  MPI_Get_library_version(version, &length);
+  library_ = std::string(version, static_cast<std::size_t>(length));
+  library_ = library_.substr(0, library_.find_first_of(",\n"));
+  measure_bandwidth();
+
+  // The scene's initial state as a whole state, and the first plan from it.
+  SolverState whole;
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(whole.column(field), [&](std::vector<double>& v, int k) {
+      v = initial_column<double>(field, model_, k);
+    });
+  });
+  decompose(whole);
+}
+
+template <class Real>
+MpiSolver<Real>::~MpiSolver() {
+  if (rank_ == 0) order(std::uncaught_exceptions() > 0 ? kAbort : kStop, 0);
+}
+
+template <class Real>
+void MpiSolver<Real>::order(Command c, long long arg) const {
+  long long command[2] = {c, arg};
+  MPI_Bcast(command, 2, MPI_LONG_LONG, 0, comm_);
+}
+
+template <class Real>
+bool MpiSolver<Real>::serve() {
+  SolverState whole;
+  for (;;) {
+    long long command[2] = {0, 0};
+    MPI_Bcast(command, 2, MPI_LONG_LONG, 0, comm_);
+    try {
+      switch (command[0]) {
+        case kAdvance: run_steps(command[1]); break;
+        case kSnapshot: gather_snapshot(nullptr, command[1] != 0); break;
+        case kSave: gather_state(whole); break;
+        case kLoad:
+          broadcast_state(whole);
+          decompose(whole);
+          break;
+        case kEnergy: gather_energy(); break;
+        case kStop: return true;
+        default: return false;
+      }
+    } catch (const RunError&) {
+      // Agreed by every rank: rank 0 reports it and goes on (last_good.ckpt).
+    }
+  }
+}
+
+template <class Real>
+void MpiSolver<Real>::advance(std::int64_t steps) {
+  order(kAdvance, steps);
+  run_steps(steps);
+}
+
+template <class Real>
+void MpiSolver<Real>::run_steps(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) step_once();
+}
+
+template <class Real>
+void MpiSolver<Real>::step_once() {
+  if (redecompose_) {
+    SolverState whole;
+    gather_state(whole);
+    decompose(whole);
+    redecompose_ = false;
+  }
+  check_agreed_ = false;
+  try {
+    local_->advance(1);
+  } catch (const std::exception& e) {
+    // This rank failed before or in its Check: tell the others, which are waiting in
+    // their check hook. When the hook threw, the agreement is already made.
+    if (!check_agreed_) agreed_ = agree(comm_, global_ids(e.what())).value_or(e.what());
+    throw RunError(agreed_);
+  }
+  exchange_ghosts();
+  int mine[2] = {os_interrupt_ ? os_interrupt_->load() : 0, drifted() ? 1 : 0};
+  int all[2] = {0, 0};
+  MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, comm_);
+  if (all[0] != 0 && agreed_interrupt_) agreed_interrupt_->store(all[0]);
+  redecompose_ = all[1] != 0;
+}
+
+template <class Real>
+void MpiSolver<Real>::exchange_ghosts() {
+  std::size_t at = 0;
+  for (int r = 0; r < ranks_; ++r)
+    for (std::int32_t i : send_[static_cast<std::size_t>(r)])
+      for_each_state_array(*local_, [&](const std::vector<double>& v) {
+        send_buf_[at++] = v[static_cast<std::size_t>(i)];
+      });
+  MPI_Alltoallv(send_buf_.data(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
+                recv_buf_.data(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE, comm_);
+  at = 0;
+  for (int r = 0; r < ranks_; ++r)
+    for (std::int32_t i : recv_[static_cast<std::size_t>(r)])
+      for_each_state_array(*local_, [&](std::vector<double>& v) {
+        v[static_cast<std::size_t>(i)] = recv_buf_[at++];
+      });
+}
+
+template <class Real>
+bool MpiSolver<Real>::drifted() const {
+  const double limit = 0.25 * skin_ * skin_;  // (skin / 2)^2
+  const auto& x = local_->column(particle_field::x{});
+  const auto& y = local_->column(particle_field::y{});
+  for (std::size_t k = 0; k < global_.size(); ++k) {
+    if (!plan_.owns(rank_, global_[k])) continue;
+    const double dx = x[k] - ref_x_[k], dy = y[k] - ref_y_[k];
+    // A non-finite state drifts too: the next plan's gather lets the check report it.
+    if (!(dx * dx + dy * dy <= limit)) return true;
+  }
+  return false;
+}
+
+template <class Real>
+int MpiSolver<Real>::authority(std::int32_t a, std::int32_t b) const {
+  // The owner of the emitter's row, else of the partner (a wall that emits nothing is the
+  // partner of a grain); two walls are never a pair.
+  const int oa = plan_.owner[static_cast<std::size_t>(a)];
+  if (oa >= 0) return oa;
+  return std::max(0, plan_.owner[static_cast<std::size_t>(b)]);
+}
+
+template <class Real>
+void MpiSolver<Real>::gather_state(SolverState& out) const {
+  SolverState& ls = scratch_state_;
+  local_->save_state(ls);
+  std::vector<double> mine;
+  std::vector<std::size_t> own;
+  for (std::size_t k = 0; k < global_.size(); ++k) {
+    if (reports(global_[k])) own.push_back(k);
+  }
+  std::size_t pairs = 0;
+  for (std::size_t p = 0; p < ls.pairs(); ++p)
+    if (authority(global_[static_cast<std::size_t>(ls.pair_emitter[p])],
+                  global_[static_cast<std::size_t>(ls.pair_partner[p])]) == rank_)
+      ++pairs;
+  mine.push_back(static_cast<double>(own.size()));
+  mine.push_back(static_cast<double>(pairs));
+  for (std::size_t k : own) {
+    mine.push_back(global_[k]);
+    SolverState::for_each_field([&](auto field) {
+      for_each_array(ls.column(field), [&](const std::vector<double>& v, int) {
+        mine.push_back(v.empty() ? 0.0 : v[k]);
+      });
+    });
+  }
+  for (std::size_t p = 0; p < ls.pairs(); ++p) {
+    const std::int32_t e = global_[static_cast<std::size_t>(ls.pair_emitter[p])];
+    const std::int32_t j = global_[static_cast<std::size_t>(ls.pair_partner[p])];
+    if (authority(e, j) != rank_) continue;
+    mine.push_back(e);
+    mine.push_back(j);
+    for (double s : ls.pair_slip[p]) mine.push_back(s);
+  }
+  const std::vector<double> all = collect(comm_, mine, true);
+
+  out = SolverState{};
+  out.step = ls.step;
+  out.time = ls.time;
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(out.column(field), [&](std::vector<double>& v, int) { v.assign(n_, 0.0); });
+  });
+  using Slip = std::decay_t<decltype(out.pair_slip[0])>;
+  std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
+  std::size_t at = 0;
+  while (at < all.size()) {
+    const auto particles = static_cast<std::size_t>(all[at]),
+               rank_pairs = static_cast<std::size_t>(all[at + 1]);
+    at += 2;
+    for (std::size_t q = 0; q < particles; ++q) {
+      const auto g = static_cast<std::size_t>(all[at++]);
+      SolverState::for_each_field([&](auto field) {
+        for_each_array(out.column(field), [&](std::vector<double>& v, int) { v[g] = all[at++]; });
+      });
+    }
+    for (std::size_t q = 0; q < rank_pairs; ++q) {
+      Slip slip{};
+      const std::int32_t e = as_id(all[at]), j = as_id(all[at + 1]);
+      at += 2;
+      for (double& s : slip) s = all[at++];
+      history.emplace_back(e, j, slip);
+    }
+  }
+  std::sort(history.begin(), history.end(), [](const auto& a, const auto& b) {
+    return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
+  });
+  for (const auto& [e, j, slip] : history) {
+    out.pair_emitter.push_back(e);
+    out.pair_partner.push_back(j);
+    out.pair_slip.push_back(slip);
+  }
+}
+
+template <class Real>
+void MpiSolver<Real>::decompose(const SolverState& whole) {
+  std::optional<std::string> problem;
+  try {
+    build_local(whole);
+  } catch (const std::exception& e) {
+    problem = global_ids(e.what());
+  }
+  if (auto m = agree(comm_, problem)) throw RunError(*m);
+}
+
+template <class Real>
+void MpiSolver<Real>::build_local(const SolverState& whole) {
+  StripInput in;
+  in.x = whole.x;
+  in.y = whole.y;
+  in.motion = model_.motion;
+  in.radius = radius_;
+  in.longest_edge = model_.longest_edge;
+  in.contacts.assign(n_, 0);
+  for (std::size_t p = 0; p < whole.pairs(); ++p) {
+    ++in.contacts[static_cast<std::size_t>(whole.pair_emitter[p])];
+    ++in.contacts[static_cast<std::size_t>(whole.pair_partner[p])];
+  }
+  in.ranks = ranks_;
+  in.skin = skin_;
+  plan_ = plan_strips(in);
+  global_ = plan_.held[static_cast<std::size_t>(rank_)];
+  local_of_.assign(n_, -1);
+  for (std::size_t k = 0; k < global_.size(); ++k)
+    local_of_[static_cast<std::size_t>(global_[k])] = static_cast<std::int32_t>(k);
+
+  if (local_) {
+    const StageTimes t = local_->stage_times();
+    for (int s = 0; s < kStageCount; ++s) earlier_times_.seconds[s] += t.seconds[s];
+    earlier_times_.steps += t.steps;
+    earlier_times_.timed_steps += t.timed_steps;
+  }
+  SolverConfig config;
+  config.force = true;  // the whole scene's time step was checked by the run
+  local_ = std::make_unique<CpuSolver<Real>>(scene_, slice(model_, global_), ts_, config, false);
+  local_->set_stage_timing(timing_);
+  local_->set_check_hook([this] {
+    check_agreed_ = true;
+    if (auto m = agree(comm_, std::nullopt)) {
+      agreed_ = *m;
+      throw RunError(agreed_);
+    }
+  });
+
+  SolverState ls;
+  ls.step = whole.step;
+  ls.time = whole.time;
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(ls.column(field), [&](std::vector<double>& v, int k) {
+      const std::vector<double>& from = array_at(whole.column(field), k);
+      v.resize(global_.size());
+      for (std::size_t q = 0; q < global_.size(); ++q)
+        v[q] = from.empty() ? 0.0 : from[static_cast<std::size_t>(global_[q])];
+    });
+  });
+  // Global ids keep their order in the local numbering: the history stays sorted.
+  for (std::size_t p = 0; p < whole.pairs(); ++p) {
+    const std::int32_t e = local_of_[static_cast<std::size_t>(whole.pair_emitter[p])];
+    const std::int32_t j = local_of_[static_cast<std::size_t>(whole.pair_partner[p])];
+    if (e < 0 || j < 0) continue;
+    ls.pair_emitter.push_back(e);
+    ls.pair_partner.push_back(j);
+    ls.pair_slip.push_back(whole.pair_slip[p]);
+  }
+  local_->load_state(ls);
+
+  const auto ranks = static_cast<std::size_t>(ranks_);
+  send_.assign(ranks, {});
+  recv_.assign(ranks, {});
+  for (std::size_t r = 0; r < ranks; ++r) {
+    if (static_cast<int>(r) == rank_) continue;
+    for (std::int32_t g : plan_.held[r])
+      if (plan_.owns(rank_, g) && model_.motion[static_cast<std::size_t>(g)] == Motion::Free)
+        send_[r].push_back(local_of_[static_cast<std::size_t>(g)]);
+  }
+  // Walls are stepped by every rank: only grains are sent.
+  for (std::size_t k = 0; k < global_.size(); ++k) {
+    const auto g = static_cast<std::size_t>(global_[k]);
+    const int owner = plan_.owner[g];
+    if (owner >= 0 && owner != rank_ && model_.motion[g] == Motion::Free)
+      recv_[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(k));
+  }
+  const int per = state_arrays();
+  send_counts_.assign(ranks, 0);
+  send_displs_.assign(ranks, 0);
+  recv_counts_.assign(ranks, 0);
+  recv_displs_.assign(ranks, 0);
+  int sent = 0, received = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    send_counts_[r] = per * static_cast<int>(send_[r].size());
+    recv_counts_[r] = per * static_cast<int>(recv_[r].size());
+    send_displs_[r] = sent;
+    recv_displs_[r] = received;
+    sent += send_counts_[r];
+    received += recv_counts_[r];
+  }
+  send_buf_.assign(static_cast<std::size_t>(sent), 0.0);
+  recv_buf_.assign(static_cast<std::size_t>(received), 0.0);
+  ref_x_ = local_->column(particle_field::x{});
+  ref_y_ = local_->column(particle_field::y{});
+  ++plans_;
+}
+
+template <class Real>
+void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
+  Snapshot& ls = scratch_snapshot_;
+  local_->snapshot(ls, with_contacts);
+  std::vector<double> rows, loads, contacts;
+  for (std::size_t k = 0; k < global_.size(); ++k) {
+    const auto g = static_cast<std::size_t>(global_[k]);
+    if (!reports(global_[k])) continue;
+    rows.push_back(static_cast<double>(g));
+    Snapshot::for_each_field([&](auto field) {
+      for_each_array(ls.column(field),
+                     [&](const std::vector<double>& v, int) { rows.push_back(v[k]); });
+    });
+    for (const auto* v : {&ls.x1, &ls.y1, &ls.x2, &ls.y2, &ls.x3, &ls.y3, &ls.mass, &ls.inertia})
+      rows.push_back((*v)[k]);
+    rows.push_back(ls.material[k]);
+    rows.push_back(static_cast<double>(static_cast<int>(ls.motion[k])));
+  }
+  // The walls' loads, pair by pair: (wall, 0 = as emitter | 1 = as partner, other, fx, fy,
+  // torque), summed on rank 0 in sum_pair_forces' order.
+  const PairList& pl = local_->last_pairs();
+  const auto& force = local_->last_forces();
+  if (step() > 0)
+    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
+      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
+        const std::int32_t ge = global_[e];
+        const std::int32_t gj =
+            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
+        const bool we = model_.motion[static_cast<std::size_t>(ge)] != Motion::Free;
+        const bool wj = model_.motion[static_cast<std::size_t>(gj)] != Motion::Free;
+        if (!(we || wj) || authority(ge, gj) != rank_) continue;
+        const physics::PairForce<Real>& f = force[static_cast<std::size_t>(s)];
+        if (we)
+          loads.insert(loads.end(), {double(ge), 0.0, double(gj), double(f.force_a.x),
+                                     double(f.force_a.y), double(f.torque_a)});
+        if (wj)
+          loads.insert(loads.end(), {double(gj), 1.0, double(ge), double(f.force_a.x),
+                                     double(f.force_a.y), double(f.torque_b)});
+      }
+  for (const ContactRecord& c : ls.contacts) {
+    const std::int32_t gi = global_[static_cast<std::size_t>(c.i)];
+    const std::int32_t gj = global_[static_cast<std::size_t>(c.j)];
+    if (authority(gi, gj) != rank_) continue;
+    contacts.insert(contacts.end(), {double(gi), double(gj), c.fx, c.fy, c.px, c.py, c.nx, c.ny,
+                                     c.sliding ? 1.0 : 0.0, c.depth});
+  }
+  std::vector<double> mine;
+  mine.push_back(static_cast<double>(rows.size()));
+  mine.push_back(static_cast<double>(loads.size()));
+  mine.push_back(static_cast<double>(contacts.size()));
+  for (const auto* v : {&rows, &loads, &contacts}) mine.insert(mine.end(), v->begin(), v->end());
+  const std::vector<double> all = collect(comm_, mine, false);
+  if (rank_ != 0 || !out) return;
+
+  Snapshot& s = *out;
+  s.step = ls.step;
+  s.time = ls.time;
+  s.resize(n_);
+  s.resize_bodies(0);
+  s.contacts.clear();
+  for (auto* v : {&s.bond_a, &s.bond_b}) v->clear();
+  s.bond_damage.clear();
+  s.bond_broken.clear();
+  for (auto* v : {&s.bond_x0, &s.bond_y0, &s.bond_x1, &s.bond_y1}) v->clear();
+  struct Load {
+    std::int32_t wall, role, other;
+    double fx, fy, t;
+  };
+  std::vector<Load> wall_loads;
+  std::size_t at = 0;
+  while (at < all.size()) {
+    const auto nr = static_cast<std::size_t>(all[at]), nl = static_cast<std::size_t>(all[at + 1]),
+               nc = static_cast<std::size_t>(all[at + 2]);
+    at += 3;
+    for (const std::size_t end = at + nr; at < end;) {
+      const auto g = static_cast<std::size_t>(all[at++]);
+      Snapshot::for_each_field([&](auto field) {
+        for_each_array(s.column(field), [&](std::vector<double>& v, int) { v[g] = all[at++]; });
+      });
+      for (auto* v : {&s.x1, &s.y1, &s.x2, &s.y2, &s.x3, &s.y3, &s.mass, &s.inertia})
+        (*v)[g] = all[at++];
+      s.material[g] = static_cast<int>(all[at++]);
+      s.motion[g] = static_cast<Motion>(static_cast<int>(all[at++]));
+    }
+    for (const std::size_t end = at + nl; at < end; at += 6)
+      wall_loads.push_back({as_id(all[at]), as_id(all[at + 1]), as_id(all[at + 2]), all[at + 3],
+                            all[at + 4], all[at + 5]});
+    for (const std::size_t end = at + nc; at < end; at += 10) {
+      ContactRecord c;
+      c.i = as_id(all[at]);
+      c.j = as_id(all[at + 1]);
+      c.fx = all[at + 2];
+      c.fy = all[at + 3];
+      c.px = all[at + 4];
+      c.py = all[at + 5];
+      c.nx = all[at + 6];
+      c.ny = all[at + 7];
+      c.sliding = all[at + 8] != 0;
+      c.depth = all[at + 9];
+      s.contacts.push_back(c);
+    }
+  }
+  std::sort(s.contacts.begin(), s.contacts.end(),
+            [](const ContactRecord& a, const ContactRecord& b) {
+              return std::tie(a.i, a.j) < std::tie(b.i, b.j);
+            });
+  if (step() == 0) return;
+  std::sort(wall_loads.begin(), wall_loads.end(), [](const Load& a, const Load& b) {
+    return std::tie(a.wall, a.role, a.other) < std::tie(b.wall, b.role, b.other);
+  });
+  // Every wall's load, in Real as sum_pair_forces adds it: its own row, then the rows it
+  // is the partner of, each ascending (a wall no pair reaches has +0).
+  for (std::size_t i = 0; i < n_; ++i)
+    if (model_.motion[i] != Motion::Free) s.fx[i] = s.fy[i] = s.torque[i] = 0;
+  for (std::size_t a = 0; a < wall_loads.size();) {
+    const std::int32_t w = wall_loads[a].wall;
+    Vec2<Real> f{};
+    Real t = Real(0);
+    for (; a < wall_loads.size() && wall_loads[a].wall == w; ++a) {
+      const Load& l = wall_loads[a];
+      const Vec2<Real> fa{static_cast<Real>(l.fx), static_cast<Real>(l.fy)};
+      if (l.role == 0)
+        f += fa;
+      else
+        f -= fa;
+      t += static_cast<Real>(l.t);
+    }
+    s.fx[static_cast<std::size_t>(w)] = static_cast<double>(f.x);
+    s.fy[static_cast<std::size_t>(w)] = static_cast<double>(f.y);
+    s.torque[static_cast<std::size_t>(w)] = static_cast<double>(t);
+  }
+}
+
+template <class Real>
+EnergyBudget MpiSolver<Real>::gather_energy() const {
+  const auto& energy = local_->column(particle_field::energy{});
+  std::vector<double> sums, elastic;
+  for (std::size_t k = 0; k < global_.size(); ++k) {
+    const auto g = static_cast<std::size_t>(global_[k]);
+    if (!reports(global_[k])) continue;
+    sums.push_back(static_cast<double>(g));
+    for (const auto& v : energy) sums.push_back(v[k]);
+  }
+  const PairList& pl = local_->last_pairs();
+  const auto& force = local_->last_forces();
+  if (step() > 0)
+    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
+      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
+        const std::int32_t ge = global_[e];
+        const std::int32_t gj =
+            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
+        const auto value = static_cast<double>(force[static_cast<std::size_t>(s)].elastic_energy);
+        if (value != 0 && authority(ge, gj) == rank_)
+          elastic.insert(elastic.end(), {double(ge), double(gj), value});
+      }
+  std::vector<double> mine{static_cast<double>(sums.size()), static_cast<double>(elastic.size())};
+  mine.insert(mine.end(), sums.begin(), sums.end());
+  mine.insert(mine.end(), elastic.begin(), elastic.end());
+  const std::vector<double> all = collect(comm_, mine, false);
+  EnergyBudget b;
+  if (rank_ != 0) return b;
+  const std::size_t per = energy.size();
+  std::vector<double> by_particle(n_ * per, 0.0);
+  std::vector<std::tuple<std::int32_t, std::int32_t, double>> pairs;
+  for (std::size_t at = 0; at < all.size();) {
+    const auto ns = static_cast<std::size_t>(all[at]), ne = static_cast<std::size_t>(all[at + 1]);
+    at += 2;
+    for (const std::size_t end = at + ns; at < end; at += 1 + per)
+      for (std::size_t k = 0; k < per; ++k)
+        by_particle[static_cast<std::size_t>(all[at]) * per + k] = all[at + 1 + k];
+    for (const std::size_t end = at + ne; at < end; at += 3)
+      pairs.emplace_back(as_id(all[at]), as_id(all[at + 1]), all[at + 2]);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (const auto& p : pairs) b.elastic += std::get<2>(p);
+  for (std::size_t i = 0; i < n_; ++i) {
+    b.dissipated_damping += by_particle[i * per + kDissipatedDamping];
+    b.dissipated_friction += by_particle[i * per + kDissipatedFriction];
+    b.dissipated_local += by_particle[i * per + kDissipatedLocal];
+    b.wall_work += by_particle[i * per + kWallWork];
+  }
+  return b;
+}
+
+template <class Real>
+void MpiSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
+  order(kSnapshot, with_contacts ? 1 : 0);
+  gather_snapshot(&out, with_contacts);
+}
+
+template <class Real>
+void MpiSolver<Real>::save_state(SolverState& out) const {
+  order(kSave, 0);
+  gather_state(out);
+}
+
+template <class Real>
+EnergyBudget MpiSolver<Real>::energy() const {
+  order(kEnergy, 0);
+  return gather_energy();
+}
+
+template <class Real>
+void MpiSolver<Real>::load_state(const SolverState& in) {
+  validate_solver_state(in, n_, 0, description());
+  order(kLoad, 0);
+  SolverState whole = in;
+  broadcast_state(whole);
+  decompose(whole);
+  redecompose_ = false;
+}
+
+template <class Real>
+void MpiSolver<Real>::broadcast_state(SolverState& s) const {
+  std::vector<double> data;
+  if (rank_ == 0) {
+    data.push_back(static_cast<double>(s.step));
+    data.push_back(s.time);
+    data.push_back(static_cast<double>(s.pairs()));
+    SolverState::for_each_field([&](auto field) {
+      for_each_array(s.column(field), [&](const std::vector<double>& v, int) {
+        for (std::size_t i = 0; i < n_; ++i) data.push_back(v.empty() ? 0.0 : v[i]);
+      });
+    });
+    for (std::size_t p = 0; p < s.pairs(); ++p) {
+      data.push_back(s.pair_emitter[p]);
+      data.push_back(s.pair_partner[p]);
+      for (double v : s.pair_slip[p]) data.push_back(v);
+    }
+  }
+  long long size = static_cast<long long>(data.size());
+  MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm_);
+  data.resize(static_cast<std::size_t>(size));
+  MPI_Bcast(data.data(), static_cast<int>(size), MPI_DOUBLE, 0, comm_);
+  if (rank_ == 0) return;
+  s = SolverState{};
+  std::size_t at = 0;
+  s.step = static_cast<std::int64_t>(data[at++]);
+  s.time = data[at++];
+  const auto pairs = static_cast<std::size_t>(data[at++]);
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(s.column(field), [&](std::vector<double>& v, int) {
+      v.assign(data.begin() + static_cast<std::ptrdiff_t>(at),
+               data.begin() + static_cast<std::ptrdiff_t>(at + n_));
+      at += n_;
+    });
+  });
+  for (std::size_t p = 0; p < pairs; ++p) {
+    s.pair_emitter.push_back(as_id(data[at++]));
+    s.pair_partner.push_back(as_id(data[at++]));
+    std::decay_t<decltype(s.pair_slip[0])> slip{};
+    for (double& v : slip) v = data[at++];
+    s.pair_slip.push_back(slip);
+  }
+}
+
+template <class Real>
+std::string MpiSolver<Real>::global_ids(const std::string& message) const {
+  // The local solver names its own indices; the user knows the scene's.
+  static const std::regex id(R"((particles? |\) and )(\d+))");
+  std::string out;
+  auto last = message.cbegin();
+  for (std::sregex_iterator m(message.begin(), message.end(), id), end; m != end; ++m) {
+    out.append(last, (*m)[2].first);
+    const auto k = std::stoull((*m)[2].str());
+    out += k < global_.size() ? std::to_string(global_[k]) : (*m)[2].str();
+    last = (*m)[2].second;
+  }
+  out.append(last, message.cend());
+  return out;
+}
+
+template <class Real>
+void MpiSolver<Real>::measure_bandwidth() {
+  if (ranks_ < 2) return;
+  // 1 MiB from every rank, spread over the others: what a first exchange moves per second.
+  const std::size_t block = (std::size_t{1} << 17) / static_cast<std::size_t>(ranks_ - 1);
+  std::vector<double> out(block * static_cast<std::size_t>(ranks_), 1.0), in(out.size());
+  MPI_Barrier(comm_);
+  const auto t0 = std::chrono::steady_clock::now();
+  MPI_Alltoall(out.data(), static_cast<int>(block), MPI_DOUBLE, in.data(), static_cast<int>(block),
+               MPI_DOUBLE, comm_);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double slowest = 0;
+  MPI_Allreduce(&seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  const double bytes =
+      static_cast<double>(block * sizeof(double) * static_cast<std::size_t>(ranks_ - 1));
+  bandwidth_ = slowest > 0 ? bytes / slowest : 0;
+}
+
+template <class Real>
+std::string MpiSolver<Real>::description() const {
+  return fmt::format("{} ranks of {}; strips along {}, ghosts by MPI_Alltoallv through host "
+                     "memory ({}; CPU ranks), first exchange {:.3g} GB/s per rank",
+                     ranks_, local_->description(), plan_.axis == 0 ? "x" : "y", library_,
+                     bandwidth_ / 1e9);
+}
+
+template <class Real>
+std::string MpiSolver<Real>::statistics() const {
+  std::size_t own = 0;
+  for (std::int32_t g : global_)
+    if (plan_.owns(rank_, g)) ++own;
+  return fmt::format("{} plan{} (the first and {} after particles moved half the skin "
+                     "{:.3g} m); rank 0 holds {} particles: {} its own",
+                     plans_, plans_ == 1 ? "" : "s", plans_ - 1, skin_, global_.size(), own);
+}
+
+template <class Real>
+StageTimes MpiSolver<Real>::stage_times() const {
+  StageTimes t = local_->stage_times();
+  for (int s = 0; s < kStageCount; ++s) t.seconds[s] += earlier_times_.seconds[s];
+  t.steps += earlier_times_.steps;
+  t.timed_steps += earlier_times_.timed_steps;
+  return t;
+}
+
+template <class Real>
+void MpiSolver<Real>::set_stage_timing(bool on) {
+  timing_ = on;
+  local_->set_stage_timing(on);
+}
+
+template class MpiSolver<float>;
+template class MpiSolver<double>;
+
+}  // namespace tridem::mpi

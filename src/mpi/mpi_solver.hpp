@@ -1,0 +1,124 @@
+#pragma once
+// The run on N MPI ranks (docs/scaling.md): each rank steps the particles of its strip
+// (mpi/strip_plan.hpp) with the serial CPU solver, on a copy of the scene that holds them,
+// their ghosts and the walls, in global id order. Because the ids keep their order and a
+// ghost's state is its owner's, bit for bit, every pair an owned particle takes part in is
+// computed as one solver computes it (same emitter, same frame, same history) and summed in
+// the same order: the ranks give one rank's results, bit for bit.
+//
+// Every step: the local step up to its Check; the ranks agree the step is good (else all
+// stop at the last good state with one message); the local Integrate; the ghosts' new
+// states from their owners (one MPI_Alltoallv of the State fields); the ranks agree
+// whether to stop (a signal on any rank) and whether some particle has moved half the
+// skin since the plan. If so, the next step first gathers the whole state (with contact
+// history, which therefore migrates with its particles) and plans again, borders moved to
+// balance contacts.
+//
+// Rank 0 drives: the time loop and the outputs run there only, and each call of the
+// Solver interface on rank 0 is a command (advance, snapshot, save, load, energy) that
+// the other ranks, in serve(), carry out with it. Snapshots, states and energies are
+// gathered to rank 0 in global id order, the walls' loads and the elastic energy summed
+// there pair by pair in one solver's order; the outputs and checkpoints are one rank's.
+#include "backends/cpu/cpu_solver.hpp"
+#include "mpi/strip_plan.hpp"
+#include "tridem/solver.hpp"
+
+#include <atomic>
+#include <memory>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace tridem::mpi {
+
+/// What the solver refuses on more than one rank, or empty (same on every rank).
+std::string refusal(const Scene& scene, const ParticleModel& model);
+
+template <class Real>
+class MpiSolver final : public Solver {
+ public:
+  /// Collective over `comm`. `os_interrupt` is this process's signal flag; the flag the
+  /// ranks agreed on (any rank's signal) is written to `agreed_interrupt`.
+  MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+            const std::atomic<int>* os_interrupt, std::atomic<int>* agreed_interrupt);
+  ~MpiSolver() override;  ///< on rank 0: tells the others to stop serving
+
+  void advance(std::int64_t steps) override;
+  void snapshot(Snapshot& out, bool with_contacts) const override;
+  void save_state(SolverState& out) const override;
+  void load_state(const SolverState& in) override;
+  EnergyBudget energy() const override;
+  std::int64_t step() const override { return local_->step(); }
+  double time() const override { return local_->time(); }
+  double dt() const override { return local_->dt(); }
+  std::size_t size() const override { return n_; }
+  std::string description() const override;
+  std::string statistics() const override;
+  StageTimes stage_times() const override;
+  void set_stage_timing(bool on) override;
+
+  /// Ranks other than 0: carries out rank 0's commands until it stops; true when rank 0
+  /// finished without an error.
+  bool serve();
+
+ private:
+  enum Command : long long { kAdvance = 1, kSnapshot, kSave, kLoad, kEnergy, kStop, kAbort };
+  void order(Command c, long long arg) const;
+  void run_steps(std::int64_t steps);
+  void step_once();
+  void exchange_ghosts();
+  bool drifted() const;
+  /// The whole state on every rank (collective).
+  void gather_state(SolverState& out) const;
+  /// A new plan and local solver from the whole state (collective).
+  void decompose(const SolverState& whole);
+  void build_local(const SolverState& whole);
+  void gather_snapshot(Snapshot* out, bool with_contacts) const;
+  EnergyBudget gather_energy() const;
+  void broadcast_state(SolverState& s) const;
+  /// Which rank's copy of pair (a, b) (global ids, a the emitter) is the true one.
+  int authority(std::int32_t a, std::int32_t b) const;
+  /// Whether this rank reports particle g (state, energy sums, snapshot row): its owner,
+  /// or rank 0 for a wall that emits nothing (every rank has the same copy).
+  bool reports(std::int32_t g) const {
+    const int owner = plan_.owner[static_cast<std::size_t>(g)];
+    return owner >= 0 ? owner == rank_ : rank_ == 0;
+  }
+  std::string global_ids(const std::string& message) const;
+  void measure_bandwidth();
+
+  MPI_Comm comm_;
+  int rank_ = 0, ranks_ = 1;
+  Scene scene_;
+  ParticleModel model_;
+  TimeStep ts_;
+  std::size_t n_ = 0;
+  double skin_ = 0;
+  std::vector<double> radius_;
+  const std::atomic<int>* os_interrupt_;
+  std::atomic<int>* agreed_interrupt_;
+
+  StripPlan plan_;
+  std::vector<std::int32_t> global_;    ///< local index -> global id (ascending)
+  std::vector<std::int32_t> local_of_;  ///< global id -> local index, -1 when not held
+  std::unique_ptr<CpuSolver<Real>> local_;
+  bool redecompose_ = false;
+  bool check_agreed_ = false;  ///< the check hook ran the step's agreement
+  std::string agreed_;         ///< the message the ranks agreed on
+  bool timing_ = true;
+
+  // Ghost exchange, sized at each plan: local indices sent to / received from each rank.
+  std::vector<std::vector<std::int32_t>> send_, recv_;
+  std::vector<int> send_counts_, send_displs_, recv_counts_, recv_displs_;
+  std::vector<double> send_buf_, recv_buf_;
+  std::vector<double> ref_x_, ref_y_;  ///< own particles' centroids at the plan (local index)
+
+  StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
+  std::int64_t plans_ = 0;
+  double bandwidth_ = 0;  ///< bytes/s of the first exchange
+  std::string library_;
+  mutable SolverState scratch_state_;
+  mutable Snapshot scratch_snapshot_;
+};
+
+}  // namespace tridem::mpi

@@ -1,0 +1,54 @@
+#pragma once
+// Where each particle lives on N ranks (pure host code, no MPI: tested on its own).
+//
+// The free particles are cut into N strips across the longer side of their extent, each
+// holding about the same work: a particle weighs 1 + its contacts (the pairs with contact
+// history), so the borders move to balance contacts, not particles. Each rank owns (steps
+// and reports) the particles of its strip and holds besides them, as ghosts whose state
+// its owner sends every step:
+//  - every free particle whose centroid is within `margin` = 2 R + skin of its own
+//    particles' extent along the axis (R: the largest distance of a vertex from its
+//    centroid), so that every particle that can touch one of its own is there until some
+//    particle has moved half the skin from where the plan saw it;
+//  - the free particle with the longest edge: it sets the cell grid's size, so that every
+//    rank bins, and picks emitters, as one rank does;
+//  - every wall (fixed or prescribed particle): each rank steps them itself, identically.
+//    A wall no longer than the cell size emits its pairs with higher ids (emitter_rule.hpp):
+//    it is owned like a grain (its row, and the energy the row adds to it, then live on one
+//    rank); rank 0 reports the other walls.
+#include "tridem/scene.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tridem::mpi {
+
+struct StripInput {
+  std::vector<double> x, y;  ///< centroids
+  std::vector<Motion> motion;
+  std::vector<double> radius;  ///< farthest vertex from the centroid
+  std::vector<double> longest_edge;
+  std::vector<std::int32_t> contacts;  ///< pairs with history, per particle
+  int ranks = 1;
+  double skin = 0;
+};
+
+struct StripPlan {
+  int axis = 0;       ///< 0: strips across x (cut at x = const), 1: across y
+  double margin = 0;  ///< 2 R + skin
+  /// Per particle: its rank; -1 for a wall that emits nothing (rank 0 reports it).
+  std::vector<int> owner;
+  /// Per rank: every particle it holds (own, ghosts, walls), ascending.
+  std::vector<std::vector<std::int32_t>> held;
+  /// Per rank: the lowest and highest centroid coordinate of its own particles along the
+  /// axis (lo > hi for a rank that owns none).
+  std::vector<double> lo, hi;
+  std::int32_t cell_setter = -1;  ///< the free particle of the longest edge (-1: none free)
+
+  bool owns(int rank, std::int32_t i) const { return owner[static_cast<std::size_t>(i)] == rank; }
+};
+
+/// The plan for `in` (deterministic: every rank computes the same one from the same input).
+StripPlan plan_strips(const StripInput& in);
+
+}  // namespace tridem::mpi
