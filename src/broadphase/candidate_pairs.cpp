@@ -106,8 +106,10 @@ void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const Periodic
   double min_x = std::numeric_limits<double>::max(), min_y = min_x;
   double max_x = std::numeric_limits<double>::lowest(), max_y = max_x;
   double widest = 0;
+  // clang-format off
 #pragma omp parallel for schedule(static) if (parallel) \
     reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
+  // clang-format on
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
     min_x = std::min(min_x, static_cast<double>(b.lo_x[i]));
@@ -166,9 +168,9 @@ bool CandidatePairs<Real>::overlaps_periodic(std::int32_t i, std::int32_t j,
   const physics::PeriodicImage im =
       physics::nearest_image(p.frame, Vec2d{p.x[i], p.y[i]}, Vec2d{p.x[j], p.y[j]});
   if (im.shift.x == 0 && im.shift.y == 0) return physics::boxes_overlap(b.box(i), b.box(j));
-  const double tol = 8 * std::numeric_limits<double>::epsilon() *
-                     (std::abs(p.frame.lx) + std::abs(p.frame.ly) + std::abs(p.x[i]) +
-                      std::abs(p.y[i]));
+  const double tol =
+      8 * std::numeric_limits<double>::epsilon() *
+      (std::abs(p.frame.lx) + std::abs(p.frame.ly) + std::abs(p.x[i]) + std::abs(p.y[i]));
   const auto d = [](Real v) { return static_cast<double>(v); };
   return d(b.lo_x[i]) <= d(b.hi_x[j]) + im.shift.x + tol &&
          d(b.lo_x[j]) + im.shift.x <= d(b.hi_x[i]) + tol &&
@@ -216,8 +218,8 @@ void CandidatePairs<Real>::visit_periodic(std::int32_t i, const BoxArrays<Real>&
     std::int64_t col_first = 0, col_last = nx_ - 1;
     if (!all_columns) {
       const double x = lo_x - static_cast<double>(wraps) * f.shift;
-      const auto centre = f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_))
-                               : own_column;
+      const auto centre =
+          f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_)) : own_column;
       col_first = centre - 1;
       col_last = centre + 1;
     }
@@ -267,9 +269,8 @@ void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool pa
                                 PairList& pairs, const PeriodicView* periodic) {
   if (periodic) {
     if (method == Method::Grid) bin_periodic(b, *periodic, parallel);
-    fill_rows(n_, parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
-      visit_periodic(i, b, *periodic, method, emit);
-    });
+    fill_rows(n_, parallel, row_count_, pairs,
+              [&](std::int32_t i, auto&& emit) { visit_periodic(i, b, *periodic, method, emit); });
     return;
   }
   if (method == Method::Grid) bin(b, parallel);

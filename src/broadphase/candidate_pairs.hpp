@@ -83,8 +83,8 @@ class CandidatePairs {
   // The grid of the current step: particles sorted by cell.
   Real origin_x_ = 0, origin_y_ = 0, grid_cell_ = 0;
   std::int64_t nx_ = 0, ny_ = 0;
-  double cell_x_ = 0, cell_y_ = 0;          ///< the periodic grid's cells
-  double px_origin_ = 0, py_origin_ = 0;    ///< and its origin
+  double cell_x_ = 0, cell_y_ = 0;        ///< the periodic grid's cells
+  double px_origin_ = 0, py_origin_ = 0;  ///< and its origin
   std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
   std::vector<std::int32_t> sorted_;
   std::vector<std::int64_t> row_count_;

@@ -241,8 +241,7 @@ TEST(PeriodicRefusal, MethodsThatDoNotSeeAcrossTheBoundary) {
   for (Method m : {Method::SingleDomain, Method::Decomposition}) {
     Scene s = periodic_gas(4, 0.1);
     s.simulation.method = m;
-    EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"),
-              std::string::npos);
+    EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
   }
 }
 
@@ -269,9 +268,8 @@ TEST(PeriodicRefusal, SceneKeys) {
   EXPECT_NE(message("periodic_x = [0, 1, 2]\n").find("expected [lo, hi]"), std::string::npos);
   EXPECT_NE(message("periodic_x = [0, 1]\nshear_rate = 2\n").find("needs both periodic_x"),
             std::string::npos);
-  const Scene ok = parse_scene(head + "periodic_x = [0, 1]\nperiodic_y = [-1, 2]\nshear_rate = 3\n" +
-                                   tail,
-                               "periodic.toml");
+  const Scene ok = parse_scene(
+      head + "periodic_x = [0, 1]\nperiodic_y = [-1, 2]\nshear_rate = 3\n" + tail, "periodic.toml");
   ASSERT_TRUE(ok.simulation.periodic.y.has_value());
   EXPECT_EQ(ok.simulation.periodic.y->lo, -1);
   EXPECT_EQ(ok.simulation.periodic.y->hi, 2);

@@ -9,7 +9,8 @@
 namespace tridem::scene_detail {
 
 std::optional<std::string> periodic_cell_problem(const PeriodicCell& cell, std::string& key) {
-  for (const auto& [name, range] : {std::pair{"periodic_x", cell.x}, std::pair{"periodic_y", cell.y}}) {
+  for (const auto& [name, range] :
+       {std::pair{"periodic_x", cell.x}, std::pair{"periodic_y", cell.y}}) {
     if (!range) continue;
     key = name;
     if (!(std::isfinite(range->lo) && std::isfinite(range->hi) && range->lo < range->hi))
