@@ -120,6 +120,24 @@ int info(const std::string& path) {
              backend_name(resolve_backend(sim.backend)), precision_name(sim.precision));
   fmt::print("method       {}\n",
              method_description(sim.method, sim.contact_test, sim.bbox_prefilter));
+  const PeriodicCell& cell = sim.periodic;
+  if (cell.any())
+    fmt::print("periodic     {}{}{}\n",
+               cell.x ? fmt::format("x in [{:g}, {:g}) ", cell.x->lo, cell.x->hi) : "",
+               cell.y ? fmt::format("y in [{:g}, {:g}) ", cell.y->lo, cell.y->hi) : "",
+               cell.shear_rate != 0
+                   ? fmt::format("Lees-Edwards shear rate {:g} 1/s", cell.shear_rate)
+                   : "");
+  fmt::print("measures     {}\n", scene.output.measures.size());
+  for (const MeasureSpec& m : scene.output.measures) {
+    const std::int64_t every = scene.output.measure_every(m);
+    fmt::print("  {:<12} {} -> {}, {}\n", m.name,
+               m.region ? fmt::format("region [{:g}, {:g}] x [{:g}, {:g}] m", m.region->lo.x,
+                                      m.region->hi.x, m.region->lo.y, m.region->hi.y)
+                        : std::string("the whole domain (every free particle)"),
+               m.file_name(),
+               every > 0 ? fmt::format("every {} steps", every) : std::string("last step only"));
+  }
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
   if (info.gpu_memory_bytes > 0)

@@ -92,6 +92,22 @@ struct BondSpec {
   Vec2d p{}, q{};
 };
 
+/// One periodic direction of the cell: [lo, hi), of length hi − lo.
+struct PeriodicRange {
+  double lo = 0, hi = 0;
+  double length() const { return hi - lo; }
+};
+
+/// Periodic boundaries (docs/scene-format.md, "Periodic boundaries"): a particle leaving
+/// through one side enters at the other, and pairs see each other through the boundary.
+/// With shear_rate != 0 (both directions periodic), Lees-Edwards boundaries: the images
+/// one period above move at shear_rate · (y1 − y0) along x, shifted by that speed · t.
+struct PeriodicCell {
+  std::optional<PeriodicRange> x, y;
+  double shear_rate = 0;  ///< 1/s; Lees-Edwards simple shear, d(vx)/dy; 0 = off
+  bool any() const { return x.has_value() || y.has_value(); }
+};
+
 struct SimulationSettings {
   /// The run's length: `steps`, or, when `duration` > 0 (the key `time`), the steps that
   /// reach that simulated time once dt is known (steps_to_reach, core/time_step.hpp).
@@ -119,6 +135,7 @@ struct SimulationSettings {
   /// Overlapping triangles in the scene are refused; true pushes them apart before the run
   /// instead, moving positions only (core/initial_overlaps.hpp).
   bool relax_overlaps = false;
+  PeriodicCell periodic;  ///< periodic_x, periodic_y, shear_rate; none by default
 };
 
 /// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).

@@ -24,6 +24,9 @@ struct ContactRecord {
   double nx = 0, ny = 0;
   bool sliding = false;
   double depth = 0;
+  /// Periodic boundaries: the translation of j's image that i touches (j's centroid plus
+  /// it is the centroid seen from the contact); 0 without periodic boundaries.
+  double image_dx = 0, image_dy = 0;
 
   /// > 0 when the contact pushes i and j apart (damping can make it slightly negative).
   double normal_force() const { return -(fx * nx + fy * ny); }

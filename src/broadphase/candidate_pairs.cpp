@@ -71,14 +71,20 @@ void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   ny_ = fit.ny;
   grid_cell_ = static_cast<Real>(fit.cell);
   const std::int64_t cells = nx_ * ny_;
-  std::fill(cell_count_.begin(), cell_count_.begin() + cells, 0);
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
     cell_of_[i] = cell_coordinate(b.lo_x[i], origin_x_, grid_cell_, nx_) +
                   cell_coordinate(b.lo_y[i], origin_y_, grid_cell_, ny_) * nx_;
   }
-  // Counting sort by cell; serial, and in index order within a cell.
+  sort_into_cells(cells);
+}
+
+// Counting sort by cell; serial, and in index order within a cell.
+template <class Real>
+void CandidatePairs<Real>::sort_into_cells(std::int64_t cells) {
+  const auto n = static_cast<std::int64_t>(n_);
+  std::fill(cell_count_.begin(), cell_count_.begin() + cells, 0);
   for (std::int64_t i = 0; i < n; ++i)
     if (small_[i]) ++cell_count_[cell_of_[i]];
   cell_start_[0] = 0;
@@ -86,6 +92,148 @@ void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   std::copy(cell_start_.begin(), cell_start_.begin() + cells, cell_count_.begin());
   for (std::int64_t i = 0; i < n; ++i)
     if (small_[i]) sorted_[cell_count_[cell_of_[i]]++] = static_cast<std::int32_t>(i);
+}
+
+// The periodic grid: along a periodic direction the cells tile the period exactly (n cells
+// of period/n, no smaller than the grid's cell), and a corner's cell is taken modulo n.
+// Across a Lees-Edwards y boundary, a particle whose corner lies past the cell is binned
+// as the image that brings it back, shifted along x with it.
+template <class Real>
+void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const PeriodicView& p,
+                                        bool parallel) {
+  const auto n = static_cast<std::int64_t>(n_);
+  const physics::PeriodicFrame& f = p.frame;
+  double min_x = std::numeric_limits<double>::max(), min_y = min_x;
+  double max_x = std::numeric_limits<double>::lowest(), max_y = max_x;
+  double widest = 0;
+  // clang-format off
+#pragma omp parallel for schedule(static) if (parallel) \
+    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
+  // clang-format on
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!small_[i]) continue;
+    min_x = std::min(min_x, static_cast<double>(b.lo_x[i]));
+    min_y = std::min(min_y, static_cast<double>(b.lo_y[i]));
+    max_x = std::max(max_x, static_cast<double>(b.lo_x[i]));
+    max_y = std::max(max_y, static_cast<double>(b.lo_y[i]));
+    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
+  }
+  if (min_x > max_x) min_x = max_x = min_y = max_y = 0;  // no small particle
+  double cell = grid_cell_for(static_cast<double>(cell_size_), widest);
+  const double max_cells = static_cast<double>(4 * n_ + 16);
+  for (;;) {
+    nx_ = f.px ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.lx / cell))
+               : static_cast<std::int64_t>((max_x - min_x) / cell) + 1;
+    ny_ = f.py ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.ly / cell))
+               : static_cast<std::int64_t>((max_y - min_y) / cell) + 1;
+    if (static_cast<double>(nx_) * static_cast<double>(ny_) <= max_cells) break;
+    cell *= 1.5;
+  }
+  cell_x_ = f.px ? f.lx / static_cast<double>(nx_) : cell;
+  cell_y_ = f.py ? f.ly / static_cast<double>(ny_) : cell;
+  origin_x_ = static_cast<Real>(0);
+  origin_y_ = static_cast<Real>(0);
+  const double ox = f.px ? f.x0 : min_x, oy = f.py ? f.y0 : min_y;
+  px_origin_ = ox;
+  py_origin_ = oy;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!small_[i]) continue;
+    long long wraps = 0;
+    const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
+    std::int64_t row = 0;
+    double x = lo_x;
+    if (f.py) {
+      row = physics::periodic_cell_of(lo_y, oy, cell_y_, ny_, wraps);
+      x -= static_cast<double>(wraps) * f.shift;  // the image at −wraps periods
+    } else {
+      row = std::clamp<std::int64_t>(static_cast<std::int64_t>((lo_y - oy) / cell_y_), 0, ny_ - 1);
+    }
+    std::int64_t column = 0;
+    if (f.px)
+      column = physics::periodic_cell_of(x, ox, cell_x_, nx_, wraps);
+    else
+      column = std::clamp<std::int64_t>(static_cast<std::int64_t>((x - ox) / cell_x_), 0, nx_ - 1);
+    cell_of_[i] = column + row * nx_;
+  }
+  sort_into_cells(nx_ * ny_);
+}
+
+// Whether i's box overlaps the box of j's nearest image; in double, with a margin of a few
+// roundings of the period, since the image's box is i's box moved by a period.
+template <class Real>
+bool CandidatePairs<Real>::overlaps_periodic(std::int32_t i, std::int32_t j,
+                                             const BoxArrays<Real>& b,
+                                             const PeriodicView& p) const {
+  const physics::PeriodicImage im =
+      physics::nearest_image(p.frame, Vec2d{p.x[i], p.y[i]}, Vec2d{p.x[j], p.y[j]});
+  if (im.shift.x == 0 && im.shift.y == 0) return physics::boxes_overlap(b.box(i), b.box(j));
+  const double tol =
+      8 * std::numeric_limits<double>::epsilon() *
+      (std::abs(p.frame.lx) + std::abs(p.frame.ly) + std::abs(p.x[i]) + std::abs(p.y[i]));
+  const auto d = [](Real v) { return static_cast<double>(v); };
+  return d(b.lo_x[i]) <= d(b.hi_x[j]) + im.shift.x + tol &&
+         d(b.lo_x[j]) + im.shift.x <= d(b.hi_x[i]) + tol &&
+         d(b.lo_y[i]) <= d(b.hi_y[j]) + im.shift.y + tol &&
+         d(b.lo_y[j]) + im.shift.y <= d(b.hi_y[i]) + tol;
+}
+
+// The 3 × 3 cells about i's corner, taken modulo the grid along the periodic directions;
+// a row reached across a Lees-Edwards boundary holds images shifted along x, so its three
+// columns are centred on i's corner shifted back. A periodic direction of fewer than 3
+// cells is scanned whole (each cell once).
+template <class Real>
+template <class Visit>
+void CandidatePairs<Real>::visit_periodic(std::int32_t i, const BoxArrays<Real>& b,
+                                          const PeriodicView& p, Method method,
+                                          Visit&& visit) const {
+  const physics::PeriodicFrame& f = p.frame;
+  const bool free_i = free_[i] != 0;
+  auto consider = [&](std::int32_t j, bool small_j) {
+    if (emits_pair(i, j, true, small_j, free_i, free_[j] != 0) && overlaps_periodic(i, j, b, p))
+      visit(j);
+  };
+  if (method == Method::AllPairs) {
+    for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
+      consider(j, true);
+    return;
+  }
+  if (!small_[i]) return;
+  const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
+  const bool all_rows = f.py && ny_ < 3;
+  const bool all_columns = f.px && (nx_ < 3 || all_rows);
+  const std::int64_t own_row = cell_of_[i] / nx_, own_column = cell_of_[i] % nx_;
+  const auto raw_row =
+      f.py ? static_cast<std::int64_t>(std::floor((lo_y - py_origin_) / cell_y_)) : own_row;
+  const std::int64_t row_first = all_rows ? 0 : raw_row - 1;
+  const std::int64_t row_last = all_rows ? ny_ - 1 : raw_row + 1;
+  for (std::int64_t r_raw = row_first; r_raw <= row_last; ++r_raw) {
+    std::int64_t row = r_raw, wraps = 0;
+    if (f.py && !all_rows) {
+      wraps = r_raw >= 0 ? r_raw / ny_ : -((-r_raw + ny_ - 1) / ny_);
+      row = r_raw - wraps * ny_;
+    } else if (!f.py && (row < 0 || row >= ny_)) {
+      continue;
+    }
+    std::int64_t col_first = 0, col_last = nx_ - 1;
+    if (!all_columns) {
+      const double x = lo_x - static_cast<double>(wraps) * f.shift;
+      const auto centre =
+          f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_)) : own_column;
+      col_first = centre - 1;
+      col_last = centre + 1;
+    }
+    for (std::int64_t c_raw = col_first; c_raw <= col_last; ++c_raw) {
+      std::int64_t column = c_raw;
+      if (f.px)
+        column = ((c_raw % nx_) + nx_) % nx_;
+      else if (column < 0 || column >= nx_)
+        continue;
+      const std::int64_t c = column + row * nx_;
+      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) consider(sorted_[k], true);
+    }
+  }
+  for (const std::int32_t j : large_) consider(j, false);
 }
 
 template <class Real>
@@ -118,7 +266,13 @@ void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real
 
 template <class Real>
 void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool parallel,
-                                PairList& pairs) {
+                                PairList& pairs, const PeriodicView* periodic) {
+  if (periodic) {
+    if (method == Method::Grid) bin_periodic(b, *periodic, parallel);
+    fill_rows(n_, parallel, row_count_, pairs,
+              [&](std::int32_t i, auto&& emit) { visit_periodic(i, b, *periodic, method, emit); });
+    return;
+  }
   if (method == Method::Grid) bin(b, parallel);
   fill_rows(n_, parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
     visit_candidates(i, b, method, emit);

@@ -8,6 +8,7 @@
 // that every small particle checks directly. Who emits a pair is broadphase/emitter_rule.hpp.
 #include "broadphase/pair_list.hpp"
 #include "physics/geometry.hpp"
+#include "physics/periodic_frame.hpp"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -37,6 +38,14 @@ struct BoxArrays {
   }
 };
 
+/// Periodic boundaries (physics/periodic_frame.hpp): the cell at this step and the
+/// centroids, from which each pair takes its partner's nearest image.
+struct PeriodicView {
+  physics::PeriodicFrame frame;
+  const double* x;
+  const double* y;
+};
+
 template <class Real>
 class CandidatePairs {
  public:
@@ -44,7 +53,10 @@ class CandidatePairs {
   CandidatePairs(const std::vector<double>& longest_edge, const std::vector<Motion>& motion);
 
   /// Fills `pairs` (rows by emitter, partners ascending). `parallel` runs it with OpenMP.
-  void find(const BoxArrays<Real>& boxes, Method method, bool parallel, PairList& pairs);
+  /// With `periodic`, pairs are also found through the periodic boundaries, each with its
+  /// partner's nearest image (grid and all-pairs).
+  void find(const BoxArrays<Real>& boxes, Method method, bool parallel, PairList& pairs,
+            const PeriodicView* periodic = nullptr);
 
   Real cell_size() const { return cell_size_; }
   std::size_t large_count() const { return large_.size(); }
@@ -54,6 +66,15 @@ class CandidatePairs {
   template <class Visit>
   void visit_candidates(std::int32_t i, const BoxArrays<Real>& boxes, Method method,
                         Visit&& visit) const;
+  // The periodic grid: cells of cell_x_ × cell_y_ that tile each periodic direction, the
+  // other direction binned as in bin().
+  void bin_periodic(const BoxArrays<Real>& boxes, const PeriodicView& p, bool parallel);
+  template <class Visit>
+  void visit_periodic(std::int32_t i, const BoxArrays<Real>& boxes, const PeriodicView& p,
+                      Method method, Visit&& visit) const;
+  bool overlaps_periodic(std::int32_t i, std::int32_t j, const BoxArrays<Real>& boxes,
+                         const PeriodicView& p) const;
+  void sort_into_cells(std::int64_t cells);
 
   std::size_t n_;
   Real cell_size_;
@@ -62,6 +83,8 @@ class CandidatePairs {
   // The grid of the current step: particles sorted by cell.
   Real origin_x_ = 0, origin_y_ = 0, grid_cell_ = 0;
   std::int64_t nx_ = 0, ny_ = 0;
+  double cell_x_ = 0, cell_y_ = 0;        ///< the periodic grid's cells
+  double px_origin_ = 0, py_origin_ = 0;  ///< and its origin
   std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
   std::vector<std::int32_t> sorted_;
   std::vector<std::int64_t> row_count_;

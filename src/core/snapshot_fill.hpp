@@ -1,6 +1,7 @@
 #pragma once
 // Pieces of a Snapshot that every solver fills the same way from its own layout.
 #include "physics/contact_force.hpp"
+#include "physics/periodic_frame.hpp"
 #include "tridem/snapshot.hpp"
 
 #include <cstddef>
@@ -100,6 +101,19 @@ inline void append_contacts(Snapshot& out, std::size_t n, const Offset* offset,
       c.depth = r.depth;
       out.contacts.push_back(c);
     }
+}
+
+/// Periodic boundaries: each contact's image translation of its partner j, by the rule the
+/// pairs used (physics/periodic_frame.hpp), from the snapshot's positions.
+inline void set_image_shifts(Snapshot& out, const physics::PeriodicFrame& frame, const double* cx,
+                             const double* cy) {
+  for (ContactRecord& c : out.contacts) {
+    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+    const physics::PeriodicImage im =
+        physics::nearest_image(frame, Vec2d{cx[i], cy[i]}, Vec2d{cx[j], cy[j]});
+    c.image_dx = im.shift.x;
+    c.image_dy = im.shift.y;
+  }
 }
 
 }  // namespace tridem

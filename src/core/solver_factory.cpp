@@ -2,6 +2,7 @@
 
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
+#include "core/periodic_checks.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
@@ -104,6 +105,15 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
                "compute cohesive bonds yet\n",
                backend_name(backend));
   }
+  // Periodic boundaries run on the CPU only for now: auto picks it (as for bonds).
+  if (scene.simulation.periodic.any() && backend == Backend::Cuda && requested == Backend::Auto) {
+    backend = fastest_cpu_backend();
+    fmt::print(stderr,
+               "note: backend = auto runs this periodic scene on {}: the GPU does not run "
+               "periodic boundaries yet\n",
+               backend_name(backend));
+  }
+  check_periodic_cell(scene, model, backend);
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(
         "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "

@@ -28,7 +28,9 @@ std::vector<Tensor> contact_moments(const Snapshot& s, const measure::Grains& gr
     if (a == b) continue;
     // i (in grain a) receives +f, j (in grain b) −f.
     for (const auto& [g, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
-      const double lx = c.px - grains.centroid[g].x, ly = c.py - grains.centroid[g].y;
+      // j's grain is seen through its periodic image (0 without periodic boundaries).
+      const double sx = sign < 0 ? c.image_dx : 0.0, sy = sign < 0 ? c.image_dy : 0.0;
+      const double lx = c.px - (grains.centroid[g].x + sx), ly = c.py - (grains.centroid[g].y + sy);
       const double fx = sign * c.fx, fy = sign * c.fy;
       m[g].xx += fx * lx;
       m[g].xy += fx * ly;

@@ -98,6 +98,8 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     what = "cohesive bonds (a bonded [[mesh]])";
   else if (!model.programs.empty())
     what = "motion programs and servo walls";
+  else if (scene.simulation.periodic.any())
+    what = "periodic boundaries (periodic_x, periodic_y)";
   else if (scene.simulation.method == Method::AllPairs)
     what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
   else if (scene.simulation.backend == Backend::Cuda)

@@ -102,6 +102,17 @@ grep -q "memory" out.txt || fail "info lacks memory"
 sed 's/^steps = .*/time = 1e-3/' pile.toml >timed.toml
 expect_ok "$tridem" info timed.toml
 grep -qE "^steps        [1-9][0-9]* \(t = 0.001" out.txt || fail "info of a timed run: $(grep ^steps out.txt)"
+# info lists the [[measure]] tables (region, file, cadence) and the periodic cell.
+cp pile.toml measured.toml
+sed -i 's/^gravity = .*/gravity = [0, -9.81]\nperiodic_x = [-1, 1]/' measured.toml
+printf '[[measure]]\nname = "core"\nregion = [[-0.5, 0], [0.5, 0.5]]\nevery = 50\n[[measure]]\nname = "all"\n' >>measured.toml
+expect_ok "$tridem" info measured.toml
+grep -q "^measures     2" out.txt || fail "info does not count the measures: $(cat out.txt)"
+grep -qE "^  core +region \[-0.5, 0.5\] x \[0, 0.5\] m -> measure_core.csv, every 50 steps" out.txt ||
+  fail "info lacks the region measure: $(grep -A2 ^measures out.txt)"
+grep -qE "^  all +the whole domain .* -> measure_all.csv, every 100 steps" out.txt ||
+  fail "info lacks the whole-domain measure: $(grep -A2 ^measures out.txt)"
+grep -q "^periodic     x in \[-1, 1)" out.txt || fail "info lacks the periodic cell: $(cat out.txt)"
 if [ "$have_cuda" = 1 ]; then
   grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"
 fi

@@ -49,6 +49,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
                    [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
   });
   walls_move_ = walls_move(model);
+  cell_ = scene.simulation.periodic;
+  periodic_ = cell_.any();
   programs_ = model.programs;
   program_knots_ = model.program_knots;
   if (!model.bodies.empty()) {
@@ -194,9 +196,14 @@ void CpuSolver<Real>::find_pairs() {
     single_domain_.find(geometry, parallel_, pairs_);
   else if (decomposed_)
     decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
-  else
+  else if (periodic_) {
+    const PeriodicView view{frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data()};
+    finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
+                 pairs_, &view);
+  } else {
     finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                  pairs_);
+  }
   grow_to(slip_, pairs_.count());
   grow_to(result_, pairs_.count());
   build_reverse_index(pairs_, n_, parallel_, reverse_);
@@ -211,11 +218,31 @@ physics::Body<Real> CpuSolver<Real>::body(std::int32_t i, Vec2d origin) const {
 }
 
 template <class Real>
+physics::Body<Real> CpuSolver<Real>::image_body(std::int32_t i, Vec2d origin,
+                                                const physics::PeriodicFrame& frame) const {
+  const Vec2d c{x_[i], y_[i]};
+  const physics::PeriodicImage im = physics::nearest_image(frame, origin, c);
+  Vec2<Real> rel[3];
+  physics::load_vertices(rel_x_, rel_y_, i, rel);
+  return physics::body_at(physics::image_offset<Real>(origin, c, im), rel,
+                          Vec2d{vx_[i] + im.dvx, vy_[i]}, w_[i], area_[i], mass_[i]);
+}
+
+template <class Real>
+physics::PeriodicFrame CpuSolver<Real>::frame_at(double t) const {
+  const PeriodicRange x = cell_.x.value_or(PeriodicRange{}), y = cell_.y.value_or(PeriodicRange{});
+  return physics::periodic_frame_at(cell_.x.has_value(), x.lo, x.length(), cell_.y.has_value(),
+                                    y.lo, y.length(), cell_.shear_rate, t);
+}
+
+template <class Real>
 void CpuSolver<Real>::compute_pair_forces() {
   const auto n = static_cast<std::int64_t>(n_);
   // The lowest emitter with a pair deeper than the limit: a min-reduction, so the same
   // pair is reported whatever the threads.
   std::int64_t too_deep = n;
+  const physics::PeriodicFrame frame =
+      periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
 #pragma omp parallel for schedule(dynamic, 256) if (parallel_) reduction(min : too_deep)
   for (std::int64_t e = 0; e < n; ++e) {
     const auto emitter = static_cast<std::int32_t>(e);
@@ -240,7 +267,8 @@ void CpuSolver<Real>::compute_pair_forces() {
       }
       physics::PairSlip<Real> slip = old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
-      result_[s] = physics::SceneContactLaw::force(a, body(j, origin), law, dt, slip);
+      result_[s] = physics::SceneContactLaw::force(
+          a, periodic_ ? image_body(j, origin, frame) : body(j, origin), law, dt, slip);
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
     }
@@ -252,6 +280,8 @@ void CpuSolver<Real>::compute_pair_forces() {
 template <class Real>
 void CpuSolver<Real>::compute_bond_forces() {
   const auto nb = static_cast<std::int64_t>(bonds());
+  const physics::PeriodicFrame frame =
+      periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t k = 0; k < nb; ++k) {
     if (bond_broken_[k]) {
@@ -262,8 +292,10 @@ void CpuSolver<Real>::compute_bond_forces() {
     // The bond's frame: origin at a's centroid, as for a pair (physics/local_frame.hpp).
     const Vec2d origin{x_[a], y_[a]};
     const physics::BondSide<Real> side_a{{Real(0), Real(0)}, theta_[a]};
-    const physics::BondSide<Real> side_b{physics::offset_from<Real>(origin, Vec2d{x_[b], y_[b]}),
-                                         theta_[b]};
+    const Vec2d cb{x_[b], y_[b]};
+    const physics::BondSide<Real> side_b{
+        physics::image_offset<Real>(origin, cb, physics::nearest_image(frame, origin, cb)),
+        theta_[b]};
     bond_result_[k] =
         physics::bond_force(side_a, side_b, bond_geometry_[k], bond_strength_[bond_material_[k]],
                             bond_damage_[k].data());
@@ -377,11 +409,14 @@ void CpuSolver<Real>::check_runaway() const {
 template <class Real>
 void CpuSolver<Real>::integrate() {
   const auto n = static_cast<std::int64_t>(n_);
+  const physics::PeriodicFrame frame =
+      periodic_ ? frame_at(physics::time_after_step(step_, dt_)) : physics::PeriodicFrame{};
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t i = 0; i < n; ++i) {
-    const physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
+    physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
     add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p,
                     motion_[i] == Motion::Free);
+    if (periodic_ && motion_[i] == Motion::Free) physics::wrap_into_cell(frame, p);
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
@@ -479,11 +514,13 @@ void CpuSolver<Real>::check_body_runaway() const {
 template <class Real>
 void CpuSolver<Real>::integrate_bodies() {
   const auto nb = static_cast<std::int64_t>(n_bodies_);
+  const physics::PeriodicFrame frame =
+      periodic_ ? frame_at(physics::time_after_step(step_, dt_)) : physics::PeriodicFrame{};
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t b = 0; b < nb; ++b) {
     const auto ub = static_cast<std::size_t>(b);
     const physics::Pose<double> before = body_pose(ub);
-    const physics::Pose<double> after = advanced_body_pose(ub);
+    physics::Pose<double> after = advanced_body_pose(ub);
     const bool free = body_motion_[b] == Motion::Free;
     for (std::int64_t i = body_first_[b]; i < body_last_[b]; ++i)
       add_step_energy(static_cast<std::size_t>(i), before, after, false);
@@ -492,6 +529,8 @@ void CpuSolver<Real>::integrate_bodies() {
           physics::local_damping_dissipation(before, after, Vec2d{body_fx_[b], body_fy_[b]},
                                              body_torque_[b], body_inv_mass_[b], gravity_,
                                              local_damping_, dt_);
+    // The members follow their wrapped body (place_members), so a body is never cut.
+    if (periodic_ && free) physics::wrap_into_cell(frame, after);
     body_x_[b] = after.c.x;
     body_y_[b] = after.c.y;
     body_theta_[b] = after.theta;
@@ -556,6 +595,8 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
   append_contacts(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), result_.data(),
                   x_.data(), y_.data());
+  if (periodic_)
+    set_image_shifts(out, frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data());
 }
 
 template <class Real>

@@ -15,6 +15,7 @@
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/motion_program.hpp"
+#include "physics/periodic_frame.hpp"
 #include "physics/rigid_body.hpp"
 #include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
@@ -106,6 +107,11 @@ class CpuSolver final : public Solver {
 
   /// Body i as pair_force sees it, in the frame whose origin is at `origin`.
   physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
+  /// Its nearest periodic image as pair_force sees it (periodic boundaries).
+  physics::Body<Real> image_body(std::int32_t i, Vec2d origin,
+                                 const physics::PeriodicFrame& frame) const;
+  /// The periodic cell at time t (periodic_ only).
+  physics::PeriodicFrame frame_at(double t) const;
   physics::Pose<double> pose(std::size_t i) const {
     return {{x_[i], y_[i]}, theta_[i], {vx_[i], vy_[i]}, w_[i]};
   }
@@ -165,6 +171,10 @@ class CpuSolver final : public Solver {
   ReverseIndex reverse_;
   StageStopwatch stopwatch_;
   std::function<void()> check_hook_;
+  // Periodic boundaries (physics/periodic_frame.hpp): pairs see their partners' nearest
+  // images, free particles (bodies) are put back into the cell as they step.
+  bool periodic_ = false;
+  PeriodicCell cell_;
 };
 
 }  // namespace tridem

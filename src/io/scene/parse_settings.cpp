@@ -94,6 +94,7 @@ SimulationSettings parse_simulation(const toml::table& table, const std::string&
     r.fail("max_penetration",
            fmt::format("must be in (0, 1] (1 = no check), got {}", s.max_penetration));
   s.relax_overlaps = r.boolean("relax_overlaps").value_or(s.relax_overlaps);
+  s.periodic = parse_periodic_cell(r);
   r.reject_unknown_keys();
   return s;
 }

@@ -14,6 +14,11 @@
 namespace tridem::scene_detail {
 
 SimulationSettings parse_simulation(const toml::table& table, const std::string& source);
+/// periodic_x, periodic_y and shear_rate of [simulation] (parse_periodic.cpp).
+PeriodicCell parse_periodic_cell(TableReader& simulation);
+/// Why a periodic cell is refused (its ranges, its shear), naming the key in `key`;
+/// shared by the reader and validate_scene.
+std::optional<std::string> periodic_cell_problem(const PeriodicCell& cell, std::string& key);
 OutputSettings parse_output(const toml::table& table, const std::string& source);
 
 /// One [[measure]] block: `number` is its 1-based position among them, `earlier` those

@@ -82,6 +82,9 @@ void check_settings(const Scene& scene, const Refuser& refuse) {
     refuse(fmt::format("[output] energy_every must be >= 0, got {}", *scene.output.energy_every));
   if (scene.output.dir.empty()) refuse("[output] dir must not be empty");
   check_measures(scene.output.measures, refuse);
+  std::string periodic_key;
+  if (auto why = scene_detail::periodic_cell_problem(scene.simulation.periodic, periodic_key))
+    refuse(fmt::format("[simulation] {} {}", periodic_key, *why));
 }
 
 void check_materials(const Scene& scene, const Refuser& refuse) {

@@ -1,0 +1,62 @@
+#include "core/periodic_checks.hpp"
+
+#include "broadphase/candidate_pairs.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+#include "tridem/setting_names.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tridem {
+
+void check_periodic_cell(const Scene& scene, const ParticleModel& model, Backend backend) {
+  const PeriodicCell& cell = scene.simulation.periodic;
+  if (!cell.any()) return;
+  const std::string label = scene_label(scene);
+  const Method method = scene.simulation.method;
+  if (method != Method::Grid && method != Method::AllPairs)
+    throw SceneError(fmt::format(
+        "{}: [simulation] method = \"{}\" does not find pairs across periodic boundaries yet; "
+        "use method = \"{}\" or \"{}\" with periodic_x / periodic_y",
+        label, method_name(method), method_name(Method::Grid), method_name(Method::AllPairs)));
+  if (backend == Backend::Cuda)
+    throw SceneError(fmt::format(
+        "{}: backend '{}' does not run periodic boundaries yet; use backend = \"{}\", \"{}\" "
+        "or \"{}\" (auto runs periodic scenes on the CPU)",
+        label, backend_name(Backend::Cuda), backend_name(Backend::OpenMP),
+        backend_name(Backend::Cpu), backend_name(Backend::Auto)));
+  // The farthest vertex of any triangle from its centroid: two touching triangles are at
+  // most twice that apart, and the nearest image is the only one they can touch through
+  // when that is under half a period.
+  double reach = 0;
+  std::size_t widest = 0;
+  for (std::size_t i = 0; i < model.size(); ++i)
+    for (const Vec2d& v : model.offsets[i])
+      if (std::hypot(v.x, v.y) > reach) {
+        reach = std::hypot(v.x, v.y);
+        widest = i;
+      }
+  const double grid_cell = classify_for_grid(model.longest_edge, model.motion).cell;
+  for (const auto& [key, range] :
+       {std::pair{"periodic_x", cell.x}, std::pair{"periodic_y", cell.y}}) {
+    if (!range) continue;
+    const double length = range->length();
+    if (length < 2 * grid_cell)
+      throw SceneError(fmt::format(
+          "{}: [simulation] {} = [{}, {}] is {} long, shorter than 2 cells of the pair grid "
+          "(2 x {}, the longest edge of the free triangles): make the cell at least {} long",
+          label, key, range->lo, range->hi, length, grid_cell, 2 * grid_cell));
+    if (!(length > 4 * reach))
+      throw SceneError(fmt::format(
+          "{}: [simulation] {} = [{}, {}] is {} long, not longer than 4 x {} (particle id {}: "
+          "its farthest vertex from its centroid), so two touching triangles could meet "
+          "through two images of the cell: make the cell longer than {}, or build long walls "
+          "from shorter triangles",
+          label, key, range->lo, range->hi, length, reach, widest, 4 * reach));
+  }
+}
+
+}  // namespace tridem
