@@ -4,6 +4,7 @@
 // those writers), in both encodings. TRIDEM_WRITE_LINE_SET_FILES=dir writes the files to
 // dir instead (how the reference files were made).
 #include "io_test_support.hpp"
+#include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,27 @@ TEST(LineSetVtp, ContactsAndBondsFilesAreTheFormerWritersBytes) {
     }
   }
   if (write_to != nullptr) GTEST_SKIP() << "wrote the reference files to " << write_to;
+}
+
+// The renderer reads a frame's bonds back (tridem render): both encodings give the bonds
+// as written, exactly.
+TEST(LineSetVtp, BondsReadBack) {
+  const Snapshot s = with_bonds_and_contacts();
+  test::TempDir tmp;
+  for (Encoding encoding : {Encoding::Ascii, Encoding::Binary}) {
+    write_bonds_vtp(tmp.path() / "b.vtp", s, encoding);
+    Snapshot r;
+    read_bonds_vtp(tmp.path() / "b.vtp", r);
+    EXPECT_EQ(r.bond_a, s.bond_a);
+    EXPECT_EQ(r.bond_b, s.bond_b);
+    EXPECT_EQ(r.bond_damage, s.bond_damage);
+    EXPECT_EQ(r.bond_broken, s.bond_broken);
+    EXPECT_EQ(r.bond_x0, s.bond_x0);
+    EXPECT_EQ(r.bond_y1, s.bond_y1);
+  }
+  write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
+  Snapshot r;
+  EXPECT_THROW(read_bonds_vtp(tmp.path() / "c.vtp", r), Error);  // no damage array
 }
 
 }  // namespace
