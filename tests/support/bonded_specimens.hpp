@@ -47,8 +47,7 @@ inline Scene compression_scene(double width, double height, double size, double 
 /// under a loading nose (id 2: its flat bottom, as wide, at y = depth over x = 0) moving
 /// down at `speed`, with local damping `damping`. Flat pads, not vertices: a vertex's
 /// contact would crush the beam under it (the Brazilian disc's lesson).
-inline Scene bending_scene(double span, double depth, double size, double speed,
-                           double damping) {
+inline Scene bending_scene(double span, double depth, double size, double speed, double damping) {
   const double s = 0.5 * span, b = 0.25 * depth;
   const std::string toml =
       bonded_granite_header(damping, 0.6) +

@@ -41,7 +41,8 @@ constexpr double kBrazilianMode1Energy = 5, kBrazilianMode2Energy = 25;
 /// at its poles by flats of `flat_angle` degrees (0: a full disc, touched at its polar
 /// nodes), then the two platens, flat-topped triangles touching the flats (or the poles).
 inline Scene brazilian_scene(double size, double speed, double flat_angle = kBrazilianFlatAngle,
-                             double local_damping = 0.2, double mode1_energy = kBrazilianMode1Energy,
+                             double local_damping = 0.2,
+                             double mode1_energy = kBrazilianMode1Energy,
                              double mode2_energy = kBrazilianMode2Energy) {
   const double r = kBrazilianRadius;
   const double y = r * std::cos(0.5 * flat_angle * M_PI / 180.0);
@@ -56,7 +57,8 @@ inline Scene brazilian_scene(double size, double speed, double flat_angle = kBra
       "fixed = true\n"
       "[[triangle]]\nmaterial = \"granite\"\nvertices = [[{mr}, {y}], [0, {r2}], [{r}, {y}]]\n"
       "motion = \"prescribed\"\nvelocity = [0, {v}]\n",
-      fmt::arg("damping", local_damping), fmt::arg("g1", mode1_energy), fmt::arg("g2", mode2_energy), fmt::arg("ft", kBrazilianStrength), fmt::arg("size", size),
+      fmt::arg("damping", local_damping), fmt::arg("g1", mode1_energy),
+      fmt::arg("g2", mode2_energy), fmt::arg("ft", kBrazilianStrength), fmt::arg("size", size),
       fmt::arg("flat", flat_angle), fmt::arg("r", r), fmt::arg("mr", -r), fmt::arg("y", y),
       fmt::arg("my", -y), fmt::arg("m2", -y - r), fmt::arg("r2", y + r), fmt::arg("v", -speed));
   return parse_scene(toml, "brazilian_disc.toml");
@@ -81,7 +83,8 @@ inline BrazilianResult run_brazilian(const Scene& scene, std::int64_t max_steps,
     const double f = std::abs(snap.fy[top]);
     r.peak_force = std::max(r.peak_force, f);
     if (trace > 0 && solver->step() % trace == 0)
-      print_trace(snap, start, kBrazilianRadius, f, std::abs(scene.triangles[top].velocity.y) * snap.time);
+      print_trace(snap, start, kBrazilianRadius, f,
+                  std::abs(scene.triangles[top].velocity.y) * snap.time);
     if (r.peak_force > 0 && f < 0.5 * r.peak_force) break;
   }
   r.steps = solver->step();

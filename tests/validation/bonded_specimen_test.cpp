@@ -33,8 +33,10 @@ TEST(BondedSpecimen, CompressionSlopeGivesTheYoungModulus) {
   const test::Band bottom{-width, width, 0.15 * height, 0.3 * height};
   const test::Band left{-width, -0.3 * width, 0.35 * height, 0.65 * height};
   const test::Band right{0.3 * width, width, 0.35 * height, 0.65 * height};
-  const Vec2d t0 = test::band_mean(start, start, 2, top), b0 = test::band_mean(start, start, 2, bottom);
-  const Vec2d l0 = test::band_mean(start, start, 2, left), r0 = test::band_mean(start, start, 2, right);
+  const Vec2d t0 = test::band_mean(start, start, 2, top),
+              b0 = test::band_mean(start, start, 2, bottom);
+  const Vec2d l0 = test::band_mean(start, start, 2, left),
+              r0 = test::band_mean(start, start, 2, right);
   // Least squares of stress on strain between 1 and 3 MPa (elastic: below f_t / 2).
   double sx = 0, sy = 0, sxx = 0, sxy = 0, lateral = 0, axial = 0;
   int n = 0;
@@ -43,8 +45,10 @@ TEST(BondedSpecimen, CompressionSlopeGivesTheYoungModulus) {
     solver->advance(20);
     solver->snapshot(snap, false);
     stress = 0.5 * (std::abs(snap.fy[0]) + std::abs(snap.fy[1])) / width;
-    const Vec2d t = test::band_mean(snap, start, 2, top), b = test::band_mean(snap, start, 2, bottom);
-    const Vec2d l = test::band_mean(snap, start, 2, left), r = test::band_mean(snap, start, 2, right);
+    const Vec2d t = test::band_mean(snap, start, 2, top),
+                b = test::band_mean(snap, start, 2, bottom);
+    const Vec2d l = test::band_mean(snap, start, 2, left),
+                r = test::band_mean(snap, start, 2, right);
     const double strain = -((t.y - b.y) - (t0.y - b0.y)) / (t0.y - b0.y);
     const double strain_x = ((r.x - l.x) - (r0.x - l0.x)) / (r0.x - l0.x);
     if (stress < 1e6) continue;

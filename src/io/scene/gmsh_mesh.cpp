@@ -141,9 +141,9 @@ ImportedParticles mesh_region(const MeshRegion& region, const std::string& what)
       const int c = geo::addPoint(cx, cy, 0);
       const int p[4] = {geo::addPoint(cx + sx, cy + sy, 0), geo::addPoint(cx - sx, cy + sy, 0),
                         geo::addPoint(cx - sx, cy - sy, 0), geo::addPoint(cx + sx, cy - sy, 0)};
-      geo::addPlaneSurface({geo::addCurveLoop(
-          {geo::addLine(p[0], p[1]), geo::addCircleArc(p[1], c, p[2]), geo::addLine(p[2], p[3]),
-           geo::addCircleArc(p[3], c, p[0])})});
+      geo::addPlaneSurface(
+          {geo::addCurveLoop({geo::addLine(p[0], p[1]), geo::addCircleArc(p[1], c, p[2]),
+                              geo::addLine(p[2], p[3]), geo::addCircleArc(p[3], c, p[0])})});
     } else if (region.kind == MeshRegion::Kind::Disc) {
       // Four quarter arcs, so that nodes sit exactly at the disc's extremes in x and y:
       // where a platen of a Brazilian test touches it.

@@ -56,8 +56,7 @@ MeshRegion read_region(TableReader& r, Kind kind) {
       r.fail("size", fmt::format("must be below the radius {} m, got {}", m.radius, m.size));
     check_expected_count(r, M_PI * m.radius * m.radius, m.size);
   } else {
-    if (r.real("flat_angle"))
-      r.fail("flat_angle", "is for kind = \"disc\" only");
+    if (r.real("flat_angle")) r.fail("flat_angle", "is for kind = \"disc\" only");
     m.kind = MeshRegion::Kind::Rectangle;
     const auto region = r.required(r.points<2>("region"), "region");
     m.lo = region[0];

@@ -37,8 +37,8 @@ TEST(LineSetVtp, ContactsAndBondsFilesAreTheFormerWritersBytes) {
   const char* write_to = std::getenv("TRIDEM_WRITE_LINE_SET_FILES");
   test::TempDir tmp;
   const std::filesystem::path dir = write_to != nullptr ? write_to : tmp.path();
-  for (const auto& [encoding, tag] : {std::pair{Encoding::Ascii, "ascii"},
-                                      std::pair{Encoding::Binary, "binary"}}) {
+  for (const auto& [encoding, tag] :
+       {std::pair{Encoding::Ascii, "ascii"}, std::pair{Encoding::Binary, "binary"}}) {
     const std::string contacts = std::string("contacts_") + tag + ".vtp";
     const std::string bonds = std::string("bonds_") + tag + ".vtp";
     write_contacts_vtp(dir / contacts, s, encoding);

@@ -150,7 +150,8 @@ TEST(SceneMesh, FlattenedDiscHasItsFlats) {
       top = std::max(top, v.y);
       bottom = std::min(bottom, v.y);
       on_top += std::abs(v.y - y) < 1e-12;
-      directions.insert(static_cast<int>(std::fmod(std::atan2(w.y - v.y, w.x - v.x) * 180 / M_PI + 180, 180) / 10));
+      directions.insert(static_cast<int>(
+          std::fmod(std::atan2(w.y - v.y, w.x - v.x) * 180 / M_PI + 180, 180) / 10));
     }
   EXPECT_NEAR(top, y, 1e-12);
   EXPECT_NEAR(bottom, -y, 1e-12);
