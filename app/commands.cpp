@@ -2,6 +2,7 @@
 #include "restart_command.hpp"
 
 #include "interrupt.hpp"
+#include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/render.hpp"

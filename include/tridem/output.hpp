@@ -68,11 +68,6 @@ void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&,
 /// that is not such a frame.
 Snapshot read_vtu_frame(const std::filesystem::path& file);
 
-/// Reads back a bonds/bonds_STEP.vtp written by write_bonds_vtp into `s`'s bond arrays
-/// (bond_a, bond_b, bond_damage, bond_broken and the edges' ends), for the renderer.
-/// Throws Error on a file it cannot read or that is not such a line set.
-void read_bonds_vtp(const std::filesystem::path& file, Snapshot& s);
-
 /// Whether a [[measure]] writing every `every` steps has a row at `step`: at the positive
 /// multiples of `every` (every > 0) and at the run's last step; never at step 0, before
 /// any contact force has been computed.

@@ -23,9 +23,8 @@ struct RenderOptions {
 /// Free triangles are coloured by speed |v| (viridis-like map), by material (categorical
 /// palette) or by body (the palette again, neighbouring bodies in different colours);
 /// fixed and prescribed ones are grey. A body of several triangles is drawn as one
-/// polygon: the edges its members share are not outlined. Cohesive bonds (the snapshot's
-/// bond arrays) are drawn over them: broken ones red, damaged ones orange. y points up.
-/// Throws Error on bad options or when cairo cannot draw or write the file.
+/// polygon: the edges its members share are not outlined. y points up. Throws Error
+/// on bad options or when cairo cannot draw or write the file.
 void render_png(const Snapshot&, const std::filesystem::path& png, const RenderOptions& = {});
 
 }  // namespace tridem

@@ -1,6 +1,7 @@
 // Reads back our own frames, for the renderer and for checks; any other VTU is refused
 // with the reason rather than guessed at.
 #include "io/output/vtk_xml_reader.hpp"
+#include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 

@@ -4,6 +4,7 @@
 // those writers), in both encodings. TRIDEM_WRITE_LINE_SET_FILES=dir writes the files to
 // dir instead (how the reference files were made).
 #include "io_test_support.hpp"
+#include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
