@@ -4,6 +4,7 @@
 #include "interrupt.hpp"
 #include "live/live_view.hpp"
 #include "live/replay_view.hpp"
+#include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/render.hpp"
@@ -162,7 +163,13 @@ int render(const RenderArgs& args) {
     return 0;
   }
   const fs::path frame = fs::is_directory(input) ? last_frame(input) : input;
-  const Snapshot snap = read_vtu_frame(frame);
+  Snapshot snap = read_vtu_frame(frame);
+  // A bonded scene's frame has its bonds beside it: OUT/bonds/bonds_STEP.vtp.
+  if (const std::string stem = frame.stem().string(); stem.rfind("frame_", 0) == 0) {
+    const fs::path bonds =
+        frame.parent_path().parent_path() / "bonds" / ("bonds_" + stem.substr(6) + ".vtp");
+    if (fs::is_regular_file(bonds)) read_bonds_vtp(bonds, snap);
+  }
   RenderOptions opt;
   opt.width = args.width;
   // main.cpp checked the spelling against the same table.

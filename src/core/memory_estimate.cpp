@@ -1,6 +1,7 @@
 #include "core/memory_estimate.hpp"
 
 #include "core/particle_model.hpp"
+#include "physics/cohesive_bond.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/pair_record.hpp"
 #include "tridem/particle_fields.hpp"
@@ -49,16 +50,38 @@ std::size_t cpu_bytes(std::size_t n, std::size_t pairs) {
   return n * (per_particle + host) + pairs * per_pair;
 }
 
+template <class Real>
+std::size_t bond_bytes() {
+  // The solver's: a, b and material, the geometry in Real, each point's damage, the broken
+  // flag, the released energy (double), the step's result, and two list slots (partner,
+  // bond) per bond plus the per-particle offsets (at most 3 bonds per particle: one more
+  // offset per bond is an upper bound).
+  const std::size_t solver = 3 * 4 + sizeof(physics::BondGeometry<Real>) +
+                             physics::kBondPoints * sizeof(Real) + 1 + 8 +
+                             sizeof(physics::BondForce<Real>) + 2 * 2 * 4 + 4;
+  // The host's: the scene's BondSpec, the bond model (a, b, material, geometry in double,
+  // its slots) and the snapshot's line (a, b, damage, broken, two ends).
+  const std::size_t host = sizeof(BondSpec) + 3 * 4 + sizeof(physics::BondGeometry<double>) +
+                           2 * 2 * 4 + 4 + (2 * 4 + 8 + 1 + 4 * 8);
+  return solver + host;
+}
+
 }  // namespace
+
+std::size_t cpu_bond_bytes(Precision precision) {
+  return precision == Precision::Float ? bond_bytes<float>() : bond_bytes<double>();
+}
 
 std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision) {
   return precision == Precision::Float ? gpu_bytes<float>(n, pairs)
                                        : gpu_bytes<double>(n, pairs);
 }
 
-std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision) {
-  return precision == Precision::Float ? cpu_bytes<float>(n, pairs)
-                                       : cpu_bytes<double>(n, pairs);
+std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                          std::size_t bonds) {
+  return (precision == Precision::Float ? cpu_bytes<float>(n, pairs)
+                                        : cpu_bytes<double>(n, pairs)) +
+         bonds * cpu_bond_bytes(precision);
 }
 
 }  // namespace tridem

@@ -22,8 +22,14 @@ inline constexpr std::size_t reserved_pairs(std::size_t n) {
 /// pairs (sized once at start).
 std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision);
 
-/// Bytes of host memory a run on the CPU backends holds for n particles and room for
-/// `pairs` pairs: the solver and the host copies (scene, model, snapshot).
-std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision);
+/// Bytes of host memory a run on the CPU backends holds for n particles, room for `pairs`
+/// pairs and `bonds` cohesive bonds: the solver and the host copies (scene, model,
+/// snapshot).
+std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                          std::size_t bonds = 0);
+
+/// Of those, the bytes of one cohesive bond (docs/fracture.md): the solver's geometry,
+/// damage, result and lists, the host's bond spec and model, the snapshot's line.
+std::size_t cpu_bond_bytes(Precision precision);
 
 }  // namespace tridem

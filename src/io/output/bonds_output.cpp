@@ -16,7 +16,7 @@ void write_bonds_vtp(const std::filesystem::path& file, const Snapshot& s, Encod
   io::check_snapshot(s, file.string());
   const std::size_t m = s.bond_a.size();
   std::vector<double> points(6 * m), damage(m), broken(m);
-  std::vector<std::int64_t> connectivity(2 * m), offsets(m), a(m), b(m);
+  std::vector<std::int64_t> a(m), b(m);
   for (std::size_t k = 0; k < m; ++k) {
     points[6 * k] = s.bond_x0[k];
     points[6 * k + 1] = s.bond_y0[k];
@@ -26,30 +26,14 @@ void write_bonds_vtp(const std::filesystem::path& file, const Snapshot& s, Encod
     broken[k] = s.bond_broken[k];
     a[k] = s.bond_a[k];
     b[k] = s.bond_b[k];
-    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
-    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
-    offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
   }
-  io::OutFile out(file);
-  io::begin_vtk_file(out, "PolyData");
-  out.write("  <PolyData>\n");
-  io::write_time_field_data(out, s.step, s.time, encoding, 4);
-  out.print("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
-            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-            2 * m, m);
-  out.write("      <Points>\n");
-  io::write_data_array<double>(out, "Points", points, 3, encoding, 8);
-  out.write("      </Points>\n      <Lines>\n");
-  io::write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
-  io::write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
-  out.write("      </Lines>\n      <CellData Scalars=\"damage\">\n");
-  io::write_data_array<double>(out, "damage", damage, 1, encoding, 8);
-  io::write_data_array<double>(out, "broken", broken, 1, encoding, 8);
-  io::write_data_array<std::int64_t>(out, "a", a, 1, encoding, 8);
-  io::write_data_array<std::int64_t>(out, "b", b, 1, encoding, 8);
-  out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
-  io::end_vtk_file(out);
-  out.close();
+  io::write_line_set_vtp(file, s.step, s.time, points, "Scalars=\"damage\"", encoding,
+                         [&](io::OutFile& out) {
+                           io::write_data_array<double>(out, "damage", damage, 1, encoding, 8);
+                           io::write_data_array<double>(out, "broken", broken, 1, encoding, 8);
+                           io::write_data_array<std::int64_t>(out, "a", a, 1, encoding, 8);
+                           io::write_data_array<std::int64_t>(out, "b", b, 1, encoding, 8);
+                         });
 }
 
 namespace io {

@@ -20,7 +20,6 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
   std::vector<double> points(6 * m), force(3 * m), magnitude(m), normal(3 * m), fn(m), ft(m),
       depth(m);
   std::vector<std::int32_t> sliding(m);
-  std::vector<std::int64_t> connectivity(2 * m), offsets(m);
   for (std::size_t k = 0; k < m; ++k) {
     const ContactRecord& c = s.contacts[k];
     const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
@@ -37,34 +36,18 @@ void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
     ft[k] = c.tangential_force();
     sliding[k] = c.sliding ? 1 : 0;
     depth[k] = c.depth;
-    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
-    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
-    offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
   }
-
-  io::OutFile out(file);
-  io::begin_vtk_file(out, "PolyData");
-  out.write("  <PolyData>\n");
-  io::write_time_field_data(out, s.step, s.time, encoding, 4);
-  out.print("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
-            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-            2 * m, m);
-  out.write("      <Points>\n");
-  io::write_data_array<double>(out, "Points", points, 3, encoding, 8);
-  out.write("      </Points>\n      <Lines>\n");
-  io::write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
-  io::write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
-  out.write("      </Lines>\n      <CellData Scalars=\"magnitude\" Vectors=\"force\">\n");
-  io::write_data_array<double>(out, "force", force, 3, encoding, 8);
-  io::write_data_array<double>(out, "magnitude", magnitude, 1, encoding, 8);
-  io::write_data_array<double>(out, "normal", normal, 3, encoding, 8);
-  io::write_data_array<double>(out, "normal_force", fn, 1, encoding, 8);
-  io::write_data_array<double>(out, "tangential_force", ft, 1, encoding, 8);
-  io::write_data_array<std::int32_t>(out, "sliding", sliding, 1, encoding, 8);
-  io::write_data_array<double>(out, "depth", depth, 1, encoding, 8);
-  out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
-  io::end_vtk_file(out);
-  out.close();
+  io::write_line_set_vtp(
+      file, s.step, s.time, points, "Scalars=\"magnitude\" Vectors=\"force\"", encoding,
+      [&](io::OutFile& out) {
+        io::write_data_array<double>(out, "force", force, 3, encoding, 8);
+        io::write_data_array<double>(out, "magnitude", magnitude, 1, encoding, 8);
+        io::write_data_array<double>(out, "normal", normal, 3, encoding, 8);
+        io::write_data_array<double>(out, "normal_force", fn, 1, encoding, 8);
+        io::write_data_array<double>(out, "tangential_force", ft, 1, encoding, 8);
+        io::write_data_array<std::int32_t>(out, "sliding", sliding, 1, encoding, 8);
+        io::write_data_array<double>(out, "depth", depth, 1, encoding, 8);
+      });
 }
 
 }  // namespace tridem

@@ -147,6 +147,26 @@ void draw_colorbar(cairo_t* cr, const Layout& l, double lo, double hi) {
   text(x + bar_w + 0.3 * font, bottom, fmt::format("{:.3g}", lo));
 }
 
+/// The cracks of a bonded solid (docs/fracture.md): each broken bond's edge in red, each
+/// damaged one in orange, more opaque the more damaged; intact bonds are not drawn.
+void draw_bonds(cairo_t* cr, const Snapshot& s, const Layout& l) {
+  const double width = std::clamp(3 * edge_width(s, l), 1.0, 3.0);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_width(cr, width);
+  for (std::size_t k = 0; k < s.bond_a.size(); ++k) {
+    const double d = s.bond_damage[k];
+    if (!(d > 0) || !std::isfinite(s.bond_x0[k] + s.bond_y0[k] + s.bond_x1[k] + s.bond_y1[k]))
+      continue;
+    if (s.bond_broken[k])
+      cairo_set_source_rgb(cr, 0.85, 0.05, 0.05);
+    else
+      cairo_set_source_rgba(cr, 1.0, 0.55, 0.0, 0.25 + 0.75 * std::min(d, 1.0));
+    cairo_move_to(cr, l.px(s.bond_x0[k]), l.py(s.bond_y0[k]));
+    cairo_line_to(cr, l.px(s.bond_x1[k]), l.py(s.bond_y1[k]));
+    cairo_stroke(cr);
+  }
+}
+
 }  // namespace
 
 void render_png(const Snapshot& s, const std::filesystem::path& png, const RenderOptions& o) {
@@ -240,6 +260,7 @@ void render_png(const Snapshot& s, const std::filesystem::path& png, const Rende
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_stroke(cr);
   }
+  draw_bonds(cr, s, l);
   if (l.bar_width > 0) draw_colorbar(cr, l, lo, hi);
   if (!o.label.empty()) {
     const double font = std::clamp(0.022 * l.width, 10.0, 22.0);

@@ -91,4 +91,33 @@ void write_time_field_data(OutFile& out, std::int64_t step, double time, Encodin
   out.print("{:{}}</FieldData>\n", "", indent);
 }
 
+void write_line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
+                        std::span<const double> points, std::string_view cell_attributes,
+                        Encoding encoding, const std::function<void(OutFile&)>& cell_data) {
+  const std::size_t m = points.size() / 6;
+  std::vector<std::int64_t> connectivity(2 * m), offsets(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
+    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
+    offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
+  }
+  OutFile out(file);
+  begin_vtk_file(out, "PolyData");
+  out.write("  <PolyData>\n");
+  write_time_field_data(out, step, time, encoding, 4);
+  out.print("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
+            "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+            2 * m, m);
+  out.write("      <Points>\n");
+  write_data_array<double>(out, "Points", points, 3, encoding, 8);
+  out.write("      </Points>\n      <Lines>\n");
+  write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
+  write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
+  out.print("      </Lines>\n      <CellData {}>\n", cell_attributes);
+  cell_data(out);
+  out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
+  end_vtk_file(out);
+  out.close();
+}
+
 }  // namespace tridem::io

@@ -6,6 +6,8 @@
 #include "tridem/output.hpp"
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <span>
 #include <string_view>
 
@@ -23,5 +25,13 @@ void write_data_array(OutFile&, std::string_view name, std::span<const T> values
 
 /// `<FieldData>` with TimeValue (ParaView shows it as the dataset's time) and step.
 void write_time_field_data(OutFile&, std::int64_t step, double time, Encoding, int indent);
+
+/// A PolyData file of separate line segments, the contact network's (contacts/*.vtp) and
+/// the bonds' (bonds/*.vtp): segment k joins points 2k and 2k + 1 of `points` (x, y, z
+/// each), and `cell_data` writes its per-segment arrays inside
+/// `<CellData cell_attributes>` (e.g. `Scalars="damage"`), at indent 8.
+void write_line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
+                        std::span<const double> points, std::string_view cell_attributes,
+                        Encoding encoding, const std::function<void(OutFile&)>& cell_data);
 
 }  // namespace tridem::io

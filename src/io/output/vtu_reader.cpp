@@ -1,6 +1,7 @@
 // Reads back our own frames, for the renderer and for checks; any other VTU is refused
 // with the reason rather than guessed at.
 #include "io/output/vtk_xml_reader.hpp"
+#include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
@@ -165,6 +166,38 @@ Snapshot read_vtu_frame(const std::filesystem::path& file) {
   }
   if (!body.empty()) read_members(file, s, body, ids);
   return s;
+}
+
+void read_bonds_vtp(const std::filesystem::path& file, Snapshot& s) {
+  const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), read_text(file));
+  if (const auto it = f.root.find("type"); it == f.root.end() || it->second != "PolyData")
+    bad_frame(file, "it is not a VTK PolyData file");
+  const std::size_t m = count_attribute(file, f.piece, "NumberOfLines");
+  const auto array = [&](std::string_view section, std::string_view name, int components,
+                         std::size_t tuples) {
+    const io::XmlDataArray* a = io::find_array(f, section, name);
+    if (!a) bad_frame(file, fmt::format("no array '{}' in <{}>", name, section));
+    return io::decode_array(f, *a, components, tuples);
+  };
+  const std::vector<double> xyz = array("Points", "Points", 3, 2 * m);
+  const std::vector<double> damage = array("CellData", "damage", 1, m);
+  const auto broken = integers(file, "broken", array("CellData", "broken", 1, m), 0, 1);
+  const auto a = integers(file, "a", array("CellData", "a", 1, m), 0, 2147483647.0);
+  const auto b = integers(file, "b", array("CellData", "b", 1, m), 0, 2147483647.0);
+  s.bond_a.resize(m);
+  s.bond_b.resize(m);
+  s.bond_broken.resize(m);
+  s.bond_damage = damage;
+  for (auto* v : {&s.bond_x0, &s.bond_y0, &s.bond_x1, &s.bond_y1}) v->resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    s.bond_a[k] = static_cast<std::int32_t>(a[k]);
+    s.bond_b[k] = static_cast<std::int32_t>(b[k]);
+    s.bond_broken[k] = static_cast<std::uint8_t>(broken[k]);
+    s.bond_x0[k] = xyz[6 * k];
+    s.bond_y0[k] = xyz[6 * k + 1];
+    s.bond_x1[k] = xyz[6 * k + 3];
+    s.bond_y1[k] = xyz[6 * k + 4];
+  }
 }
 
 }  // namespace tridem

@@ -120,7 +120,11 @@ ImportedParticles mesh_region(const MeshRegion& region, const std::string& what)
   try {
     GmshSession session;
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay: unstructured, regular
+    // Delaunay, not Frontal-Delaunay: the frontal mesher lays near-equilateral triangles in
+    // lattice-like patches whose edges take three directions only (a Brazilian disc meshed
+    // so had no edge within 25 degrees of its loaded diameter: docs/fracture.md, "Why the
+    // first disc was low"); Delaunay's edges take every direction.
+    gmsh::option::setNumber("Mesh.Algorithm", 5);
     gmsh::option::setNumber("Mesh.MeshSizeMin", region.size);
     gmsh::option::setNumber("Mesh.MeshSizeMax", region.size);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -128,7 +132,19 @@ ImportedParticles mesh_region(const MeshRegion& region, const std::string& what)
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::model::add("tridem");
     namespace geo = gmsh::model::geo;
-    if (region.kind == MeshRegion::Kind::Disc) {
+    if (region.kind == MeshRegion::Kind::Disc && region.flat_angle > 0) {
+      // A flattened disc: two chords of half-width r sin(a/2) at y = +-r cos(a/2), joined by
+      // the two side arcs (each under 180 degrees, as Gmsh's arcs must be).
+      const double cx = region.center.x, cy = region.center.y, r = region.radius;
+      const double sx = r * std::sin(0.5 * region.flat_angle);
+      const double sy = r * std::cos(0.5 * region.flat_angle);
+      const int c = geo::addPoint(cx, cy, 0);
+      const int p[4] = {geo::addPoint(cx + sx, cy + sy, 0), geo::addPoint(cx - sx, cy + sy, 0),
+                        geo::addPoint(cx - sx, cy - sy, 0), geo::addPoint(cx + sx, cy - sy, 0)};
+      geo::addPlaneSurface(
+          {geo::addCurveLoop({geo::addLine(p[0], p[1]), geo::addCircleArc(p[1], c, p[2]),
+                              geo::addLine(p[2], p[3]), geo::addCircleArc(p[3], c, p[0])})});
+    } else if (region.kind == MeshRegion::Kind::Disc) {
       // Four quarter arcs, so that nodes sit exactly at the disc's extremes in x and y:
       // where a platen of a Brazilian test touches it.
       const double cx = region.center.x, cy = region.center.y, r = region.radius;

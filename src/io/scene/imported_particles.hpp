@@ -38,6 +38,9 @@ struct MeshRegion {
   enum class Kind { Disc, Rectangle } kind = Kind::Disc;
   Vec2d center{};     ///< disc
   double radius = 0;  ///< disc
+  /// disc: the angle (rad) each of two flats at its top and bottom subtends at the centre
+  /// (a flattened Brazilian disc, loaded over the flats); 0 = a full disc.
+  double flat_angle = 0;
   Vec2d lo{}, hi{};   ///< rectangle's corners
   double size = 0;    ///< target element size, m
 };

@@ -48,10 +48,15 @@ MeshRegion read_region(TableReader& r, Kind kind) {
     m.center = r.required(r.vec2("center"), "center");
     m.radius = r.required(r.real("radius"), "radius");
     if (!(m.radius > 0)) r.fail("radius", fmt::format("must be > 0 (m), got {}", m.radius));
+    const double flat = r.real("flat_angle").value_or(0.0);
+    if (!(flat >= 0 && flat <= 90))
+      r.fail("flat_angle", fmt::format("must be in [0, 90] degrees, got {}", flat));
+    m.flat_angle = flat * M_PI / 180.0;
     if (!(m.size < m.radius))
       r.fail("size", fmt::format("must be below the radius {} m, got {}", m.radius, m.size));
     check_expected_count(r, M_PI * m.radius * m.radius, m.size);
   } else {
+    if (r.real("flat_angle")) r.fail("flat_angle", "is for kind = \"disc\" only");
     m.kind = MeshRegion::Kind::Rectangle;
     const auto region = r.required(r.points<2>("region"), "region");
     m.lo = region[0];

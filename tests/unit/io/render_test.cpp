@@ -130,6 +130,30 @@ TEST(Render, ColourBarAddsLabelsBesideTheParticles) {
   EXPECT_TRUE(drawn);
 }
 
+// Cracks (docs/fracture.md): a broken bond's edge is drawn red over the triangles, an
+// intact one not at all.
+TEST(Render, BrokenBondsAreDrawnRed) {
+  test::TempDir tmp;
+  Snapshot s = test::sample_snapshot();
+  render_png(s, tmp.path() / "plain.png", tight(RenderOptions::ColorBy::Speed));
+  s.bond_a = {0, 0};
+  s.bond_b = {1, 1};
+  s.bond_damage = {1.0, 0.0};
+  s.bond_broken = {1, 0};
+  s.bond_x0 = {s.x[0] - 0.1, s.x[1] - 0.1};
+  s.bond_y0 = {s.y[0], s.y[1]};
+  s.bond_x1 = {s.x[0] + 0.1, s.x[1] + 0.1};
+  s.bond_y1 = {s.y[0], s.y[1]};
+  render_png(s, tmp.path() / "cracked.png", tight(RenderOptions::ColorBy::Speed));
+  const Png plain(tmp.path() / "plain.png"), cracked(tmp.path() / "cracked.png");
+  const Pixel crack = pixel_at(cracked, s.x[0], s.y[0]);
+  EXPECT_GT(crack.r, 180);
+  EXPECT_LT(crack.g, 60);
+  EXPECT_LT(crack.b, 60);
+  EXPECT_EQ(pixel_at(cracked, s.x[1], s.y[1]), pixel_at(plain, s.x[1], s.y[1]))
+      << "an intact bond is not drawn";
+}
+
 TEST(Render, BadOptionsAndUnwritableFileThrow) {
   test::TempDir tmp;
   RenderOptions o;

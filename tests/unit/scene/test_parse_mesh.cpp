@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -127,6 +128,41 @@ TEST(SceneMesh, MeshFileIsBonded) {
   EXPECT_GT(s.triangles.size(), 2u);
   EXPECT_FALSE(s.bonds.empty());
   EXPECT_FALSE(s.has_bodies());
+}
+
+// A flattened disc (the Brazilian test's loading, docs/fracture.md): its top and bottom are
+// flat chords of the given angle, every vertex within the disc, the flats' vertices at
+// y = +-r cos(angle / 2) and none beyond; the edges take many directions (Delaunay).
+TEST(SceneMesh, FlattenedDiscHasItsFlats) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
+  const double r = 0.025, y = r * std::cos(10 * M_PI / 180);
+  const Scene s = parse_scene(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = 0.025\n"
+                                        "size = 0.005\nflat_angle = 20\nmaterial = \"granite\"\n"
+                                        "bonded = true\n"),
+                              "s.toml");
+  double top = -1, bottom = 1;
+  int on_top = 0;
+  std::set<int> directions;  // the edges' directions, in 10-degree bins
+  for (const TriangleSpec& t : s.triangles)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec2d v = t.vertices[k], w = t.vertices[(k + 1) % 3];
+      EXPECT_LE(norm(v), r * (1 + 1e-9));
+      top = std::max(top, v.y);
+      bottom = std::min(bottom, v.y);
+      on_top += std::abs(v.y - y) < 1e-12;
+      directions.insert(static_cast<int>(
+          std::fmod(std::atan2(w.y - v.y, w.x - v.x) * 180 / M_PI + 180, 180) / 10));
+    }
+  EXPECT_NEAR(top, y, 1e-12);
+  EXPECT_NEAR(bottom, -y, 1e-12);
+  EXPECT_GE(on_top, 2);
+  EXPECT_GE(directions.size(), 15u) << "a lattice-like mesh has its edges in a few directions";
+  expect_refused(with_mesh("kind = \"disc\"\ncenter = [0, 0]\nradius = 1\nsize = 0.1\n"
+                           "flat_angle = 120\nmaterial = \"granite\"\n"),
+                 {"flat_angle", "[0, 90]"});
+  expect_refused(with_mesh("kind = \"rectangle\"\nregion = [[0, 0], [1, 1]]\nsize = 0.1\n"
+                           "flat_angle = 10\nmaterial = \"granite\"\n"),
+                 {"flat_angle", "disc"});
 }
 
 TEST(SceneMesh, RefusalsSayWhatToChange) {
