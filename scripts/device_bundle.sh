@@ -14,6 +14,8 @@ rm -rf "$dest"
 mkdir -p "$dest/lib" "$dest/app" "$dest/bench" "$dest/tests"
 cp "$build/app/tridem" "$dest/app/"
 cp "$build/bench/tridem_bench" "$build/bench/tridem_paper_bench" "$dest/bench/"
+# The live view's benchmark client (bench/live/run_live_bench.sh), where the build has it.
+if [ -x "$build/bench/tridem_live_client" ]; then cp "$build/bench/tridem_live_client" "$dest/bench/"; fi
 cp "$build/tests/tridem_tests" "$dest/tests/"
 for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_paper_bench "$dest"/tests/tridem_tests; do
   ldd "$bin" | awk '/=> \// {print $3}'
