@@ -470,25 +470,17 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   }
   // The walls' loads, pair by pair: (wall, 0 = as emitter | 1 = as partner, other, fx, fy,
   // torque), summed on rank 0 in sum_pair_forces' order.
-  const PairList& pl = local_->last_pairs();
-  const auto& force = local_->last_forces();
-  if (step() > 0)
-    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
-      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
-        const std::int32_t ge = global_[e];
-        const std::int32_t gj =
-            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
-        const bool we = model_.motion[static_cast<std::size_t>(ge)] != Motion::Free;
-        const bool wj = model_.motion[static_cast<std::size_t>(gj)] != Motion::Free;
-        if (!(we || wj) || authority(ge, gj) != rank_) continue;
-        const physics::PairForce<Real>& f = force[static_cast<std::size_t>(s)];
-        if (we)
-          loads.insert(loads.end(), {double(ge), 0.0, double(gj), double(f.force_a.x),
-                                     double(f.force_a.y), double(f.torque_a)});
-        if (wj)
-          loads.insert(loads.end(), {double(gj), 1.0, double(ge), double(f.force_a.x),
-                                     double(f.force_a.y), double(f.torque_b)});
-      }
+  for_each_last_pair([&](std::int32_t ge, std::int32_t gj, const physics::PairForce<Real>& f) {
+    const bool we = model_.motion[static_cast<std::size_t>(ge)] != Motion::Free;
+    const bool wj = model_.motion[static_cast<std::size_t>(gj)] != Motion::Free;
+    if (!(we || wj) || authority(ge, gj) != rank_) return;
+    if (we)
+      loads.insert(loads.end(), {double(ge), 0.0, double(gj), double(f.force_a.x),
+                                 double(f.force_a.y), double(f.torque_a)});
+    if (wj)
+      loads.insert(loads.end(), {double(gj), 1.0, double(ge), double(f.force_a.x),
+                                 double(f.force_a.y), double(f.torque_b)});
+  });
   for (const ContactRecord& c : ls.contacts) {
     const std::int32_t gi = global_[static_cast<std::size_t>(c.i)];
     const std::int32_t gj = global_[static_cast<std::size_t>(c.j)];
@@ -593,18 +585,11 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
     sums.push_back(static_cast<double>(g));
     for (const auto& v : energy) sums.push_back(v[k]);
   }
-  const PairList& pl = local_->last_pairs();
-  const auto& force = local_->last_forces();
-  if (step() > 0)
-    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
-      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s) {
-        const std::int32_t ge = global_[e];
-        const std::int32_t gj =
-            global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])];
-        const auto value = static_cast<double>(force[static_cast<std::size_t>(s)].elastic_energy);
-        if (value != 0 && authority(ge, gj) == rank_)
-          elastic.insert(elastic.end(), {double(ge), double(gj), value});
-      }
+  for_each_last_pair([&](std::int32_t ge, std::int32_t gj, const physics::PairForce<Real>& f) {
+    const auto value = static_cast<double>(f.elastic_energy);
+    if (value != 0 && authority(ge, gj) == rank_)
+      elastic.insert(elastic.end(), {double(ge), double(gj), value});
+  });
   std::vector<double> mine{static_cast<double>(sums.size()), static_cast<double>(elastic.size())};
   mine.insert(mine.end(), sums.begin(), sums.end());
   mine.insert(mine.end(), elastic.begin(), elastic.end());

@@ -86,6 +86,18 @@ class MpiSolver final : public Solver {
   }
   std::string global_ids(const std::string& message) const;
   void measure_bandwidth();
+  /// f(emitter, partner, result) for each pair of the local solver's last step, by global
+  /// ids, in its slot order (none before the first step).
+  template <class F>
+  void for_each_last_pair(F&& f) const {
+    if (step() == 0) return;
+    const PairList& pl = local_->last_pairs();
+    const auto& force = local_->last_forces();
+    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
+      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s)
+        f(global_[e], global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])],
+          force[static_cast<std::size_t>(s)]);
+  }
 
   MPI_Comm comm_;
   int rank_ = 0, ranks_ = 1;
