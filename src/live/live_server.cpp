@@ -64,10 +64,12 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       : ws_(std::move(socket)), server_(server), id_(id) {}
 
   void start(http::request<http::string_body> request) {
+    // Kept by the session: the accept reads it until its handler runs.
+    upgrade_ = std::move(request);
     beast::get_lowest_layer(ws_).expires_never();
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(kMaxWebSocketMessage);
-    ws_.async_accept(request,
+    ws_.async_accept(upgrade_,
                      [self = shared_from_this()](beast::error_code ec) { self->on_accept(ec); });
   }
 
@@ -163,6 +165,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   }
 
   websocket::stream<beast::tcp_stream> ws_;
+  http::request<http::string_body> upgrade_;  ///< the Upgrade request being accepted
   beast::flat_buffer buffer_;
   std::deque<std::pair<LiveServer::Message, bool>> queue_;
   LiveServer::Impl& server_;

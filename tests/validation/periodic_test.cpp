@@ -197,7 +197,8 @@ TEST(PeriodicGas, GridAllPairsAndOpenMPAgreeBitForBit) {
   all.simulation.method = Method::AllPairs;
   threads.simulation.backend = Backend::OpenMP;
   std::vector<std::unique_ptr<Solver>> solvers;
-  for (const Scene* scene : {&s, &all, &threads}) solvers.push_back(make_solver(*scene, SolverConfig{}));
+  for (const Scene* scene : {&s, &all, &threads})
+    solvers.push_back(make_solver(*scene, SolverConfig{}));
   std::size_t contacts = 0;
   for (int chunk = 0; chunk < 4; ++chunk) {
     std::vector<Snapshot> out(solvers.size());

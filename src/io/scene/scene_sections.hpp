@@ -15,7 +15,7 @@ namespace tridem::scene_detail {
 
 SimulationSettings parse_simulation(const toml::table& table, const std::string& source);
 /// periodic_x, periodic_y and shear_rate of [simulation] (parse_periodic.cpp).
-PeriodicCell parse_periodic_cell(TableReader& simulation);
+PeriodicCell parse_periodic_cell(TableReader& r);
 /// Why a periodic cell is refused (its ranges, its shear), naming the key in `key`;
 /// shared by the reader and validate_scene.
 std::optional<std::string> periodic_cell_problem(const PeriodicCell& cell, std::string& key);

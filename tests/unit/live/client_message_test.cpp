@@ -36,7 +36,7 @@ TEST(LiveClientMessage, RefusesBadNumbersWithAReason) {
 }
 
 TEST(LiveClientMessage, RefusesUnknownEmptyAndGarbage) {
-  for (std::string bad :
+  for (const std::string& bad :
        {std::string(), std::string("PAUSE"), std::string("pause now"), std::string(" next"),
         std::string("next\n"), std::string("{\"cmd\":1}"), std::string("\0\xff\x01garbage", 10)}) {
     const ClientMessage m = parse_client_message(bad);
