@@ -13,6 +13,24 @@
 
 namespace tridem::test {
 
+/// The bonded rock of the fracture tests (issue 14's granite): contact and bond keys.
+inline Material granite() {
+  Material m;
+  m.name = "granite";
+  m.density = 2650;
+  m.penalty = 5e10;
+  m.tangential_penalty = 5e9;
+  m.friction = 0.6;
+  m.restitution = 0.5;
+  m.young_modulus = 40e9;
+  m.tensile_strength = 8e6;
+  m.shear_strength = 25e6;
+  m.friction_angle = 35;
+  m.fracture_energy = 30;
+  m.shear_fracture_energy = 150;
+  return m;
+}
+
 inline Scene empty_scene(double penalty = 1e8, double density = 1000, double friction = 0,
                          double damping = 0) {
   Scene s;

@@ -4,6 +4,7 @@
 // equals serial bit for bit on a breaking disc, a checkpoint's state continues the run
 // exactly, and the CUDA backend refuses a bonded scene.
 #include "physics/cohesive_bond.hpp"
+#include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
@@ -19,29 +20,12 @@
 namespace tridem {
 namespace {
 
-Material granite() {
-  Material m;
-  m.name = "granite";
-  m.density = 2650;
-  m.penalty = 5e10;
-  m.tangential_penalty = 5e9;
-  m.friction = 0.6;
-  m.restitution = 0.5;
-  m.young_modulus = 40e9;
-  m.tensile_strength = 8e6;
-  m.shear_strength = 25e6;
-  m.friction_angle = 35;
-  m.fracture_energy = 30;
-  m.shear_fracture_energy = 150;
-  return m;
-}
-
 // Two right triangles of legs 1 cm forming a square, bonded along its diagonal; b moves
 // away from a along the diagonal's normal at `speed` (each side half of it).
 Scene bonded_square(double speed) {
   Scene s;
   s.source = "bonded square";
-  s.materials = {granite()};
+  s.materials = {test::granite()};
   const double l = 0.01;
   TriangleSpec a, b;
   a.vertices = {Vec2d{0, 0}, Vec2d{l, 0}, Vec2d{l, l}};  // below the diagonal

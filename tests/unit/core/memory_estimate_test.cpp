@@ -3,6 +3,7 @@
 // cover at least the solver's state of it.
 #include "core/memory_estimate.hpp"
 #include "physics/cohesive_bond.hpp"
+#include "support/scene_builder.hpp"
 #include "tridem/run.hpp"
 #include "tridem/scene.hpp"
 
@@ -14,17 +15,7 @@ namespace {
 Scene two_bonded_triangles() {
   Scene s;
   s.source = "two bonded triangles";
-  Material m;
-  m.name = "granite";
-  m.density = 2650;
-  m.penalty = 5e10;
-  m.young_modulus = 40e9;
-  m.tensile_strength = 8e6;
-  m.shear_strength = 25e6;
-  m.friction_angle = 35;
-  m.fracture_energy = 30;
-  m.shear_fracture_energy = 150;
-  s.materials = {m};
+  s.materials = {test::granite()};
   TriangleSpec a, b;
   a.vertices = {Vec2d{0, 0}, Vec2d{1, 0}, Vec2d{1, 1}};
   b.vertices = {Vec2d{0, 0}, Vec2d{1, 1}, Vec2d{0, 1}};
