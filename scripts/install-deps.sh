@@ -1,16 +1,25 @@
 #!/usr/bin/env bash
 # Installs tridem's build dependencies from Debian's packages (Debian 12 or newer,
 # Ubuntu 24.04). Runs apt-get through sudo when not root.
+#   scripts/install-deps.sh [all|build|tools]   (default all)
+# build: what configuring and building needs; tools: what only the tests, the fuzzers and
+# the lint need (a browser, ffmpeg, clang), which CI installs while it builds (.ci/run).
 set -euo pipefail
+group=${1:-all}
+case "$group" in all | build | tools) ;; *)
+  echo "usage: scripts/install-deps.sh [all|build|tools]" >&2; exit 2 ;; esac
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
+if [ "$group" != tools ]; then
 $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config \
   libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev libboost-dev \
   libopenmpi-dev openmpi-bin
+fi
+[ "$group" != build ] || exit 0
 # The live view's browser test (tests/browser: headless chromium through selenium) and
 # `tridem render --movie` (the ffmpeg program).
 $SUDO apt-get install -y -qq --no-install-recommends \
