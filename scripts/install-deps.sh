@@ -17,13 +17,15 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config \
   libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev libboost-dev \
-  libopenmpi-dev openmpi-bin
+  libopenmpi-dev openmpi-bin zlib1g-dev
 fi
 [ "$group" != build ] || exit 0
 # The live view's browser test (tests/browser: headless chromium through selenium) and
 # `tridem render --movie` (the ffmpeg program).
 $SUDO apt-get install -y -qq --no-install-recommends \
   chromium chromium-driver python3-selenium ffmpeg
+# The frames' check with VTK's own readers (tests/paraview).
+$SUDO apt-get install -y -qq --no-install-recommends python3-vtk9
 # The fuzz build (scripts/run-fuzzers.sh): clang with libFuzzer and its sanitizer
 # runtimes, and clang's OpenMP.
 $SUDO apt-get install -y -qq --no-install-recommends \

@@ -49,17 +49,18 @@ void write_bodies_csv(const std::filesystem::path& file, const Snapshot&);
 /// `grain_stress`: the per-grain stress, pressure and coordination arrays, from the
 /// snapshot's contacts (a run writes them when [output] contacts is on: the contacts then
 /// come with every frame).
-void write_vtu_frame(const std::filesystem::path& file, const Snapshot&,
-                     Encoding = Encoding::Binary, bool grain_stress = true);
+/// The VTK files take the format of their arrays (VtkFormat: binary, Float32, zlib by
+/// default; the scene's `[output] vtk_encoding`, `vtk_precision`, `vtk_compression`).
+void write_vtu_frame(const std::filesystem::path& file, const Snapshot&, VtkFormat = {},
+                     bool grain_stress = true);
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
-void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&,
-                        Encoding = Encoding::Binary);
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&, VtkFormat = {});
 /// bonds/bonds_<step>.vtp: the cohesive bonds as lines along their shared edges, with
 /// cell data damage (0 to 1), broken (0 or 1) and the two triangles' ids a, b.
-void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&,
-                     Encoding = Encoding::Binary);
+void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&, VtkFormat = {});
 
-/// Reads back a frame written by write_vtu_frame, in either encoding. Recovers step, time,
+/// Reads back a frame written by write_vtu_frame, in any VtkFormat (and the Float64
+/// uncompressed frames written before issue 12). Recovers step, time,
 /// vertices, centroids (vertex mean), velocities, forces, torques, material and motion, in
 /// id order, and each triangle's body (member_body and body_first, when some body has
 /// several triangles; frames written before bodies have no `body` array and read as
@@ -89,19 +90,29 @@ struct ResumePoint {
 ///                                  the .vtp files listed in contacts.pvd
 ///   measure_<name>.csv             a row per measure() call due for that [[measure]]
 ///   final.csv, bodies.csv          from write_final()
+/// Frames go through write_frame, or beside the caller through write_frame_beside.
 /// The .pvd collections are replaced atomically after every frame, so they stay valid
 /// if the run dies. Every failure to create or write throws RunError.
 /// A fresh set removes the tridem files of an earlier run in `dir`; a resumed one keeps
 /// them up to the resume point and removes what came after (rows, frames, entries).
 class OutputSet {
  public:
-  OutputSet(const OutputSettings&, std::filesystem::path dir, Encoding = Encoding::Binary,
+  OutputSet(const OutputSettings&, std::filesystem::path dir, VtkFormat = {},
             const std::optional<ResumePoint>& resume = std::nullopt);
   ~OutputSet();
   OutputSet(OutputSet&&) noexcept;
   OutputSet& operator=(OutputSet&&) noexcept;
 
   void write_frame(const Snapshot&);
+  /// The same files as write_frame, written by the set's output thread while the caller
+  /// goes on (io/output/frame_thread.hpp): waits for the previous frame, then takes the
+  /// contents of `s` by swap (`s` is left with an earlier frame's buffer, for the next
+  /// Solver::snapshot to overwrite). The other calls may run while a frame is written: the
+  /// frames' writers share nothing with the logs'. A failure surfaces as the RunError it
+  /// was, thrown by the next write_frame_beside, write_frame or finish_frames.
+  void write_frame_beside(Snapshot& s);
+  /// Waits for the frame in flight; throws its failure, if any.
+  void finish_frames();
   /// One row of energy.csv (with the solver's budget under gravity g) and walls.csv.
   void log(const Snapshot&, Vec2d gravity = {}, const EnergyBudget& budget = {});
   void write_final(const Snapshot&);

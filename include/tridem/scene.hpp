@@ -138,8 +138,24 @@ struct SimulationSettings {
   PeriodicCell periodic;  ///< periodic_x, periodic_y, shear_rate; none by default
 };
 
-/// How VTK XML arrays are stored: base64 inline (compact, exact) or text (greppable).
+/// How VTK XML arrays are stored: base64 inline (compact) or text (greppable).
 enum class Encoding { Binary, Ascii };
+/// The type of the real-valued arrays of frames: 4 bytes (what a picture needs) or 8 (the
+/// simulator's doubles, exactly). The time of a frame is always a double.
+enum class VtkPrecision { Float32, Float64 };
+/// Binary arrays compressed as VTK's vtkZLibDataCompressor does, or stored as they are.
+/// Text arrays are never compressed.
+enum class VtkCompression { Zlib, None };
+
+/// Everything that decides how a VTK XML file's arrays are written.
+struct VtkFormat {
+  Encoding encoding = Encoding::Binary;
+  VtkPrecision precision = VtkPrecision::Float32;
+  VtkCompression compression = VtkCompression::Zlib;
+  bool compressed() const {
+    return encoding == Encoding::Binary && compression == VtkCompression::Zlib;
+  }
+};
 
 /// The region of a [[measure]]: an axis-aligned rectangle, lo < hi in both coordinates.
 struct MeasureRegion {
@@ -165,13 +181,18 @@ struct OutputSettings {
   std::string dir = "out";
   std::int64_t every = 0;              ///< steps between frames; 0 = no frames
   bool contacts = true;                ///< write the contact network with each frame
+  /// ... also as contacts/*.csv (text, 17 digits: most of a frame's bytes), besides .vtp
+  bool contacts_csv = true;
   Encoding encoding = Encoding::Binary; ///< of the .vtu/.vtp frames
+  VtkPrecision precision = VtkPrecision::Float32;     ///< of their real arrays
+  VtkCompression compression = VtkCompression::Zlib;  ///< of their binary arrays
   std::int64_t checkpoint_every = 0;   ///< steps between checkpoints; 0 = none
   /// Steps between rows of energy.csv and walls.csv (besides step 0 and the last step);
   /// unset = `every`, 0 = only those two.
   std::optional<std::int64_t> energy_every;
 
   std::int64_t log_every() const { return energy_every.value_or(every); }
+  VtkFormat vtk_format() const { return {encoding, precision, compression}; }
 
   std::vector<MeasureSpec> measures;  ///< the [[measure]] tables, in file order
   std::int64_t measure_every(const MeasureSpec& m) const { return m.every.value_or(log_every()); }

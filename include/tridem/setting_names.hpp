@@ -38,6 +38,12 @@ inline constexpr Spellings<DecompositionLayout, 2> kLayoutNames{
 inline constexpr Spellings<Encoding, 2> kEncodingNames{
     {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}}};
 
+inline constexpr Spellings<VtkPrecision, 2> kVtkPrecisionNames{
+    {{"float32", VtkPrecision::Float32}, {"double", VtkPrecision::Float64}}};
+
+inline constexpr Spellings<VtkCompression, 2> kVtkCompressionNames{
+    {{"zlib", VtkCompression::Zlib}, {"none", VtkCompression::None}}};
+
 inline constexpr Spellings<Motion, 3> kMotionNames{
     {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};
 

@@ -97,7 +97,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
     std::fflush(log);
   }
 
-  OutputSet out(scene.output, scene.output.dir, scene.output.encoding, resume);
+  OutputSet out(scene.output, scene.output.dir, scene.output.vtk_format(), resume);
   TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress, options.observer);
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();

@@ -64,6 +64,8 @@ int TimeLoop::run() {
   }
   bar_.finish();
   if (signal != 0) keep_state(files_.checkpoint);
+  // The run is done when its last frame is on disk (or has failed, which throws here).
+  out_.finish_frames();
   return signal;
 }
 
@@ -118,10 +120,11 @@ void TimeLoop::emit(std::int64_t step, bool frame, bool log, bool measure) {
   // the frames' per-grain stress come from them); a measure always does. Without them a
   // frame is the state alone: on the GPU the contacts are the larger part of a download.
   solver_.snapshot(snap_, (frame && scene_.output.contacts) || measure);
-  if (frame) out_.write_frame(snap_);
   if (log) out_.log(snap_, scene_.simulation.gravity, solver_.energy());
   if (measure) out_.measure(snap_, step == last_);
   if (step == last_) out_.write_final(snap_);
+  // Last: the frame is written beside the next steps and takes snap_'s contents with it.
+  if (frame) out_.write_frame_beside(snap_);
 }
 
 void TimeLoop::keep_state(const std::filesystem::path& file) {

@@ -29,27 +29,33 @@ bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; 
 
 }  // namespace
 
-std::string base64_encode(std::span<const std::uint8_t> bytes) {
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
+void base64_append(std::span<const std::uint8_t> bytes, std::string& out) {
+  const std::size_t start = out.size();
+  out.resize(start + (bytes.size() + 2) / 3 * 4);
+  char* to = out.data() + start;
   std::size_t k = 0;
   for (; k + 3 <= bytes.size(); k += 3) {
     const std::uint32_t v = (std::uint32_t{bytes[k]} << 16) |
                             (std::uint32_t{bytes[k + 1]} << 8) | bytes[k + 2];
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += kAlphabet[(v >> 6) & 63];
-    out += kAlphabet[v & 63];
+    *to++ = kAlphabet[(v >> 18) & 63];
+    *to++ = kAlphabet[(v >> 12) & 63];
+    *to++ = kAlphabet[(v >> 6) & 63];
+    *to++ = kAlphabet[v & 63];
   }
   const std::size_t rest = bytes.size() - k;
   if (rest > 0) {
     std::uint32_t v = std::uint32_t{bytes[k]} << 16;
     if (rest == 2) v |= std::uint32_t{bytes[k + 1]} << 8;
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += rest == 2 ? kAlphabet[(v >> 6) & 63] : '=';
-    out += '=';
+    *to++ = kAlphabet[(v >> 18) & 63];
+    *to++ = kAlphabet[(v >> 12) & 63];
+    *to++ = rest == 2 ? kAlphabet[(v >> 6) & 63] : '=';
+    *to++ = '=';
   }
+}
+
+std::string base64_encode(std::span<const std::uint8_t> bytes) {
+  std::string out;
+  base64_append(bytes, out);
   return out;
 }
 

@@ -9,6 +9,8 @@
 namespace tridem::io {
 
 std::string base64_encode(std::span<const std::uint8_t> bytes);
+/// Appends the encoding of `bytes` to `out`: a writer that keeps `out` reuses its storage.
+void base64_append(std::span<const std::uint8_t> bytes, std::string& out);
 
 /// Skips whitespace. Accepts padding at the end of any 4-character group, not only the
 /// last, because some writers encode an array's header and its data as separate runs.

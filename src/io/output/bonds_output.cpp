@@ -4,7 +4,7 @@
 #include "io/output/log_rows.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
-#include "io/output/vtk_xml_writer.hpp"
+#include "io/output/vtk_frames.hpp"
 #include "tridem/output.hpp"
 
 #include <cstdint>
@@ -12,31 +12,30 @@
 
 namespace tridem {
 
-void write_bonds_vtp(const std::filesystem::path& file, const Snapshot& s, Encoding encoding) {
-  io::check_snapshot(s, file.string());
-  const std::size_t m = s.bond_a.size();
-  std::vector<double> points(6 * m), damage(m), broken(m);
-  std::vector<std::int64_t> a(m), b(m);
-  for (std::size_t k = 0; k < m; ++k) {
-    points[6 * k] = s.bond_x0[k];
-    points[6 * k + 1] = s.bond_y0[k];
-    points[6 * k + 3] = s.bond_x1[k];
-    points[6 * k + 4] = s.bond_y1[k];
-    damage[k] = s.bond_damage[k];
-    broken[k] = s.bond_broken[k];
-    a[k] = s.bond_a[k];
-    b[k] = s.bond_b[k];
-  }
-  io::write_line_set_vtp(file, s.step, s.time, points, "Scalars=\"damage\"", encoding,
-                         [&](io::OutFile& out) {
-                           io::write_data_array<double>(out, "damage", damage, 1, encoding, 8);
-                           io::write_data_array<double>(out, "broken", broken, 1, encoding, 8);
-                           io::write_data_array<std::int64_t>(out, "a", a, 1, encoding, 8);
-                           io::write_data_array<std::int64_t>(out, "b", b, 1, encoding, 8);
-                         });
-}
-
 namespace io {
+
+void write_bonds_vtp(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s) {
+  check_snapshot(s, file.string());
+  const std::size_t m = s.bond_a.size();
+  // Segment k joins points 2k and 2k + 1, the ends of bond k's edge.
+  const auto at = [](const std::vector<double>& first, const std::vector<double>& second) {
+    return [&first, &second](std::size_t p) { return p % 2 == 0 ? first[p / 2] : second[p / 2]; };
+  };
+  w.line_set_vtp(
+      file, s.step, s.time, 2 * m, at(s.bond_x0, s.bond_x1), at(s.bond_y0, s.bond_y1), m,
+      [](std::size_t k) { return static_cast<std::int64_t>(2 * k); },
+      [](std::size_t k) { return static_cast<std::int64_t>(2 * k + 1); }, "Scalars=\"damage\"",
+      [&](OutFile& out) {
+        w.reals(out, "damage", s.bond_damage, 8);
+        w.reals(
+            out, "broken", 1, m,
+            [&](std::size_t k) { return static_cast<double>(s.bond_broken[k]); }, 8);
+        w.integers<std::int64_t>(
+            out, "a", 1, m, [&](std::size_t k) { return s.bond_a[k]; }, 8);
+        w.integers<std::int64_t>(
+            out, "b", 1, m, [&](std::size_t k) { return s.bond_b[k]; }, 8);
+      });
+}
 
 void write_bond_row(OutFile& out, const Snapshot& s, double fracture_energy) {
   std::size_t intact = 0, damaged = 0, broken = 0;
@@ -53,4 +52,10 @@ void write_bond_row(OutFile& out, const Snapshot& s, double fracture_energy) {
 }
 
 }  // namespace io
+
+void write_bonds_vtp(const std::filesystem::path& file, const Snapshot& s, VtkFormat format) {
+  io::VtkXmlWriter w(format);
+  io::write_bonds_vtp(w, file, s);
+}
+
 }  // namespace tridem

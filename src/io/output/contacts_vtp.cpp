@@ -1,53 +1,61 @@
-// The contact network as lines between the centroids of the two particles, so ParaView
+// The contact network as lines between the centroids of the two particles (the points are
+// the particles' centroids, in id order), so ParaView
 // can draw force chains (Tube filter, line width or colour by magnitude).
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
-#include "io/output/vtk_xml_writer.hpp"
+#include "io/output/vtk_frames.hpp"
 #include "tridem/output.hpp"
 
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 namespace tridem {
+namespace io {
 
-void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s,
-                        Encoding encoding) {
-  io::check_snapshot(s, file.string());
-  io::check_contacts(s, file.string());
-  const std::size_t m = s.contacts.size();
-
-  std::vector<double> points(6 * m), force(3 * m), magnitude(m), normal(3 * m), fn(m), ft(m),
-      depth(m);
-  std::vector<std::int32_t> sliding(m);
-  for (std::size_t k = 0; k < m; ++k) {
-    const ContactRecord& c = s.contacts[k];
-    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
-    points[6 * k] = s.x[i];
-    points[6 * k + 1] = s.y[i];
-    points[6 * k + 3] = s.x[j];
-    points[6 * k + 4] = s.y[j];
-    force[3 * k] = c.fx;
-    force[3 * k + 1] = c.fy;
-    magnitude[k] = std::hypot(c.fx, c.fy);
-    normal[3 * k] = c.nx;
-    normal[3 * k + 1] = c.ny;
-    fn[k] = c.normal_force();
-    ft[k] = c.tangential_force();
-    sliding[k] = c.sliding ? 1 : 0;
-    depth[k] = c.depth;
-  }
-  io::write_line_set_vtp(
-      file, s.step, s.time, points, "Scalars=\"magnitude\" Vectors=\"force\"", encoding,
-      [&](io::OutFile& out) {
-        io::write_data_array<double>(out, "force", force, 3, encoding, 8);
-        io::write_data_array<double>(out, "magnitude", magnitude, 1, encoding, 8);
-        io::write_data_array<double>(out, "normal", normal, 3, encoding, 8);
-        io::write_data_array<double>(out, "normal_force", fn, 1, encoding, 8);
-        io::write_data_array<double>(out, "tangential_force", ft, 1, encoding, 8);
-        io::write_data_array<std::int32_t>(out, "sliding", sliding, 1, encoding, 8);
-        io::write_data_array<double>(out, "depth", depth, 1, encoding, 8);
+void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s) {
+  check_snapshot(s, file.string());
+  check_contacts(s, file.string());
+  const std::vector<ContactRecord>& c = s.contacts;
+  const std::size_t m = c.size();
+  const auto planar = [&](auto a, auto b) {
+    return [&c, a, b](std::size_t k) {
+      const ContactRecord& r = c[k / 3];
+      return k % 3 == 0 ? a(r) : k % 3 == 1 ? b(r) : 0.0;
+    };
+  };
+  const auto each = [&c](auto value) { return [&c, value](std::size_t k) { return value(c[k]); }; };
+  // Point p is the centroid of particle p, which every contact of p shares; segment k
+  // joins those of its i and j.
+  w.line_set_vtp(
+      file, s.step, s.time, s.size(), [&](std::size_t p) { return s.x[p]; },
+      [&](std::size_t p) { return s.y[p]; }, m, [&c](std::size_t k) { return c[k].i; },
+      [&c](std::size_t k) { return c[k].j; }, "Scalars=\"magnitude\" Vectors=\"force\"",
+      [&](OutFile& out) {
+        w.reals(out, "force", 3, 3 * m,
+                planar([](const ContactRecord& r) { return r.fx; },
+                       [](const ContactRecord& r) { return r.fy; }),
+                8);
+        w.reals(out, "magnitude", 1, m,
+                each([](const ContactRecord& r) { return std::hypot(r.fx, r.fy); }), 8);
+        w.reals(out, "normal", 3, 3 * m,
+                planar([](const ContactRecord& r) { return r.nx; },
+                       [](const ContactRecord& r) { return r.ny; }),
+                8);
+        w.reals(out, "normal_force", 1, m,
+                each([](const ContactRecord& r) { return r.normal_force(); }), 8);
+        w.reals(out, "tangential_force", 1, m,
+                each([](const ContactRecord& r) { return r.tangential_force(); }), 8);
+        w.integers<std::int32_t>(out, "sliding", 1, m,
+                                 each([](const ContactRecord& r) { return r.sliding ? 1 : 0; }), 8);
+        w.reals(out, "depth", 1, m, each([](const ContactRecord& r) { return r.depth; }), 8);
       });
+}
+
+}  // namespace io
+
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s, VtkFormat format) {
+  io::VtkXmlWriter w(format);
+  io::write_contacts_vtp(w, file, s);
 }
 
 }  // namespace tridem

@@ -1,6 +1,8 @@
+#include "io/output/frame_thread.hpp"
 #include "io/output/output_writer.hpp"
 #include "tridem/output.hpp"
 
+#include <optional>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -12,15 +14,21 @@ namespace fs = std::filesystem;
 struct OutputSet::Impl {
   fs::path dir;
   std::vector<std::unique_ptr<io::OutputWriter>> writers;
+  /// Made at the first frame handed over; after `writers`, so that it stops first.
+  std::optional<io::FrameThread> frames;
+
+  void write_frame(const Snapshot& s) {
+    for (auto& w : writers) w->frame(s);
+  }
 };
 
-OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, Encoding encoding,
+OutputSet::OutputSet(const OutputSettings& settings, fs::path dir, VtkFormat format,
                      const std::optional<ResumePoint>& resume)
     : impl_(std::make_unique<Impl>()) {
   io::make_directory(dir);
   impl_->dir = std::move(dir);
   const fs::path& where = impl_->dir;
-  impl_->writers = io::make_writers(settings, where, encoding);
+  impl_->writers = io::make_writers(settings, where, format);
   // A run owns the tridem files of its directory: frames, their renderings and contact
   // files of an earlier run there would otherwise mix with the new ones (ParaView and
   // `tridem render` would show them). Each writer knows its own files; nothing else is
@@ -40,7 +48,18 @@ OutputSet& OutputSet::operator=(OutputSet&&) noexcept = default;
 const fs::path& OutputSet::dir() const { return impl_->dir; }
 
 void OutputSet::write_frame(const Snapshot& s) {
-  for (auto& w : impl_->writers) w->frame(s);
+  finish_frames();
+  impl_->write_frame(s);
+}
+
+void OutputSet::write_frame_beside(Snapshot& s) {
+  if (!impl_->frames)
+    impl_->frames.emplace([impl = impl_.get()](const Snapshot& f) { impl->write_frame(f); });
+  impl_->frames->submit(s);
+}
+
+void OutputSet::finish_frames() {
+  if (impl_->frames) impl_->frames->wait();
 }
 
 void OutputSet::log(const Snapshot& s, Vec2d gravity, const EnergyBudget& budget) {

@@ -29,7 +29,10 @@ class OutputWriter {
   /// files of an earlier run there; a restarted one keeps them up to the resume point
   /// and removes what came after, which it will write again.
   virtual void start(const std::optional<ResumePoint>& resume) = 0;
-  virtual void frame(const Snapshot&) {}                  ///< every [output] every steps
+  /// Every [output] every steps. It may run on the output thread (OutputSet::
+  /// write_frame_beside) while the other calls run on the caller's: a writer that writes
+  /// frames shares no state with the calls of other writers.
+  virtual void frame(const Snapshot&) {}
   virtual void log(const Snapshot&, const LogInputs&) {}  ///< every energy_every steps
   /// At every step where some [[measure]] is due (measure_due), and only there; the
   /// snapshot holds the contacts. `last_step`: the run's last step.
@@ -40,7 +43,7 @@ class OutputWriter {
 /// Every output format of a run into `dir`, in the order they write.
 std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& settings,
                                                         const std::filesystem::path& dir,
-                                                        Encoding encoding);
+                                                        VtkFormat format);
 
 /// Creates `dir` and its parents; throws RunError naming it and the reason when it cannot
 /// (an existing file of that name included).

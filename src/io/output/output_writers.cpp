@@ -5,6 +5,7 @@
 #include "io/output/pvd_collection.hpp"
 #include "io/output/resume_outputs.hpp"
 #include "io/output/step_files.hpp"
+#include "io/output/vtk_frames.hpp"
 #include "tridem/error.hpp"
 
 #include <fmt/format.h>
@@ -175,21 +176,22 @@ class FinalCsv final : public OutputWriter {
 }  // namespace
 
 std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& settings,
-                                                        const fs::path& dir, Encoding encoding) {
+                                                        const fs::path& dir, VtkFormat format) {
   using Write = StepFileWriter::Write;
   std::vector<std::unique_ptr<OutputWriter>> w;
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kFrameFiles, ".vtu", "tridem.pvd", ".png"},
-      [encoding, contacts = settings.contacts](const fs::path& f, const Snapshot& s) {
-        write_vtu_frame(f, s, encoding, contacts);
-      }));
+      // Each VTK format keeps its own writer, whose buffers then serve every frame.
+      [w = VtkXmlWriter(format), contacts = settings.contacts](
+          const fs::path& f, const Snapshot& s) mutable { write_vtu_frame(w, f, s, contacts); }));
   const bool contacts = settings.contacts;
-  w.push_back(std::make_unique<StepFileWriter>(dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
-                                               contacts ? Write(write_contacts_csv) : Write()));
+  w.push_back(std::make_unique<StepFileWriter>(
+      dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
+      contacts && settings.contacts_csv ? Write(write_contacts_csv) : Write()));
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kContactFiles, ".vtp", "contacts.pvd", {}},
-      contacts ? Write([encoding](const fs::path& f, const Snapshot& s) {
-        write_contacts_vtp(f, s, encoding);
+      contacts ? Write([w = VtkXmlWriter(format)](const fs::path& f, const Snapshot& s) mutable {
+        write_contacts_vtp(w, f, s);
       })
                : Write()));
   w.push_back(std::make_unique<CsvLog>(
@@ -202,7 +204,10 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   // Cohesive bonds (docs/fracture.md): only for scenes that have some.
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kBondFiles, ".vtp", "bonds.pvd", {}},
-      [encoding](const fs::path& f, const Snapshot& s) { write_bonds_vtp(f, s, encoding); }, true));
+      [w = VtkXmlWriter(format)](const fs::path& f, const Snapshot& s) mutable {
+        write_bonds_vtp(w, f, s);
+      },
+      true));
   w.push_back(std::make_unique<CsvLog>(
       dir / "bonds.csv", kBondsHeader,
       [](OutFile& out, const Snapshot& s, const LogInputs& in) {

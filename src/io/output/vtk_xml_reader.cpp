@@ -8,6 +8,8 @@
 #include <bit>
 #include <charconv>
 #include <cstring>
+#include <span>
+#include <zlib.h>
 
 namespace tridem::io {
 namespace {
@@ -97,6 +99,13 @@ constexpr WordType kWordTypes[] = {
     {"UInt64", Word::U64, 8}};
 
 template <class T>
+T load_word(const std::uint8_t* p) {
+  T value;
+  std::memcpy(&value, p, sizeof value);
+  return value;
+}
+
+template <class T>
 double load(const std::uint8_t* p) {
   T value;
   std::memcpy(&value, p, sizeof value);
@@ -137,6 +146,50 @@ std::vector<double> parse_ascii(const VtkXmlFile& f, std::string_view text,
   }
 }
 
+/// The values of a vtkZLibDataCompressor array: `bytes` is its header, [blocks, block size,
+/// size of the last block (0: a full one), compressed size of each block], then the blocks.
+std::vector<std::uint8_t> inflate_blocks(const VtkXmlFile& f, std::span<const std::uint8_t> bytes,
+                                         std::size_t header, std::size_t expected,
+                                         std::string_view label) {
+  const auto word = [&](std::size_t k) -> std::uint64_t {
+    if ((k + 1) * header > bytes.size())
+      malformed(f, fmt::format("{}: its compression header is cut short", label));
+    return header == 8 ? load_word<std::uint64_t>(bytes.data() + k * header)
+                       : load_word<std::uint32_t>(bytes.data() + k * header);
+  };
+  const std::uint64_t blocks = word(0), block_size = word(1), last = word(2);
+  if (blocks > bytes.size() / header)
+    malformed(f, fmt::format("{}: its compression header names {} blocks", label, blocks));
+  const std::uint64_t total =
+      blocks == 0 ? 0 : (blocks - 1) * block_size + (last == 0 ? block_size : last);
+  // zlib expands by at most about 1032:1; a header claiming more is not to be believed
+  // (nor allocated for).
+  constexpr std::uint64_t kMaxRatio = 1100;
+  if (total != expected || (blocks > 0 && (block_size == 0 || last > block_size)) ||
+      total > kMaxRatio * (bytes.size() + 1))
+    malformed(f, fmt::format("{} holds {} bytes once uncompressed (blocks of {}), expected {}",
+                             label, total, block_size, expected));
+  std::vector<std::uint8_t> values(expected);
+  std::size_t at = (3 + blocks) * header;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t size = word(3 + b);
+    const std::size_t begin = b * block_size;
+    const std::size_t want = b + 1 == blocks ? expected - begin : block_size;
+    if (size > bytes.size() - std::min(at, bytes.size()))
+      malformed(f, fmt::format("{}: block {} is cut short", label, b));
+    uLongf length = static_cast<uLongf>(want);
+    const int rc =
+        uncompress(values.data() + begin, &length, bytes.data() + at, static_cast<uLong>(size));
+    if (rc != Z_OK || length != want)
+      malformed(f, fmt::format("{}: block {} does not inflate to {} bytes (zlib error {})", label,
+                               b, want, rc));
+    at += size;
+  }
+  if (at != bytes.size())
+    malformed(f, fmt::format("{} has {} bytes after its last block", label, bytes.size() - at));
+  return values;
+}
+
 std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, Word word,
                                  std::size_t word_size, std::size_t count,
                                  std::string_view label) {
@@ -150,21 +203,29 @@ std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, Wor
                              : header_type == "UInt32" || header_type.empty() ? 4
                                                                               : 0;
   if (header == 0) malformed(f, fmt::format("unsupported header_type '{}'", header_type));
-  if (!attribute(f.root, "compressor").empty())
-    malformed(f, "compressed data is not supported");
+  const std::string compressor = attribute(f.root, "compressor");
+  if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
+    malformed(f, fmt::format("compressor '{}' is not supported (only vtkZLibDataCompressor)",
+                             compressor));
 
-  const std::vector<std::uint8_t> bytes =
+  std::vector<std::uint8_t> bytes =
       base64_decode(text, fmt::format("cannot read '{}': {}", f.name, label));
-  if (bytes.size() < header) malformed(f, fmt::format("{} is too short", label));
-  const double stated = header == 8 ? load<std::uint64_t>(bytes.data())
-                                    : load<std::uint32_t>(bytes.data());
   const std::size_t expected = count * word_size;
-  if (stated != static_cast<double>(expected) || bytes.size() - header != expected)
-    malformed(f, fmt::format("{} holds {} bytes (header says {}), expected {}", label,
-                             bytes.size() - header, stated, expected));
+  std::size_t skip = 0;
+  if (!compressor.empty()) {
+    bytes = inflate_blocks(f, bytes, header, expected, label);
+  } else {
+    if (bytes.size() < header) malformed(f, fmt::format("{} is too short", label));
+    const double stated =
+        header == 8 ? load<std::uint64_t>(bytes.data()) : load<std::uint32_t>(bytes.data());
+    if (stated != static_cast<double>(expected) || bytes.size() - header != expected)
+      malformed(f, fmt::format("{} holds {} bytes (header says {}), expected {}", label,
+                               bytes.size() - header, stated, expected));
+    skip = header;
+  }
   std::vector<double> values(count);
   for (std::size_t k = 0; k < count; ++k)
-    values[k] = load(word, bytes.data() + header + k * word_size);
+    values[k] = load(word, bytes.data() + skip + k * word_size);
   return values;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Just enough XML to read back the VTK files this project writes: elements, attributes
-// and DataArray contents in "ascii" or inline "binary" format. It is not a general XML
-// parser (no entities, no appended data, no compression) and says so when it meets one.
+// and DataArray contents in "ascii" or inline "binary" format, the binary ones plain or
+// compressed by vtkZLibDataCompressor. It is not a general XML parser (no entities, no
+// appended data, no other compressor) and says so when it meets one.
 #include <cstdint>
 #include <map>
 #include <string>

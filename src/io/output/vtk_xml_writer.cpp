@@ -1,122 +1,177 @@
 #include "io/output/vtk_xml_writer.hpp"
 
 #include "io/output/base64.hpp"
+#include "tridem/error.hpp"
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <bit>
-#include <cstring>
-#include <type_traits>
-#include <vector>
 
 namespace tridem::io {
 namespace {
 
-template <class T>
-constexpr std::string_view vtk_type_name() {
-  if constexpr (std::is_same_v<T, double>) return "Float64";
-  else if constexpr (std::is_same_v<T, std::int64_t>) return "Int64";
-  else if constexpr (std::is_same_v<T, std::int32_t>) return "Int32";
-  else if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
-}
-
-template <class T>
-void write_binary(OutFile& out, std::span<const T> values) {
-  const std::uint64_t count = values.size_bytes();
-  std::vector<std::uint8_t> bytes(sizeof count + values.size_bytes());
-  std::memcpy(bytes.data(), &count, sizeof count);
-  if (!values.empty()) std::memcpy(bytes.data() + sizeof count, values.data(), count);
-  out.write(base64_encode(bytes));
-}
-
-template <class T>
-void write_ascii(OutFile& out, std::span<const T> values) {
-  constexpr std::size_t kPerLine = 6;
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if constexpr (std::is_floating_point_v<T>)
-      out.print("{:.17g}", values[k]);
-    else
-      out.print("{}", static_cast<std::int64_t>(values[k]));
-    if (k + 1 < values.size()) out.write((k + 1) % kPerLine == 0 ? "\n" : " ");
+constexpr std::string_view type_name(VtkWord word) {
+  switch (word) {
+    case VtkWord::Float32: return "Float32";
+    case VtkWord::Float64: return "Float64";
+    case VtkWord::Int32: return "Int32";
+    case VtkWord::Int64: return "Int64";
+    case VtkWord::UInt8: return "UInt8";
   }
+  return "?";
 }
 
-// One element; `size_attribute` is NumberOfComponents for ordinary arrays and
-// NumberOfTuples for field data, which VTK requires there.
+/// zlib's fastest level: float arrays compress almost as well as at its default level
+/// (measured in docs/output-format.md), in a third of the time.
+constexpr int kZlibLevel = 1;
+
 template <class T>
-void emit(OutFile& out, std::string_view name, std::span<const T> values,
-          std::string_view size_attribute, Encoding encoding, int indent) {
-  const bool binary = encoding == Encoding::Binary;
-  out.print("{:{}}<DataArray type=\"{}\"", "", indent, vtk_type_name<T>());
-  if (!name.empty()) out.print(" Name=\"{}\"", name);
-  out.print(" {} format=\"{}\">\n", size_attribute, binary ? "binary" : "ascii");
-  if (binary)
-    write_binary(out, values);
-  else
-    write_ascii(out, values);
-  out.print("\n{:{}}</DataArray>\n", "", indent);
+T load(const std::uint8_t* p) {
+  T value;
+  std::memcpy(&value, p, sizeof value);
+  return value;
 }
 
 }  // namespace
 
-void begin_vtk_file(OutFile& out, std::string_view type) {
+std::string VtkXmlWriter::components_attribute(int components) {
+  return fmt::format("NumberOfComponents=\"{}\"", components);
+}
+
+void VtkXmlWriter::begin_file(OutFile& out, std::string_view type) const {
   const char* order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   out.print("<?xml version=\"1.0\"?>\n"
-            "<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\">\n",
-            type, order);
+            "<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\"{}>\n",
+            type, order, format_.compressed() ? " compressor=\"vtkZLibDataCompressor\"" : "");
 }
 
-void end_vtk_file(OutFile& out) { out.write("</VTKFile>\n"); }
+void VtkXmlWriter::end_file(OutFile& out) { out.write("</VTKFile>\n"); }
 
-template <class T>
-void write_data_array(OutFile& out, std::string_view name, std::span<const T> values,
-                      int components, Encoding encoding, int indent) {
-  emit(out, name, values, fmt::format("NumberOfComponents=\"{}\"", components), encoding,
-       indent);
+void VtkXmlWriter::emit(OutFile& out, std::string_view name, VtkWord word,
+                        std::string_view size_attribute, int indent) {
+  const bool binary = format_.encoding == Encoding::Binary;
+  out.print("{:{}}<DataArray type=\"{}\"", "", indent, type_name(word));
+  if (!name.empty()) out.print(" Name=\"{}\"", name);
+  out.print(" {} format=\"{}\">\n", size_attribute, binary ? "binary" : "ascii");
+  if (!binary)
+    write_ascii(out, word);
+  else if (format_.compressed())
+    write_compressed(out);
+  else
+    write_binary(out);
+  out.print("\n{:{}}</DataArray>\n", "", indent);
 }
 
-template void write_data_array<double>(OutFile&, std::string_view, std::span<const double>,
-                                       int, Encoding, int);
-template void write_data_array<std::int64_t>(OutFile&, std::string_view,
-                                             std::span<const std::int64_t>, int, Encoding, int);
-template void write_data_array<std::int32_t>(OutFile&, std::string_view,
-                                             std::span<const std::int32_t>, int, Encoding, int);
-template void write_data_array<std::uint8_t>(OutFile&, std::string_view,
-                                             std::span<const std::uint8_t>, int, Encoding, int);
+void VtkXmlWriter::write_binary(OutFile& out) {
+  const std::uint64_t count = raw_.size() - kCountBytes;
+  std::memcpy(raw_.data(), &count, sizeof count);
+  text_.clear();
+  base64_append(raw_, text_);
+  out.write(text_);
+}
 
-void write_time_field_data(OutFile& out, std::int64_t step, double time, Encoding encoding,
-                           int indent) {
+void VtkXmlWriter::write_compressed(OutFile& out) {
+  const std::span<const std::uint8_t> data = std::span(raw_).subspan(kCountBytes);
+  const std::size_t blocks = (data.size() + kBlockSize - 1) / kBlockSize;
+  header_.assign(3 + blocks, 0);
+  header_[0] = blocks;
+  header_[1] = kBlockSize;
+  // VTK's "size of the last block": the partial block's size, or 0 when every block is full
+  // (VTK's own writer then writes the block size; both read back the same).
+  header_[2] = data.size() % kBlockSize;
+  compressed_.resize(blocks * compressBound(kBlockSize));
+  std::size_t used = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = b * kBlockSize;
+    const std::size_t size = std::min(kBlockSize, data.size() - begin);
+    uLongf length = compressBound(static_cast<uLong>(size));
+    const int rc = compress2(compressed_.data() + used, &length, data.data() + begin,
+                             static_cast<uLong>(size), kZlibLevel);
+    if (rc != Z_OK)
+      throw RunError(
+          fmt::format("cannot compress an array of '{}': zlib error {}", out.path().string(), rc));
+    header_[3 + b] = length;
+    used += length;
+  }
+  text_.clear();
+  base64_append(std::span(reinterpret_cast<const std::uint8_t*>(header_.data()),
+                          header_.size() * sizeof(std::uint64_t)),
+                text_);
+  base64_append(std::span(compressed_.data(), used), text_);
+  out.write(text_);
+}
+
+void VtkXmlWriter::write_ascii(OutFile& out, VtkWord word) {
+  constexpr std::size_t kPerLine = 6;
+  const std::uint8_t* p = raw_.data() + kCountBytes;
+  const std::size_t bytes = raw_.size() - kCountBytes;
+  const std::size_t size = word == VtkWord::Float32 || word == VtkWord::Int32 ? 4
+                           : word == VtkWord::UInt8                           ? 1
+                                                                              : 8;
+  const std::size_t count = bytes / size;
+  for (std::size_t k = 0; k < count; ++k, p += size) {
+    switch (word) {
+      // Enough digits to read back each value exactly in its own type.
+      case VtkWord::Float32: out.print("{:.9g}", load<float>(p)); break;
+      case VtkWord::Float64: out.print("{:.17g}", load<double>(p)); break;
+      case VtkWord::Int32: out.print("{}", load<std::int32_t>(p)); break;
+      case VtkWord::Int64: out.print("{}", load<std::int64_t>(p)); break;
+      case VtkWord::UInt8: out.print("{}", static_cast<int>(*p)); break;
+    }
+    if (k + 1 < count) out.write((k + 1) % kPerLine == 0 ? "\n" : " ");
+  }
+}
+
+void VtkXmlWriter::time_field_data(OutFile& out, std::int64_t step, double time, int indent) {
   constexpr std::string_view kOne = "NumberOfTuples=\"1\"";
   out.print("{:{}}<FieldData>\n", "", indent);
-  emit(out, "TimeValue", std::span<const double>(&time, 1), kOne, encoding, indent + 2);
-  emit(out, "step", std::span<const std::int64_t>(&step, 1), kOne, encoding, indent + 2);
+  pack<double>(1, [time](std::size_t) { return time; });
+  emit(out, "TimeValue", VtkWord::Float64, kOne, indent + 2);
+  pack<std::int64_t>(1, [step](std::size_t) { return step; });
+  emit(out, "step", VtkWord::Int64, kOne, indent + 2);
   out.print("{:{}}</FieldData>\n", "", indent);
 }
 
-void write_line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
-                        std::span<const double> points, std::string_view cell_attributes,
-                        Encoding encoding, const std::function<void(OutFile&)>& cell_data) {
-  const std::size_t m = points.size() / 6;
-  std::vector<std::int64_t> connectivity(2 * m), offsets(m);
-  for (std::size_t k = 0; k < m; ++k) {
-    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
-    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
-    offsets[k] = static_cast<std::int64_t>(2 * (k + 1));
-  }
+void VtkXmlWriter::line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
+                                std::size_t points,
+                                const std::function<double(std::size_t)>& point_x,
+                                const std::function<double(std::size_t)>& point_y,
+                                std::size_t segments,
+                                const std::function<std::int64_t(std::size_t)>& end_a,
+                                const std::function<std::int64_t(std::size_t)>& end_b,
+                                std::string_view cell_attributes,
+                                const std::function<void(OutFile&)>& cell_data) {
   OutFile out(file);
-  begin_vtk_file(out, "PolyData");
+  begin_file(out, "PolyData");
   out.write("  <PolyData>\n");
-  write_time_field_data(out, step, time, encoding, 4);
+  time_field_data(out, step, time, 4);
   out.print("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
             "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-            2 * m, m);
+            points, segments);
   out.write("      <Points>\n");
-  write_data_array<double>(out, "Points", points, 3, encoding, 8);
+  reals(
+      out, "Points", 3, 3 * points,
+      [&](std::size_t k) {
+        const std::size_t p = k / 3;
+        switch (k % 3) {
+          case 0: return point_x(p);
+          case 1: return point_y(p);
+          default: return 0.0;
+        }
+      },
+      8);
   out.write("      </Points>\n      <Lines>\n");
-  write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
-  write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
+  indices(
+      out, "connectivity", 1, 2 * segments, points,
+      [&](std::size_t k) { return k % 2 == 0 ? end_a(k / 2) : end_b(k / 2); }, 8);
+  indices(
+      out, "offsets", 1, segments, 2 * segments,
+      [](std::size_t k) { return static_cast<std::int64_t>(2 * (k + 1)); }, 8);
   out.print("      </Lines>\n      <CellData {}>\n", cell_attributes);
   cell_data(out);
   out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
-  end_vtk_file(out);
+  end_file(out);
   out.close();
 }
 

@@ -1,37 +1,140 @@
 #pragma once
-// The pieces every VTK XML file we write shares: the root element and data arrays in
-// either encoding. Binary arrays are base64 of a UInt64 byte count followed by the raw
-// values, encoded as one run, exactly as VTK's own writer does for uncompressed data.
+// The pieces every VTK XML file we write shares: the root element and data arrays in the
+// run's VtkFormat. Binary arrays are base64, as VTK's own writer stores inline data:
+// uncompressed, a UInt64 byte count followed by the raw values, encoded as one run;
+// compressed (vtkZLibDataCompressor), the header [number of blocks, block size, size of
+// the last block, compressed size of each block] (UInt64s) encoded as one run, then the
+// blocks, each compressed by zlib on its own, as a second run.
 #include "io/output/out_file.hpp"
 #include "tridem/output.hpp"
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <span>
+#include <string>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
 namespace tridem::io {
 
-/// Opens `<VTKFile type="...">` after the XML declaration, with the host's byte order.
-void begin_vtk_file(OutFile&, std::string_view type);
-void end_vtk_file(OutFile&);
+/// The value types of the arrays we write.
+enum class VtkWord { Float32, Float64, Int32, Int64, UInt8 };
 
-/// One `<DataArray>`; `values` holds components × tuples numbers. Instantiated for
-/// double, std::int64_t, std::int32_t and std::uint8_t.
-template <class T>
-void write_data_array(OutFile&, std::string_view name, std::span<const T> values,
-                      int components, Encoding, int indent);
+/// Writes VTK XML files in one format. It keeps its buffers from array to array and from
+/// file to file: a writer kept for a run allocates only for its first (or a larger) frame.
+/// One thread at a time.
+class VtkXmlWriter {
+ public:
+  /// VTK's default block size for compressed arrays.
+  static constexpr std::size_t kBlockSize = 1 << 15;
 
-/// `<FieldData>` with TimeValue (ParaView shows it as the dataset's time) and step.
-void write_time_field_data(OutFile&, std::int64_t step, double time, Encoding, int indent);
+  explicit VtkXmlWriter(VtkFormat format = {}) : format_(format) {}
+  const VtkFormat& format() const { return format_; }
 
-/// A PolyData file of separate line segments, the contact network's (contacts/*.vtp) and
-/// the bonds' (bonds/*.vtp): segment k joins points 2k and 2k + 1 of `points` (x, y, z
-/// each), and `cell_data` writes its per-segment arrays inside
-/// `<CellData cell_attributes>` (e.g. `Scalars="damage"`), at indent 8.
-void write_line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
-                        std::span<const double> points, std::string_view cell_attributes,
-                        Encoding encoding, const std::function<void(OutFile&)>& cell_data);
+  /// Opens `<VTKFile type="...">` after the XML declaration, with the host's byte order
+  /// and, when compressing, the compressor.
+  void begin_file(OutFile&, std::string_view type) const;
+  static void end_file(OutFile&);
+
+  /// A real-valued `<DataArray>` of `count` = components × tuples numbers value(k), as
+  /// Float32 or Float64 by the format's precision.
+  template <class Value>
+  void reals(OutFile& out, std::string_view name, int components, std::size_t count,
+             const Value& value, int indent) {
+    if (format_.precision == VtkPrecision::Float32)
+      pack<float>(count, value);
+    else
+      pack<double>(count, value);
+    emit(out, name,
+         format_.precision == VtkPrecision::Float32 ? VtkWord::Float32 : VtkWord::Float64,
+         components_attribute(components), indent);
+  }
+  void reals(OutFile& out, std::string_view name, std::span<const double> values, int indent) {
+    reals(
+        out, name, 1, values.size(), [&](std::size_t k) { return values[k]; }, indent);
+  }
+
+  /// An integer `<DataArray>` of type T (std::int32_t, std::int64_t or std::uint8_t).
+  template <class T, class Value>
+  void integers(OutFile& out, std::string_view name, int components, std::size_t count,
+                const Value& value, int indent) {
+    pack<T>(count, value);
+    emit(out, name, word_of<T>(), components_attribute(components), indent);
+  }
+
+  /// An array of indices or counts, none above `largest`: Int32 when they fit (half the
+  /// bytes of Int64 before compression), Int64 otherwise.
+  template <class Value>
+  void indices(OutFile& out, std::string_view name, int components, std::size_t count,
+               std::size_t largest, const Value& value, int indent) {
+    if (largest <= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+      integers<std::int32_t>(out, name, components, count, value, indent);
+    else
+      integers<std::int64_t>(out, name, components, count, value, indent);
+  }
+
+  /// `<FieldData>` with TimeValue (Float64 whatever the precision: ParaView shows it as
+  /// the dataset's time) and step (Int64).
+  void time_field_data(OutFile&, std::int64_t step, double time, int indent);
+
+  /// A PolyData file of separate line segments between `points` (x, y each; z is 0):
+  /// segment k joins points end_a(k) and end_b(k); `cell_data` writes its per-segment
+  /// arrays inside `<CellData cell_attributes>` (e.g. `Scalars="damage"`), at indent 8.
+  void line_set_vtp(const std::filesystem::path& file, std::int64_t step, double time,
+                    std::size_t points, const std::function<double(std::size_t)>& point_x,
+                    const std::function<double(std::size_t)>& point_y, std::size_t segments,
+                    const std::function<std::int64_t(std::size_t)>& end_a,
+                    const std::function<std::int64_t(std::size_t)>& end_b,
+                    std::string_view cell_attributes,
+                    const std::function<void(OutFile&)>& cell_data);
+
+ private:
+  static constexpr std::size_t kCountBytes = sizeof(std::uint64_t);
+
+  template <class T>
+  static constexpr VtkWord word_of() {
+    if constexpr (std::is_same_v<T, float>)
+      return VtkWord::Float32;
+    else if constexpr (std::is_same_v<T, double>)
+      return VtkWord::Float64;
+    else if constexpr (std::is_same_v<T, std::int32_t>)
+      return VtkWord::Int32;
+    else if constexpr (std::is_same_v<T, std::int64_t>)
+      return VtkWord::Int64;
+    else {
+      static_assert(std::is_same_v<T, std::uint8_t>);
+      return VtkWord::UInt8;
+    }
+  }
+  static std::string components_attribute(int components);
+
+  /// The values, converted to T, into raw_ after room for the uncompressed byte count.
+  template <class T, class Value>
+  void pack(std::size_t count, const Value& value) {
+    raw_.resize(kCountBytes + count * sizeof(T));
+    std::uint8_t* to = raw_.data() + kCountBytes;
+    for (std::size_t k = 0; k < count; ++k, to += sizeof(T)) {
+      const T v = static_cast<T>(value(k));
+      std::memcpy(to, &v, sizeof v);
+    }
+  }
+  /// The element around raw_'s values; `size_attribute` is NumberOfComponents for
+  /// ordinary arrays and NumberOfTuples for field data, which VTK requires there.
+  void emit(OutFile&, std::string_view name, VtkWord word, std::string_view size_attribute,
+            int indent);
+  void write_binary(OutFile&);
+  void write_compressed(OutFile&);
+  void write_ascii(OutFile&, VtkWord word);
+
+  VtkFormat format_;
+  std::vector<std::uint8_t> raw_;         ///< [byte count][values] of the array at hand
+  std::vector<std::uint8_t> compressed_;  ///< its blocks, compressed, end to end
+  std::vector<std::uint64_t> header_;     ///< the compressed array's header
+  std::string text_;                      ///< base64 of the above
+};
 
 }  // namespace tridem::io

@@ -2,105 +2,107 @@
 // frame needs no connectivity between particles and cell data maps one-to-one to ids.
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
-#include "io/output/vtk_xml_writer.hpp"
+#include "io/output/vtk_frames.hpp"
 #include "tridem/measurements.hpp"
 #include "tridem/output.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdint>
-#include <span>
-#include <vector>
 
 namespace tridem {
+namespace io {
 namespace {
 
 constexpr std::uint8_t kVtkTriangle = 5;
 
-std::vector<double> interleave3(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> out(3 * a.size());
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    out[3 * k] = a[k];
-    out[3 * k + 1] = b[k];
-  }
-  return out;
+/// (a, b, 0) of each particle, for a vector array of 3 components.
+auto planar(const std::vector<double>& a, const std::vector<double>& b) {
+  return [&a, &b](std::size_t k) {
+    const std::size_t i = k / 3;
+    return k % 3 == 0 ? a[i] : k % 3 == 1 ? b[i] : 0.0;
+  };
 }
 
 }  // namespace
 
-void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, Encoding encoding,
+void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s,
                      bool with_grain_stress) {
-  io::check_snapshot(s, file.string());
-  io::check_bodies(s, file.string(), /*members_only=*/s.body_x.empty());
+  check_snapshot(s, file.string());
+  check_bodies(s, file.string(), /*members_only=*/s.body_x.empty());
   const std::size_t n = s.size();
+  const std::vector<double>* vertex[6] = {&s.x1, &s.y1, &s.x2, &s.y2, &s.x3, &s.y3};
+  const auto index = [](std::size_t k) { return static_cast<std::int64_t>(k); };
 
-  std::vector<double> points(9 * n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double xy[6] = {s.x1[k], s.y1[k], s.x2[k], s.y2[k], s.x3[k], s.y3[k]};
-    for (int v = 0; v < 3; ++v) {
-      points[9 * k + 3 * v] = xy[2 * v];
-      points[9 * k + 3 * v + 1] = xy[2 * v + 1];
-    }
-  }
-  std::vector<std::int64_t> connectivity(3 * n), offsets(n), ids(n), body(n);
-  for (std::size_t k = 0; k < 3 * n; ++k) connectivity[k] = static_cast<std::int64_t>(k);
-  for (std::size_t k = 0; k < n; ++k) {
-    offsets[k] = static_cast<std::int64_t>(3 * (k + 1));
-    ids[k] = static_cast<std::int64_t>(k);
-    body[k] = s.body_of(k);
-  }
-  const std::vector<std::uint8_t> types(n, kVtkTriangle);
-  std::vector<std::int32_t> material(n), motion(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    material[k] = s.material[k];
-    motion[k] = static_cast<std::int32_t>(s.motion[k]);
-  }
-
-  io::OutFile out(file);
-  io::begin_vtk_file(out, "UnstructuredGrid");
+  OutFile out(file);
+  w.begin_file(out, "UnstructuredGrid");
   out.write("  <UnstructuredGrid>\n");
-  io::write_time_field_data(out, s.step, s.time, encoding, 4);
+  w.time_field_data(out, s.step, s.time, 4);
   out.print("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", 3 * n, n);
   out.write("      <Points>\n");
-  io::write_data_array<double>(out, "Points", points, 3, encoding, 8);
+  // Point 3i + v is vertex v of particle i: x, y, 0.
+  w.reals(
+      out, "Points", 3, 9 * n,
+      [&](std::size_t k) {
+        const std::size_t i = k / 9, r = k % 9;
+        return r % 3 == 2 ? 0.0 : (*vertex[2 * (r / 3) + r % 3])[i];
+      },
+      8);
   out.write("      </Points>\n      <Cells>\n");
-  io::write_data_array<std::int64_t>(out, "connectivity", connectivity, 1, encoding, 8);
-  io::write_data_array<std::int64_t>(out, "offsets", offsets, 1, encoding, 8);
-  io::write_data_array<std::uint8_t>(out, "types", types, 1, encoding, 8);
+  w.indices(out, "connectivity", 1, 3 * n, 3 * n, index, 8);
+  w.indices(
+      out, "offsets", 1, n, 3 * n,
+      [](std::size_t k) { return static_cast<std::int64_t>(3 * (k + 1)); }, 8);
+  w.integers<std::uint8_t>(
+      out, "types", 1, n, [](std::size_t) { return kVtkTriangle; }, 8);
   out.write("      </Cells>\n      <CellData Scalars=\"angular_velocity\" Vectors=\"velocity\">\n");
-  io::write_data_array<std::int64_t>(out, "id", ids, 1, encoding, 8);
-  io::write_data_array<double>(out, "velocity", interleave3(s.vx, s.vy), 3, encoding, 8);
-  io::write_data_array<double>(out, "angular_velocity", s.omega, 1, encoding, 8);
-  io::write_data_array<double>(out, "force", interleave3(s.fx, s.fy), 3, encoding, 8);
-  io::write_data_array<double>(out, "torque", s.torque, 1, encoding, 8);
-  io::write_data_array<std::int32_t>(out, "material", material, 1, encoding, 8);
-  io::write_data_array<std::int32_t>(out, "motion", motion, 1, encoding, 8);
+  w.indices(out, "id", 1, n, n, index, 8);
+  w.reals(out, "velocity", 3, 3 * n, planar(s.vx, s.vy), 8);
+  w.reals(out, "angular_velocity", s.omega, 8);
+  w.reals(out, "force", 3, 3 * n, planar(s.fx, s.fy), 8);
+  w.reals(out, "torque", s.torque, 8);
+  w.integers<std::int32_t>(
+      out, "material", 1, n, [&](std::size_t k) { return s.material[k]; }, 8);
+  w.integers<std::int32_t>(
+      out, "motion", 1, n, [&](std::size_t k) { return static_cast<std::int32_t>(s.motion[k]); },
+      8);
   // The body of each triangle (its own id when it is a body of one member): ParaView
   // colours by it, and `tridem render --color body` reads it back.
-  io::write_data_array<std::int64_t>(out, "body", body, 1, encoding, 8);
+  w.indices(
+      out, "body", 1, n, n, [&](std::size_t k) { return s.body_of(k); }, 8);
   // Each grain's own Love-Weber stress and contact count (tridem/measurements.hpp), on
   // every triangle of the grain; zeros where the snapshot holds no contacts (step 0).
   // Left out without the contacts: a frame would otherwise show zeros for every grain.
   if (with_grain_stress) {
     const GrainStress grain = grain_stress(s);
-    std::vector<double> stress(9 * n), pressure(n);
-    std::vector<std::int32_t> coordination(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto g = static_cast<std::size_t>(body[k]);
-      stress[9 * k] = grain.sxx[g];
-      stress[9 * k + 1] = grain.sxy[g];
-      stress[9 * k + 3] = grain.syx[g];
-      stress[9 * k + 4] = grain.syy[g];
-      pressure[k] = 0.5 * (grain.sxx[g] + grain.syy[g]);
-      coordination[k] = grain.coordination[g];
-    }
-    io::write_data_array<double>(out, "stress", stress, 9, encoding, 8);
-    io::write_data_array<double>(out, "pressure", pressure, 1, encoding, 8);
-    io::write_data_array<std::int32_t>(out, "coordination", coordination, 1, encoding, 8);
+    const auto g = [&](std::size_t i) { return static_cast<std::size_t>(s.body_of(i)); };
+    // Row-major 3×3: sxx, sxy, 0, syx, syy, 0, 0, 0, 0.
+    const std::vector<double>* tensor[5] = {&grain.sxx, &grain.sxy, nullptr, &grain.syx,
+                                            &grain.syy};
+    w.reals(
+        out, "stress", 9, 9 * n,
+        [&](std::size_t k) {
+          const std::size_t r = k % 9;
+          return r < 5 && tensor[r] ? (*tensor[r])[g(k / 9)] : 0.0;
+        },
+        8);
+    w.reals(
+        out, "pressure", 1, n,
+        [&](std::size_t k) { return 0.5 * (grain.sxx[g(k)] + grain.syy[g(k)]); }, 8);
+    w.integers<std::int32_t>(
+        out, "coordination", 1, n, [&](std::size_t k) { return grain.coordination[g(k)]; }, 8);
   }
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
-  io::end_vtk_file(out);
+  VtkXmlWriter::end_file(out);
   out.close();
+}
+
+}  // namespace io
+
+void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, VtkFormat format,
+                     bool with_grain_stress) {
+  io::VtkXmlWriter w(format);
+  io::write_vtu_frame(w, file, s, with_grain_stress);
 }
 
 }  // namespace tridem

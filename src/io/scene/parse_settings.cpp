@@ -107,6 +107,7 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
   o.every = r.integer("every").value_or(o.every);
   if (o.every < 0) r.fail("every", fmt::format("must be >= 0 (0 = no frames), got {}", o.every));
   o.contacts = r.boolean("contacts").value_or(o.contacts);
+  o.contacts_csv = r.boolean("contacts_csv").value_or(o.contacts_csv);
   o.checkpoint_every = r.integer("checkpoint_every").value_or(o.checkpoint_every);
   if (o.checkpoint_every < 0)
     r.fail("checkpoint_every",
@@ -118,6 +119,10 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
     o.energy_every = *e;
   }
   o.encoding = r.choice_in<Encoding>("vtk_encoding", kEncodingNames).value_or(o.encoding);
+  o.precision =
+      r.choice_in<VtkPrecision>("vtk_precision", kVtkPrecisionNames).value_or(o.precision);
+  o.compression =
+      r.choice_in<VtkCompression>("vtk_compression", kVtkCompressionNames).value_or(o.compression);
   r.reject_unknown_keys();
   return o;
 }

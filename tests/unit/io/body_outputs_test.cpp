@@ -121,7 +121,7 @@ TEST(Vtu, BodyArrayRoundTrips) {
   test::TempDir tmp;
   const Snapshot s = bodies_snapshot();
   for (const Encoding e : {Encoding::Binary, Encoding::Ascii}) {
-    write_vtu_frame(tmp.path() / "frame.vtu", s, e);
+    write_vtu_frame(tmp.path() / "frame.vtu", s, {e});
     EXPECT_NE(test::read_file(tmp.path() / "frame.vtu").find("Name=\"body\""), std::string::npos);
     const Snapshot r = read_vtu_frame(tmp.path() / "frame.vtu");
     EXPECT_EQ(r.member_body, s.member_body);
@@ -134,12 +134,12 @@ TEST(Vtu, BodyArrayRoundTrips) {
 TEST(Vtu, FrameOfLoneTrianglesReadsBodiless) {
   test::TempDir tmp;
   const auto file = tmp.path() / "frame.vtu";
-  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
+  write_vtu_frame(file, test::sample_snapshot(), {Encoding::Ascii});
   const std::string text = test::read_file(file);
   EXPECT_NE(text.find("Name=\"body\""), std::string::npos);  // 0 1 2: their own ids
   EXPECT_TRUE(read_vtu_frame(file).member_body.empty());
   // A frame written before bodies existed has no body array at all.
-  const auto at = text.find("<DataArray type=\"Int64\" Name=\"body\"");
+  const auto at = text.rfind("<DataArray", text.find("Name=\"body\""));
   ASSERT_NE(at, std::string::npos);
   const auto end = text.find("</DataArray>", at) + std::string("</DataArray>").size();
   std::string old = text;
@@ -154,7 +154,7 @@ TEST(Vtu, FrameOfLoneTrianglesReadsBodiless) {
 TEST(Vtu, BodyOfScatteredMembersIsRefused) {
   test::TempDir tmp;
   const auto file = tmp.path() / "frame.vtu";
-  write_vtu_frame(file, bodies_snapshot(), Encoding::Ascii);
+  write_vtu_frame(file, bodies_snapshot(), {Encoding::Ascii});
   std::string text = test::read_file(file);
   // body 0 1 0 1 2: a body's members are consecutive triangles.
   const auto at = text.find("Name=\"body\"");

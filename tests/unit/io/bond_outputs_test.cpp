@@ -47,7 +47,7 @@ TEST(BondOutputs, FramesShowTheBondsAsLines) {
   OutputSettings settings;
   settings.every = 1;
   {
-    OutputSet out(settings, tmp.path(), Encoding::Ascii);
+    OutputSet out(settings, tmp.path(), {Encoding::Ascii});
     out.write_frame(with_bonds());
   }
   const auto files = std::filesystem::directory_iterator(tmp.path() / "bonds");

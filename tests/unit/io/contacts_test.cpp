@@ -40,12 +40,14 @@ TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
   test::TempDir tmp;
   const Snapshot s = test::sample_snapshot();
   const auto file = tmp.path() / "c.vtp";
-  write_contacts_vtp(file, s, Encoding::Binary);
+  write_contacts_vtp(file, s, {Encoding::Binary, VtkPrecision::Float64});
 
   const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), test::read_file(file));
   EXPECT_EQ(f.root.at("type"), "PolyData");
   EXPECT_EQ(f.piece.at("NumberOfLines"), "2");
-  const auto points = io::decode_array(f, *io::find_array(f, "Points", "Points"), 3, 4);
+  // One point per particle, its centroid; each line joins those of its i and j.
+  const auto points = io::decode_array(f, *io::find_array(f, "Points", "Points"), 3, s.size());
+  const auto ends = io::decode_array(f, *io::find_array(f, "Lines", "connectivity"), 1, 4);
   const auto offsets = io::decode_array(f, *io::find_array(f, "Lines", "offsets"), 1, 2);
   const auto force = io::decode_array(f, *io::find_array(f, "CellData", "force"), 3, 2);
   const auto magnitude = io::decode_array(f, *io::find_array(f, "CellData", "magnitude"), 1, 2);
@@ -59,10 +61,12 @@ TEST(Contacts, VtpHasOneLinePerContactBetweenCentroids) {
   for (std::size_t k = 0; k < 2; ++k) {
     const ContactRecord& c = s.contacts[k];
     const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
-    EXPECT_EQ(points[6 * k], s.x[i]);
-    EXPECT_EQ(points[6 * k + 1], s.y[i]);
-    EXPECT_EQ(points[6 * k + 3], s.x[j]);
-    EXPECT_EQ(points[6 * k + 4], s.y[j]);
+    EXPECT_EQ(ends[2 * k], static_cast<double>(i));
+    EXPECT_EQ(ends[2 * k + 1], static_cast<double>(j));
+    EXPECT_EQ(points[3 * i], s.x[i]);
+    EXPECT_EQ(points[3 * i + 1], s.y[i]);
+    EXPECT_EQ(points[3 * j], s.x[j]);
+    EXPECT_EQ(points[3 * j + 1], s.y[j]);
     EXPECT_EQ(force[3 * k], c.fx);
     EXPECT_EQ(force[3 * k + 1], c.fy);
     EXPECT_EQ(force[3 * k + 2], 0);
@@ -80,7 +84,7 @@ TEST(Contacts, NoContactsGiveHeaderOnlyAndEmptyNetwork) {
   Snapshot s = test::sample_snapshot();
   s.contacts.clear();
   write_contacts_csv(tmp.path() / "c.csv", s);
-  write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
+  write_contacts_vtp(tmp.path() / "c.vtp", s, {Encoding::Ascii});
   EXPECT_EQ(test::read_lines(tmp.path() / "c.csv"),
             (std::vector<std::string>{"i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth"}));
   const io::VtkXmlFile f =

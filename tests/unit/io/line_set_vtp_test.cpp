@@ -1,8 +1,11 @@
 // The two line-set VTP files, contacts/*.vtp and bonds/*.vtp, come from one writer
-// (io/output/vtk_xml_writer's write_line_set_vtp): its files are byte for byte those the
-// two separate writers wrote before they were joined (tests/data/line_sets/, written by
-// those writers), in both encodings. TRIDEM_WRITE_LINE_SET_FILES=dir writes the files to
-// dir instead (how the reference files were made).
+// (io/output/vtk_xml_writer's VtkXmlWriter::line_set_vtp): its files in Float64,
+// uncompressed, are byte for byte tests/data/line_sets/ (both encodings). Those were
+// written by this writer at issue 12, which changed the files: the contact network's
+// points became the particles' centroids, shared by their contacts, and indices Int32.
+// The files written before (tests/data/former_line_sets/, by the two separate writers
+// the line-set writer replaced) are still read. TRIDEM_WRITE_LINE_SET_FILES=dir writes
+// the files to dir instead (how the reference files were made).
 #include "io_test_support.hpp"
 #include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
@@ -30,7 +33,7 @@ Snapshot with_bonds_and_contacts() {
   return s;
 }
 
-TEST(LineSetVtp, ContactsAndBondsFilesAreTheFormerWritersBytes) {
+TEST(LineSetVtp, ContactsAndBondsFilesAreTheReferenceBytes) {
   const Snapshot s = with_bonds_and_contacts();
   ASSERT_FALSE(s.contacts.empty());
   const std::filesystem::path reference =
@@ -42,8 +45,10 @@ TEST(LineSetVtp, ContactsAndBondsFilesAreTheFormerWritersBytes) {
        {std::pair{Encoding::Ascii, "ascii"}, std::pair{Encoding::Binary, "binary"}}) {
     const std::string contacts = std::string("contacts_") + tag + ".vtp";
     const std::string bonds = std::string("bonds_") + tag + ".vtp";
-    write_contacts_vtp(dir / contacts, s, encoding);
-    write_bonds_vtp(dir / bonds, s, encoding);
+    // Doubles, uncompressed: the format whose bytes are pinned.
+    const VtkFormat former{encoding, VtkPrecision::Float64, VtkCompression::None};
+    write_contacts_vtp(dir / contacts, s, former);
+    write_bonds_vtp(dir / bonds, s, former);
     if (write_to != nullptr) continue;
     for (const std::string& name : {contacts, bonds}) {
       const std::string made = test::read_file(dir / name);
@@ -60,8 +65,11 @@ TEST(LineSetVtp, ContactsAndBondsFilesAreTheFormerWritersBytes) {
 TEST(LineSetVtp, BondsReadBack) {
   const Snapshot s = with_bonds_and_contacts();
   test::TempDir tmp;
-  for (Encoding encoding : {Encoding::Ascii, Encoding::Binary}) {
-    write_bonds_vtp(tmp.path() / "b.vtp", s, encoding);
+  for (const VtkFormat format :
+       {VtkFormat{Encoding::Ascii, VtkPrecision::Float64},
+        VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::None},
+        VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::Zlib}}) {
+    write_bonds_vtp(tmp.path() / "b.vtp", s, format);
     Snapshot r;
     read_bonds_vtp(tmp.path() / "b.vtp", r);
     EXPECT_EQ(r.bond_a, s.bond_a);
@@ -71,9 +79,27 @@ TEST(LineSetVtp, BondsReadBack) {
     EXPECT_EQ(r.bond_x0, s.bond_x0);
     EXPECT_EQ(r.bond_y1, s.bond_y1);
   }
-  write_contacts_vtp(tmp.path() / "c.vtp", s, Encoding::Ascii);
+  write_contacts_vtp(tmp.path() / "c.vtp", s, {Encoding::Ascii});
   Snapshot r;
   EXPECT_THROW(read_bonds_vtp(tmp.path() / "c.vtp", r), Error);  // no damage array
+}
+
+// Bonds files written before issue 12 (Int64 indices, two runs of the old writers) read as
+// they did.
+TEST(LineSetVtp, FormerBondsFilesReadBack) {
+  const Snapshot s = with_bonds_and_contacts();
+  const std::filesystem::path former =
+      std::filesystem::path(TRIDEM_SOURCE_DIR) / "tests/data/former_line_sets";
+  for (const char* name : {"bonds_ascii.vtp", "bonds_binary.vtp"}) {
+    Snapshot r;
+    read_bonds_vtp(former / name, r);
+    EXPECT_EQ(r.bond_a, s.bond_a) << name;
+    EXPECT_EQ(r.bond_b, s.bond_b) << name;
+    EXPECT_EQ(r.bond_damage, s.bond_damage) << name;
+    EXPECT_EQ(r.bond_broken, s.bond_broken) << name;
+    EXPECT_EQ(r.bond_x0, s.bond_x0) << name;
+    EXPECT_EQ(r.bond_y1, s.bond_y1) << name;
+  }
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(ResumeOutputs, EveryFormatKeepsItsFilesUpToTheResumePointOnly) {
     write(dir.path() / "frames" / fmt::format("frame_{:09}.png", step), "png");
   std::ofstream(dir.path() / "frames" / "frame_notes.png") << "mine";
 
-  const OutputSet resumed(OutputSettings{}, dir.path(), Encoding::Binary, ResumePoint{100, 0.1});
+  const OutputSet resumed(OutputSettings{}, dir.path(), {}, ResumePoint{100, 0.1});
   for (const char* kept : {"frames/frame_000000100.vtu", "frames/frame_000000100.png",
                            "contacts/contacts_000000100.csv", "contacts/contacts_000000100.vtp",
                            "frames/frame_notes.png"})

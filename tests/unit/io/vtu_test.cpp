@@ -9,17 +9,17 @@
 namespace tridem {
 namespace {
 
-void expect_round_trip(Encoding encoding) {
+void expect_round_trip(VtkFormat format) {
   test::TempDir tmp;
   const Snapshot s = test::sample_snapshot();
   const auto file = tmp.path() / "frame.vtu";
-  write_vtu_frame(file, s, encoding);
+  write_vtu_frame(file, s, format);
   const Snapshot r = read_vtu_frame(file);
 
   EXPECT_EQ(r.step, s.step);
   EXPECT_EQ(r.time, s.time);
   ASSERT_EQ(r.size(), s.size());
-  // Both encodings are exact: raw bytes, or %.17g text.
+  // Doubles are exact in every encoding: raw bytes, or %.17g text.
   EXPECT_EQ(r.x1, s.x1);
   EXPECT_EQ(r.y1, s.y1);
   EXPECT_EQ(r.x2, s.x2);
@@ -40,14 +40,19 @@ void expect_round_trip(Encoding encoding) {
   }
 }
 
-TEST(Vtu, BinaryRoundTrip) { expect_round_trip(Encoding::Binary); }
-TEST(Vtu, AsciiRoundTrip) { expect_round_trip(Encoding::Ascii); }
+TEST(Vtu, BinaryRoundTrip) {
+  expect_round_trip({Encoding::Binary, VtkPrecision::Float64, VtkCompression::None});
+}
+TEST(Vtu, CompressedBinaryRoundTrip) {
+  expect_round_trip({Encoding::Binary, VtkPrecision::Float64, VtkCompression::Zlib});
+}
+TEST(Vtu, AsciiRoundTrip) { expect_round_trip({Encoding::Ascii, VtkPrecision::Float64}); }
 
 TEST(Vtu, DeclaresTheRequestedEncoding) {
   test::TempDir tmp;
   const Snapshot s = test::sample_snapshot();
-  write_vtu_frame(tmp.path() / "b.vtu", s, Encoding::Binary);
-  write_vtu_frame(tmp.path() / "a.vtu", s, Encoding::Ascii);
+  write_vtu_frame(tmp.path() / "b.vtu", s, {Encoding::Binary});
+  write_vtu_frame(tmp.path() / "a.vtu", s, {Encoding::Ascii});
   const std::string binary = test::read_file(tmp.path() / "b.vtu");
   const std::string ascii = test::read_file(tmp.path() / "a.vtu");
   EXPECT_NE(binary.find("header_type=\"UInt64\""), std::string::npos);
@@ -74,7 +79,7 @@ TEST(Vtu, EmptyFrameRoundTrips) {
 /// "0 1 2", and so does its body array (each of its triangles is its own body): the cells
 /// of a frame reordered, all their data with them.
 void write_frame_with_ids(const std::filesystem::path& file, const std::string& ids) {
-  write_vtu_frame(file, test::sample_snapshot(), Encoding::Ascii);
+  write_vtu_frame(file, test::sample_snapshot(), {Encoding::Ascii, VtkPrecision::Float64});
   std::string text = test::read_file(file);
   for (const char* name : {"id", "body"}) {
     const std::string header =
@@ -106,11 +111,13 @@ TEST(Vtu, DuplicateIdIsRefused) {
   EXPECT_THROW(read_vtu_frame(file), Error);
 }
 
-class VtuMalformed : public ::testing::Test {
+/// Each malformation in the former format (Float64, uncompressed) and the default one
+/// (Float32, zlib).
+class VtuMalformed : public ::testing::TestWithParam<VtkFormat> {
  protected:
   void SetUp() override {
     file_ = tmp_.path() / "frame.vtu";
-    write_vtu_frame(file_, test::sample_snapshot(), Encoding::Binary);
+    write_vtu_frame(file_, test::sample_snapshot(), format());
     text_ = test::read_file(file_);
   }
   /// Replaces the first `from` by `to`, then expects an Error that names the file.
@@ -127,30 +134,69 @@ class VtuMalformed : public ::testing::Test {
       EXPECT_NE(std::string(e.what()).find(file_.string()), std::string::npos) << e.what();
     }
   }
+  virtual VtkFormat format() const { return GetParam(); }
   test::TempDir tmp_;
   std::filesystem::path file_;
   std::string text_;
 };
 
-TEST_F(VtuMalformed, MissingFile) {
-  EXPECT_THROW(read_vtu_frame(tmp_.path() / "nope.vtu"), Error);
-}
-TEST_F(VtuMalformed, Truncated) { expect_refused("</CellData>", ""); }
-TEST_F(VtuMalformed, NotAFrame) { expect_refused("UnstructuredGrid\"", "PolyData\""); }
-TEST_F(VtuMalformed, MissingArray) { expect_refused("Name=\"motion\"", "Name=\"moton\""); }
-TEST_F(VtuMalformed, WrongComponents) {
+TEST_P(VtuMalformed, MissingFile) { EXPECT_THROW(read_vtu_frame(tmp_.path() / "nope.vtu"), Error); }
+TEST_P(VtuMalformed, Truncated) { expect_refused("</CellData>", ""); }
+TEST_P(VtuMalformed, NotAFrame) { expect_refused("UnstructuredGrid\"", "PolyData\""); }
+TEST_P(VtuMalformed, MissingArray) { expect_refused("Name=\"motion\"", "Name=\"moton\""); }
+TEST_P(VtuMalformed, WrongComponents) {
   expect_refused("Name=\"velocity\" NumberOfComponents=\"3\"",
                  "Name=\"velocity\" NumberOfComponents=\"2\"");
 }
-TEST_F(VtuMalformed, BadBase64) {
+TEST_P(VtuMalformed, BadBase64) {
   const std::string head = "Name=\"torque\" NumberOfComponents=\"1\" format=\"binary\">\n";
   expect_refused(head, head + "!");
 }
-TEST_F(VtuMalformed, WrongCellCount) {
+TEST_P(VtuMalformed, WrongCellCount) {
   expect_refused("NumberOfCells=\"3\"", "NumberOfCells=\"4\"");
 }
-TEST_F(VtuMalformed, UnknownFormat) {
-  expect_refused("format=\"binary\"", "format=\"appended\"");
+TEST_P(VtuMalformed, UnknownFormat) { expect_refused("format=\"binary\"", "format=\"appended\""); }
+
+INSTANTIATE_TEST_SUITE_P(Formats, VtuMalformed,
+                         ::testing::Values(VtkFormat{Encoding::Binary, VtkPrecision::Float64,
+                                                     VtkCompression::None},
+                                           VtkFormat{}),
+                         [](const ::testing::TestParamInfo<VtkFormat>& p) {
+                           return p.param.compressed() ? std::string("Compressed")
+                                                       : std::string("Plain");
+                         });
+
+/// A compressed frame with something else broken.
+class VtuCompressedMalformed : public VtuMalformed {
+ protected:
+  VtkFormat format() const override { return {}; }
+};
+
+TEST_F(VtuCompressedMalformed, OtherCompressor) {
+  expect_refused("vtkZLibDataCompressor", "vtkLZ4DataCompressor");
+}
+TEST_F(VtuCompressedMalformed, UncompressedReadAsCompressed) {
+  // The header of a plain array is no block table; nor do its bytes inflate.
+  file_ = tmp_.path() / "plain.vtu";
+  write_vtu_frame(file_, test::sample_snapshot(),
+                  {Encoding::Binary, VtkPrecision::Float32, VtkCompression::None});
+  text_ = test::read_file(file_);
+  expect_refused("header_type=\"UInt64\"",
+                 "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\"");
+}
+TEST_F(VtuCompressedMalformed, CorruptBlock) {
+  // The torque array's text is two base64 runs: the header (4 UInt64s: 44 characters with
+  // its padding) then the block; a changed character in the block breaks its deflate
+  // stream or its checksum.
+  const std::string head = "Name=\"torque\" NumberOfComponents=\"1\" format=\"binary\">\n";
+  const auto at = text_.find(head);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t block = at + head.size() + 44;
+  const std::string original = text_.substr(block, 8);
+  std::string changed = original;
+  for (char& c : changed) c = c == 'A' ? 'B' : 'A';
+  expect_refused(head + text_.substr(at + head.size(), 44) + original,
+                 head + text_.substr(at + head.size(), 44) + changed);
 }
 
 }  // namespace

@@ -1,0 +1,122 @@
+// Frame output benchmark (issue 12): bytes per triangle of a frame and its contact network
+// on disk, and seconds per frame, for each VTK format, on dense_pile(n) after a given
+// number of steps (the pile is densest at the start: about 6 touching pairs per triangle,
+// fewer as it loosens). Also the time the time loop waits per frame when the frame is
+// written beside the stepping (OutputSet::write_frame_beside) against writing it inline.
+//   tridem_frame_bench [n=100000] [steps=2] [repetitions=3] [backend=openmp] [dir]
+// Prints a Markdown table; bench/README.md says how to read it.
+#include "io/output/vtk_frames.hpp"
+#include "tridem/output.hpp"
+#include "tridem/setting_names.hpp"
+#include "tridem/solver.hpp"
+#include "tridem/standard_scenes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using tridem::VtkFormat;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Case {
+  const char* name;
+  VtkFormat format;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::size_t n = argc > 1 ? std::stoul(argv[1]) : 100000;
+  const std::int64_t steps = argc > 2 ? std::stoll(argv[2]) : 2;
+  const int reps = argc > 3 ? std::stoi(argv[3]) : 3;
+  const std::string backend = argc > 4 ? argv[4] : "openmp";
+  const fs::path dir =
+      argc > 5 ? fs::path(argv[5]) : fs::temp_directory_path() / "tridem_frame_bench";
+  fs::create_directories(dir);
+
+  tridem::Scene scene = tridem::dense_pile(n);
+  scene.simulation.backend = tridem::value_in(tridem::kBackendNames, backend).value();
+  auto solver = tridem::make_solver(scene, {});
+  solver->advance(steps);
+  tridem::Snapshot s;
+  solver->snapshot(s, true);
+  const double tri = static_cast<double>(s.size());
+  fmt::print("dense_pile({}): {} triangles after {} steps, {:.2f} contacts per triangle\n\n", n,
+             s.size(), steps, static_cast<double>(s.contacts.size()) / tri);
+
+  const Case cases[] = {
+      {"double, uncompressed (the former files)",
+       {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::None}},
+      {"float32, zlib (the default)", {}},
+      {"double, zlib",
+       {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::Zlib}},
+      {"float32, uncompressed",
+       {tridem::Encoding::Binary, tridem::VtkPrecision::Float32, tridem::VtkCompression::None}},
+  };
+  fmt::print("| format | frame B/tri | contacts .vtp B/tri | both B/tri | s per frame (both) |\n"
+             "|---|---:|---:|---:|---:|\n");
+  for (const Case& c : cases) {
+    tridem::io::VtkXmlWriter w(c.format);
+    std::vector<double> times;
+    for (int r = 0; r < reps; ++r) {
+      const auto t0 = std::chrono::steady_clock::now();
+      tridem::io::write_vtu_frame(w, dir / "frame.vtu", s, true);
+      tridem::io::write_contacts_vtp(w, dir / "contacts.vtp", s);
+      times.push_back(seconds_since(t0));
+    }
+    const double frame = static_cast<double>(fs::file_size(dir / "frame.vtu")) / tri;
+    const double contacts = static_cast<double>(fs::file_size(dir / "contacts.vtp")) / tri;
+    fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.3f} |\n", c.name, frame, contacts,
+               frame + contacts, median(times));
+  }
+  tridem::write_contacts_csv(dir / "contacts.csv", s);
+  fmt::print("\ncontacts .csv (written with each frame while [output] contacts_csv is on): "
+             "{:.1f} B/tri\n\n",
+             static_cast<double>(fs::file_size(dir / "contacts.csv")) / tri);
+
+  // What the time loop pays per frame (default format, contacts on): the OutputSet call
+  // alone, inline or beside the stepping, with `steps` of stepping between frames.
+  tridem::OutputSettings settings;
+  settings.contacts_csv = false;
+  fmt::print(
+      "| output | loop waits per frame, s | stepping between frames, s |\n|---|---:|---:|\n");
+  for (const bool beside : {false, true}) {
+    tridem::OutputSet out(settings, dir / (beside ? "beside" : "inline"));
+    std::vector<double> waits, stepping;
+    tridem::Snapshot frame;
+    for (int r = 0; r < reps; ++r) {
+      solver->snapshot(frame, true);
+      auto t0 = std::chrono::steady_clock::now();
+      if (beside)
+        out.write_frame_beside(frame);
+      else
+        out.write_frame(frame);
+      waits.push_back(seconds_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      solver->advance(1);
+      stepping.push_back(seconds_since(t0));
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    out.finish_frames();
+    waits.back() += seconds_since(t0);
+    fmt::print("| {} | {:.3f} | {:.3f} |\n", beside ? "beside (output thread)" : "inline",
+               median(waits), median(stepping));
+  }
+  return EXIT_SUCCESS;
+}

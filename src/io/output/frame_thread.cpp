@@ -1,0 +1,58 @@
+#include "io/output/frame_thread.hpp"
+
+#include <utility>
+
+namespace tridem::io {
+
+FrameThread::FrameThread(Write write) : write_(std::move(write)), thread_([this] { run(); }) {}
+
+FrameThread::~FrameThread() {
+  {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return !busy_; });
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void FrameThread::wait_idle(std::unique_lock<std::mutex>& lock) {
+  changed_.wait(lock, [this] { return !busy_; });
+  if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
+}
+
+void FrameThread::submit(Snapshot& s) {
+  {
+    std::unique_lock lock(mutex_);
+    wait_idle(lock);
+    std::swap(pending_, s);
+    busy_ = true;
+  }
+  changed_.notify_all();
+}
+
+void FrameThread::wait() {
+  std::unique_lock lock(mutex_);
+  wait_idle(lock);
+}
+
+void FrameThread::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [this] { return busy_ || stopping_; });
+    if (!busy_) return;  // stopping, nothing in flight
+    lock.unlock();
+    std::exception_ptr failure;
+    try {
+      write_(pending_);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    lock.lock();
+    failure_ = failure;
+    busy_ = false;
+    changed_.notify_all();
+  }
+}
+
+}  // namespace tridem::io

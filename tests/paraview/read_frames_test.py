@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""ParaView's reader on tridem's frames: VTK's own vtkXMLUnstructuredGridReader and
+vtkXMLPolyDataReader (Debian's python3-vtk9, the library ParaView is built on) read the
+frames and contact networks a run writes in the default format (binary, Float32, zlib)
+and in the former one (Float64, uncompressed); point and cell counts are those of the
+run, and the last frame's cell data and vertices are final.csv's state within float32
+rounding (exactly, in Float64).
+
+usage: read_frames_test.py TRIDEM SOURCE_DIR WORK_DIR
+Exits 77 (CTest's skip) with the reason when python3-vtk9 is missing.
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+SKIP = 77
+try:
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+except ImportError:
+    print("SKIP: python3-vtk9 is not installed (apt-get install python3-vtk9)")
+    sys.exit(SKIP)
+
+tridem, source, work = sys.argv[1], sys.argv[2], sys.argv[3]
+scene = os.path.join(source, "tests", "paraview", "frames_scene.toml")
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def read(reader_type, path):
+    reader = reader_type()
+    reader.SetFileName(path)
+    reader.Update()
+    check(reader.GetErrorCode() == 0, f"{path}: VTK reports error {reader.GetErrorCode()}")
+    return reader.GetOutput()
+
+
+def run(out, extra):
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    text = open(scene).read().replace("[output]\n", "[output]\n" + extra)
+    path = os.path.join(out, "scene.toml")
+    open(path, "w").write(text)
+    subprocess.run([tridem, "run", path, "--out", out, "--quiet"], check=True,
+                   stdout=subprocess.DEVNULL)
+
+
+def verify(out, tolerance, type_name):
+    with open(os.path.join(out, "final.csv")) as f:
+        final = list(csv.DictReader(f))
+    n = len(final)
+    frames = sorted(os.listdir(os.path.join(out, "frames")))
+    check(frames == [f"frame_{s:09d}.vtu" for s in (0, 1000, 2000, 3000)], f"{out}: frames {frames}")
+    grid = read(vtkXMLUnstructuredGridReader, os.path.join(out, "frames", frames[-1]))
+    check(grid.GetNumberOfCells() == n, f"{out}: {grid.GetNumberOfCells()} cells, {n} particles")
+    check(grid.GetNumberOfPoints() == 3 * n, f"{out}: {grid.GetNumberOfPoints()} points")
+    cells = grid.GetCellData()
+    velocity = cells.GetArray("velocity")
+    check(velocity is not None and velocity.GetDataTypeAsString() == type_name,
+          f"{out}: velocity is {velocity and velocity.GetDataTypeAsString()}, not {type_name}")
+    v = vtk_to_numpy(velocity)
+    ids = vtk_to_numpy(cells.GetArray("id"))
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    worst = 0.0
+    for cell, k in enumerate(ids):
+        row = final[int(k)]
+        pairs = [(v[cell][0], row["vx"]), (v[cell][1], row["vy"])]
+        for vertex in range(3):
+            pairs.append((points[3 * cell + vertex][0], row[f"x{vertex + 1}"]))
+            pairs.append((points[3 * cell + vertex][1], row[f"y{vertex + 1}"]))
+        for got, want in pairs:
+            want = float(want)
+            worst = max(worst, abs(float(got) - want) / max(abs(want), 1e-300))
+    check(worst <= tolerance, f"{out}: the last frame differs from final.csv by {worst:g} (relative)")
+    network = read(vtkXMLPolyDataReader, os.path.join(out, "contacts", "contacts_000003000.vtp"))
+    with open(os.path.join(out, "contacts", "contacts_000003000.csv")) as f:
+        contacts = list(csv.DictReader(f))
+    check(len(contacts) > 0, f"{out}: the pile has no contacts")
+    check(network.GetNumberOfLines() == len(contacts),
+          f"{out}: {network.GetNumberOfLines()} lines, {len(contacts)} contacts")
+    # The network's points are the particles' centroids, in id order.
+    check(network.GetNumberOfPoints() == n, f"{out}: {network.GetNumberOfPoints()} points")
+    fn = vtk_to_numpy(network.GetCellData().GetArray("normal_force"))
+    off = max((abs(float(got) - float(row["fn"])) / max(abs(float(row["fn"])), 1e-300)
+               for got, row in zip(fn, contacts)), default=0.0)
+    check(off <= max(tolerance, 1e-12) * 4, f"{out}: normal_force differs from the CSV by {off:g}")
+    print(f"{out}: {n} cells, {len(contacts)} contacts read by VTK; worst relative difference {worst:g}")
+
+
+verify_cases = [
+    ("default", "", 2.0 ** -23, "float"),
+    ("former", 'vtk_precision = "double"\nvtk_compression = "none"\n', 0.0, "double"),
+]
+for name, extra, tolerance, type_name in verify_cases:
+    out = os.path.join(work, name)
+    run(out, extra)
+    verify(out, tolerance, type_name)
+sys.exit(1 if failures else 0)
