@@ -43,30 +43,41 @@ CandidatePairs<Real>::CandidatePairs(const std::vector<double>& longest_edge,
   cell_count_.resize(4 * n_ + 17);
 }
 
+// The small particles' box corners' extent and widest box, which size the grid; zeros when
+// none is small. Double, whatever Real: a float corner converts exactly.
+template <class Real>
+typename CandidatePairs<Real>::SmallExtent CandidatePairs<Real>::small_extent(
+    const BoxArrays<Real>& b, bool parallel) const {
+  const auto n = static_cast<std::int64_t>(n_);
+  double min_x = std::numeric_limits<double>::max(), min_y = min_x;
+  double max_x = std::numeric_limits<double>::lowest(), max_y = max_x;
+  double widest = 0;
+  // clang-format off
+#pragma omp parallel for schedule(static) if (parallel) \
+    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
+  // clang-format on
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!small_[i]) continue;
+    min_x = std::min(min_x, static_cast<double>(b.lo_x[i]));
+    min_y = std::min(min_y, static_cast<double>(b.lo_y[i]));
+    max_x = std::max(max_x, static_cast<double>(b.lo_x[i]));
+    max_y = std::max(max_y, static_cast<double>(b.lo_y[i]));
+    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
+  }
+  if (min_x > max_x) return {};
+  return {min_x, min_y, max_x, max_y, widest};
+}
+
 template <class Real>
 void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
   const auto n = static_cast<std::int64_t>(n_);
-  Real min_x = std::numeric_limits<Real>::max(), min_y = min_x;
-  Real max_x = std::numeric_limits<Real>::lowest(), max_y = max_x;
-  double widest = 0;
-#pragma omp parallel for schedule(static) if (parallel) \
-    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (!small_[i]) continue;
-    min_x = std::min(min_x, b.lo_x[i]);
-    min_y = std::min(min_y, b.lo_y[i]);
-    max_x = std::max(max_x, b.lo_x[i]);
-    max_y = std::max(max_y, b.lo_y[i]);
-    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
-  }
-  origin_x_ = min_x;
-  origin_y_ = min_y;
+  const SmallExtent e = small_extent(b, parallel);
+  origin_x_ = static_cast<Real>(e.min_x);
+  origin_y_ = static_cast<Real>(e.min_y);
   // At most 4 cells per particle.
-  const GridFit fit =
-      fit_grid(static_cast<double>(max_x) - static_cast<double>(min_x),
-               static_cast<double>(max_y) - static_cast<double>(min_y),
-               grid_cell_for(static_cast<double>(cell_size_), widest),
-               static_cast<double>(4 * n_ + 16));
+  const GridFit fit = fit_grid(e.max_x - e.min_x, e.max_y - e.min_y,
+                               grid_cell_for(static_cast<double>(cell_size_), e.widest),
+                               static_cast<double>(4 * n_ + 16));
   nx_ = fit.nx;
   ny_ = fit.ny;
   grid_cell_ = static_cast<Real>(fit.cell);
@@ -103,29 +114,14 @@ void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const Periodic
                                         bool parallel) {
   const auto n = static_cast<std::int64_t>(n_);
   const physics::PeriodicFrame& f = p.frame;
-  double min_x = std::numeric_limits<double>::max(), min_y = min_x;
-  double max_x = std::numeric_limits<double>::lowest(), max_y = max_x;
-  double widest = 0;
-  // clang-format off
-#pragma omp parallel for schedule(static) if (parallel) \
-    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
-  // clang-format on
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (!small_[i]) continue;
-    min_x = std::min(min_x, static_cast<double>(b.lo_x[i]));
-    min_y = std::min(min_y, static_cast<double>(b.lo_y[i]));
-    max_x = std::max(max_x, static_cast<double>(b.lo_x[i]));
-    max_y = std::max(max_y, static_cast<double>(b.lo_y[i]));
-    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
-  }
-  if (min_x > max_x) min_x = max_x = min_y = max_y = 0;  // no small particle
-  double cell = grid_cell_for(static_cast<double>(cell_size_), widest);
+  const SmallExtent e = small_extent(b, parallel);
+  double cell = grid_cell_for(static_cast<double>(cell_size_), e.widest);
   const double max_cells = static_cast<double>(4 * n_ + 16);
   for (;;) {
     nx_ = f.px ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.lx / cell))
-               : static_cast<std::int64_t>((max_x - min_x) / cell) + 1;
+               : static_cast<std::int64_t>((e.max_x - e.min_x) / cell) + 1;
     ny_ = f.py ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.ly / cell))
-               : static_cast<std::int64_t>((max_y - min_y) / cell) + 1;
+               : static_cast<std::int64_t>((e.max_y - e.min_y) / cell) + 1;
     if (static_cast<double>(nx_) * static_cast<double>(ny_) <= max_cells) break;
     cell *= 1.5;
   }
@@ -133,7 +129,7 @@ void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const Periodic
   cell_y_ = f.py ? f.ly / static_cast<double>(ny_) : cell;
   origin_x_ = static_cast<Real>(0);
   origin_y_ = static_cast<Real>(0);
-  const double ox = f.px ? f.x0 : min_x, oy = f.py ? f.y0 : min_y;
+  const double ox = f.px ? f.x0 : e.min_x, oy = f.py ? f.y0 : e.min_y;
   px_origin_ = ox;
   py_origin_ = oy;
 #pragma omp parallel for schedule(static) if (parallel)
@@ -178,6 +174,29 @@ bool CandidatePairs<Real>::overlaps_periodic(std::int32_t i, std::int32_t j,
          d(b.lo_y[j]) + im.shift.y <= d(b.hi_y[i]) + tol;
 }
 
+// What both scans share: who emits, all-pairs, the large particles. `overlaps(j)` is the
+// box test of i and j, `scan_cells(cell)` calls `cell(c)` for each grid cell to look in.
+template <class Real>
+template <class Overlaps, class ScanCells, class Visit>
+void CandidatePairs<Real>::visit_with(std::int32_t i, Method method, Overlaps&& overlaps,
+                                      ScanCells&& scan_cells, Visit&& visit) const {
+  const bool free_i = free_[i] != 0;
+  // All-pairs has no size classes: every particle counts as small.
+  auto consider = [&](std::int32_t j, bool small_j) {
+    if (emits_pair(i, j, true, small_j, free_i, free_[j] != 0) && overlaps(j)) visit(j);
+  };
+  if (method == Method::AllPairs) {
+    for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
+      consider(j, true);
+    return;
+  }
+  if (!small_[i]) return;  // a large particle emits nothing: the small ones reach it
+  scan_cells([&](std::int64_t c) {
+    for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) consider(sorted_[k], true);
+  });
+  for (const std::int32_t j : large_) consider(j, false);
+}
+
 // The 3 × 3 cells about i's corner, taken modulo the grid along the periodic directions;
 // a row reached across a Lees-Edwards boundary holds images shifted along x, so its three
 // columns are centred on i's corner shifted back. A periodic direction of fewer than 3
@@ -188,52 +207,43 @@ void CandidatePairs<Real>::visit_periodic(std::int32_t i, const BoxArrays<Real>&
                                           const PeriodicView& p, Method method,
                                           Visit&& visit) const {
   const physics::PeriodicFrame& f = p.frame;
-  const bool free_i = free_[i] != 0;
-  auto consider = [&](std::int32_t j, bool small_j) {
-    if (emits_pair(i, j, true, small_j, free_i, free_[j] != 0) && overlaps_periodic(i, j, b, p))
-      visit(j);
-  };
-  if (method == Method::AllPairs) {
-    for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
-      consider(j, true);
-    return;
-  }
-  if (!small_[i]) return;
-  const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
-  const bool all_rows = f.py && ny_ < 3;
-  const bool all_columns = f.px && (nx_ < 3 || all_rows);
-  const std::int64_t own_row = cell_of_[i] / nx_, own_column = cell_of_[i] % nx_;
-  const auto raw_row =
-      f.py ? static_cast<std::int64_t>(std::floor((lo_y - py_origin_) / cell_y_)) : own_row;
-  const std::int64_t row_first = all_rows ? 0 : raw_row - 1;
-  const std::int64_t row_last = all_rows ? ny_ - 1 : raw_row + 1;
-  for (std::int64_t r_raw = row_first; r_raw <= row_last; ++r_raw) {
-    std::int64_t row = r_raw, wraps = 0;
-    if (f.py && !all_rows) {
-      wraps = r_raw >= 0 ? r_raw / ny_ : -((-r_raw + ny_ - 1) / ny_);
-      row = r_raw - wraps * ny_;
-    } else if (!f.py && (row < 0 || row >= ny_)) {
-      continue;
-    }
-    std::int64_t col_first = 0, col_last = nx_ - 1;
-    if (!all_columns) {
-      const double x = lo_x - static_cast<double>(wraps) * f.shift;
-      const auto centre =
-          f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_)) : own_column;
-      col_first = centre - 1;
-      col_last = centre + 1;
-    }
-    for (std::int64_t c_raw = col_first; c_raw <= col_last; ++c_raw) {
-      std::int64_t column = c_raw;
-      if (f.px)
-        column = ((c_raw % nx_) + nx_) % nx_;
-      else if (column < 0 || column >= nx_)
+  auto overlaps = [&](std::int32_t j) { return overlaps_periodic(i, j, b, p); };
+  auto scan_cells = [&](auto&& cell) {
+    const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
+    const bool all_rows = f.py && ny_ < 3;
+    const bool all_columns = f.px && (nx_ < 3 || all_rows);
+    const std::int64_t own_row = cell_of_[i] / nx_, own_column = cell_of_[i] % nx_;
+    const auto raw_row =
+        f.py ? static_cast<std::int64_t>(std::floor((lo_y - py_origin_) / cell_y_)) : own_row;
+    const std::int64_t row_first = all_rows ? 0 : raw_row - 1;
+    const std::int64_t row_last = all_rows ? ny_ - 1 : raw_row + 1;
+    for (std::int64_t r_raw = row_first; r_raw <= row_last; ++r_raw) {
+      std::int64_t row = r_raw, wraps = 0;
+      if (f.py && !all_rows) {
+        wraps = r_raw >= 0 ? r_raw / ny_ : -((-r_raw + ny_ - 1) / ny_);
+        row = r_raw - wraps * ny_;
+      } else if (!f.py && (row < 0 || row >= ny_)) {
         continue;
-      const std::int64_t c = column + row * nx_;
-      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) consider(sorted_[k], true);
+      }
+      std::int64_t col_first = 0, col_last = nx_ - 1;
+      if (!all_columns) {
+        const double x = lo_x - static_cast<double>(wraps) * f.shift;
+        const auto centre =
+            f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_)) : own_column;
+        col_first = centre - 1;
+        col_last = centre + 1;
+      }
+      for (std::int64_t c_raw = col_first; c_raw <= col_last; ++c_raw) {
+        std::int64_t column = c_raw;
+        if (f.px)
+          column = ((c_raw % nx_) + nx_) % nx_;
+        else if (column < 0 || column >= nx_)
+          continue;
+        cell(column + row * nx_);
+      }
     }
-  }
-  for (const std::int32_t j : large_) consider(j, false);
+  };
+  visit_with(i, method, overlaps, scan_cells, visit);
 }
 
 template <class Real>
@@ -241,27 +251,14 @@ template <class Visit>
 void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real>& b,
                                             Method method, Visit&& visit) const {
   const physics::Aabb<Real> box_i = b.box(i);
-  const bool free_i = free_[i] != 0;
-  // All-pairs has no size classes: every particle counts as small.
-  auto consider = [&](std::int32_t j, bool small_j) {
-    if (emits_pair(i, j, true, small_j, free_i, free_[j] != 0) &&
-        physics::boxes_overlap(box_i, b.box(j)))
-      visit(j);
+  auto overlaps = [&](std::int32_t j) { return physics::boxes_overlap(box_i, b.box(j)); };
+  auto scan_cells = [&](auto&& cell) {
+    const std::int64_t cx = cell_of_[i] % nx_, cy = cell_of_[i] / nx_;
+    for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
+      for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1); ++x)
+        cell(x + y * nx_);
   };
-  if (method == Method::AllPairs) {
-    for (auto j = static_cast<std::int32_t>(i + 1); j < static_cast<std::int32_t>(n_); ++j)
-      consider(j, true);
-    return;
-  }
-  if (!small_[i]) return;  // a large particle emits nothing: the small ones reach it
-  const std::int64_t cx = cell_of_[i] % nx_, cy = cell_of_[i] / nx_;
-  for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny_ - 1); ++y)
-    for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx_ - 1);
-         ++x) {
-      const std::int64_t c = x + y * nx_;
-      for (std::int64_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) consider(sorted_[k], true);
-    }
-  for (const std::int32_t j : large_) consider(j, false);
+  visit_with(i, method, overlaps, scan_cells, visit);
 }
 
 template <class Real>

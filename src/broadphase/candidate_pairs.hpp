@@ -46,6 +46,13 @@ struct PeriodicView {
   const double* y;
 };
 
+/// The frame of a scene's periodic cell at time t.
+inline physics::PeriodicFrame periodic_frame_of(const PeriodicCell& cell, double t) {
+  const PeriodicRange x = cell.x.value_or(PeriodicRange{}), y = cell.y.value_or(PeriodicRange{});
+  return physics::periodic_frame_at(cell.x.has_value(), x.lo, x.length(), cell.y.has_value(), y.lo,
+                                    y.length(), cell.shear_rate, t);
+}
+
 template <class Real>
 class CandidatePairs {
  public:
@@ -62,7 +69,14 @@ class CandidatePairs {
   std::size_t large_count() const { return large_.size(); }
 
  private:
+  struct SmallExtent {
+    double min_x = 0, min_y = 0, max_x = 0, max_y = 0, widest = 0;
+  };
+  SmallExtent small_extent(const BoxArrays<Real>& boxes, bool parallel) const;
   void bin(const BoxArrays<Real>& boxes, bool parallel);
+  template <class Overlaps, class ScanCells, class Visit>
+  void visit_with(std::int32_t i, Method method, Overlaps&& overlaps, ScanCells&& scan_cells,
+                  Visit&& visit) const;
   template <class Visit>
   void visit_candidates(std::int32_t i, const BoxArrays<Real>& boxes, Method method,
                         Visit&& visit) const;

@@ -22,12 +22,19 @@ physics::Triangle<double> counter_clockwise(const TriangleSpec& t) {
 struct Layout {
   std::vector<physics::Triangle<double>> tri;
   std::vector<double> lo_x, lo_y, hi_x, hi_y, longest;
+  std::vector<double> cx, cy;  ///< centroids, from which a pair takes its periodic image
   std::vector<Motion> motion;
+  std::optional<physics::PeriodicFrame> frame;  ///< the periodic cell at t = 0, if any
 
-  explicit Layout(const std::vector<TriangleSpec>& triangles) {
+  Layout(const std::vector<TriangleSpec>& triangles, const PeriodicCell& cell) {
     const std::size_t n = triangles.size();
     tri.resize(n);
-    for (auto* v : {&lo_x, &lo_y, &hi_x, &hi_y, &longest}) v->resize(n);
+    for (auto* v : {&lo_x, &lo_y, &hi_x, &hi_y, &longest, &cx, &cy}) v->resize(n);
+    // validate_scene refuses other cells before it looks for overlaps.
+    const auto usable = [](const std::optional<PeriodicRange>& r) {
+      return !r || (std::isfinite(r->length()) && r->length() > 0);
+    };
+    if (cell.any() && usable(cell.x) && usable(cell.y)) frame = periodic_frame_of(cell, 0);
     motion.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       tri[i] = counter_clockwise(triangles[i]);
@@ -43,9 +50,26 @@ struct Layout {
       lo_y[i] = box.lo.y;
       hi_x[i] = box.hi.x;
       hi_y[i] = box.hi.y;
+      const Vec2d c = physics::centroid(tri[i]);
+      cx[i] = c.x;
+      cy[i] = c.y;
     }
   }
   BoxArrays<double> boxes() const { return {lo_x.data(), lo_y.data(), hi_x.data(), hi_y.data()}; }
+  void find(CandidatePairs<double>& grid, PairList& pairs) const {
+    if (!frame) return grid.find(boxes(), Method::Grid, true, pairs);
+    const PeriodicView view{*frame, cx.data(), cy.data()};
+    grid.find(boxes(), Method::Grid, true, pairs, &view);
+  }
+  /// j as e meets it: j itself, or its nearest periodic image.
+  physics::Triangle<double> partner(std::int64_t e, std::int64_t j) const {
+    physics::Triangle<double> t = tri[j];
+    if (!frame) return t;
+    const physics::PeriodicImage im =
+        physics::nearest_image(*frame, Vec2d{cx[e], cy[e]}, Vec2d{cx[j], cy[j]});
+    for (Vec2d& v : t.v) v += im.shift;
+    return t;
+  }
 };
 
 /// A depth that is more than rounding: a fraction of the pair's size, and a few ulps of
@@ -58,10 +82,18 @@ double touching_tolerance(const physics::Triangle<double>& a, const physics::Tri
   return kTouchingTolerance * longest + 64 * 2.220446049250313e-16 * coordinate;
 }
 
+/// How deep e and j (its image) overlap, and whether that is more than touching.
+bool overlapping(const Layout& layout, std::int64_t e, std::int32_t j, double& depth, Vec2d& push) {
+  const physics::Triangle<double> other = layout.partner(e, j);
+  depth = physics::overlap_depth(layout.tri[e], other, push);
+  const double l = std::max(layout.longest[e], layout.longest[j]);
+  return depth > touching_tolerance(layout.tri[e], other, l);
+}
+
 /// The overlapping pairs among the grid's candidates, by emitter then partner.
 std::vector<InitialOverlap> overlaps(const Layout& layout, CandidatePairs<double>& grid,
                                      PairList& pairs, bool first_only) {
-  grid.find(layout.boxes(), Method::Grid, true, pairs);
+  layout.find(grid, pairs);
   const auto n = static_cast<std::int64_t>(layout.tri.size());
   // Each emitter keeps its first overlap only for the refusal; the lowest is reported.
   std::int64_t first = n;
@@ -70,11 +102,9 @@ std::vector<InitialOverlap> overlaps(const Layout& layout, CandidatePairs<double
 #pragma omp parallel for schedule(dynamic, 1024) reduction(min : first)
     for (std::int64_t e = 0; e < n; ++e)
       for (std::int64_t s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s) {
-        const std::int32_t j = pairs.partner[s];
         Vec2d push;
-        const double depth = physics::overlap_depth(layout.tri[e], layout.tri[j], push);
-        const double l = std::max(layout.longest[e], layout.longest[j]);
-        if (depth > touching_tolerance(layout.tri[e], layout.tri[j], l)) {
+        double depth = 0;
+        if (overlapping(layout, e, pairs.partner[s], depth, push)) {
           first = std::min(first, e);
           break;
         }
@@ -86,9 +116,7 @@ std::vector<InitialOverlap> overlaps(const Layout& layout, CandidatePairs<double
     for (std::int64_t s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s) {
       const std::int32_t j = pairs.partner[s];
       InitialOverlap o{static_cast<std::size_t>(e), static_cast<std::size_t>(j), 0, {}};
-      o.depth = physics::overlap_depth(layout.tri[e], layout.tri[j], o.push);
-      const double l = std::max(layout.longest[e], layout.longest[j]);
-      if (!(o.depth > touching_tolerance(layout.tri[e], layout.tri[j], l))) continue;
+      if (!overlapping(layout, e, j, o.depth, o.push)) continue;
       // Ids in ascending order (the emitter of a small particle and a wall is the small one).
       if (o.a > o.b) {
         std::swap(o.a, o.b);
@@ -105,17 +133,19 @@ std::vector<InitialOverlap> overlaps(const Layout& layout, CandidatePairs<double
 
 }  // namespace
 
-std::vector<InitialOverlap> find_initial_overlaps(const std::vector<TriangleSpec>& triangles) {
+std::vector<InitialOverlap> find_initial_overlaps(const std::vector<TriangleSpec>& triangles,
+                                                  const PeriodicCell& cell) {
   if (triangles.empty()) return {};
-  const Layout layout(triangles);
+  const Layout layout(triangles, cell);
   CandidatePairs<double> grid(layout.longest, layout.motion);
   PairList pairs;
   return overlaps(layout, grid, pairs, false);
 }
 
-std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSpec>& triangles) {
+std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSpec>& triangles,
+                                                    const PeriodicCell& cell) {
   if (triangles.empty()) return std::nullopt;
-  const Layout layout(triangles);
+  const Layout layout(triangles, cell);
   CandidatePairs<double> grid(layout.longest, layout.motion);
   PairList pairs;
   const std::vector<InitialOverlap> found = overlaps(layout, grid, pairs, true);
@@ -167,7 +197,7 @@ void take_body_motions(const Scene& scene, Layout& layout) {
 RelaxReport relax_initial_overlaps(Scene& scene, int max_iterations) {
   RelaxReport report;
   if (scene.triangles.empty()) return report;
-  Layout layout(scene.triangles);
+  Layout layout(scene.triangles, scene.simulation.periodic);
   take_body_motions(scene, layout);
   const std::size_t n = layout.tri.size();
   // A wall does not move; grains share a push in inverse proportion to their masses.

@@ -7,6 +7,8 @@
 // Overlap is the separating-axis test (physics::overlap_depth) on the pairs the cell grid
 // of the solvers (CandidatePairs) lists, so the check is O(n). Pairs of two walls are
 // skipped, as the solvers skip them; touching (a depth within rounding of zero) is allowed.
+// In a periodic cell a triangle is tested against its partners' nearest images, as the
+// solvers' pairs see them at t = 0, so an overlap through the boundary is one too.
 #include "tridem/scene.hpp"
 
 #include <cstddef>
@@ -26,11 +28,14 @@ struct InitialOverlap {
   Vec2d push{};              ///< unit direction b must move in (a the opposite way)
 };
 
-/// Every overlapping pair, ordered by (a, b).
-std::vector<InitialOverlap> find_initial_overlaps(const std::vector<TriangleSpec>& triangles);
+/// Every overlapping pair, ordered by (a, b). With a periodic `cell`, a pair overlaps when
+/// one overlaps the other's nearest image (the rule of the solvers' pairs at t = 0).
+std::vector<InitialOverlap> find_initial_overlaps(const std::vector<TriangleSpec>& triangles,
+                                                  const PeriodicCell& cell = {});
 
 /// The first overlapping pair (lowest a, then b), or none.
-std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSpec>& triangles);
+std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSpec>& triangles,
+                                                    const PeriodicCell& cell = {});
 
 /// What relax_initial_overlaps did, for the run's log.
 struct RelaxReport {

@@ -90,6 +90,22 @@ TRIDEM_HD inline void wrap_into_cell(const PeriodicFrame& f, Pose<double>& p) {
   }
 }
 
+/// The boundary's work on the grains (docs/experiments.md, "Energy"). A pair that meets
+/// its partner's Lees-Edwards image sees it move faster by im.dvx: the power the pair's
+/// force puts into the grains exceeds what its springs and dashpots account for by the
+/// force on the particle that sees the image times that speed.
+TRIDEM_HD inline double image_power(const PeriodicImage& im, double force_on_origin_x) {
+  return force_on_origin_x * im.dvx;
+}
+
+/// And a wrap puts a body of mass m elsewhere, at another speed across a Lees-Edwards
+/// boundary: the kinetic and gravitational (g) energy it gains, 0 when it did not wrap.
+TRIDEM_HD inline double wrap_energy(const Pose<double>& before, const Pose<double>& after,
+                                    double mass, Vec2d g) {
+  return 0.5 * mass * (dot(after.v, after.v) - dot(before.v, before.v)) -
+         mass * dot(g, after.c - before.c);
+}
+
 /// The cell coordinate of `v` along a periodic direction of n cells of size `cell` from
 /// `origin`: its column (or row) modulo n, and how many periods it lies past the cell
 /// (`wraps`, negative below it).

@@ -51,6 +51,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   walls_move_ = walls_move(model);
   cell_ = scene.simulation.periodic;
   periodic_ = cell_.any();
+  if (periodic_ && cell_.shear_rate != 0) image_power_.assign(n_, 0.0);
   programs_ = model.programs;
   program_knots_ = model.program_knots;
   if (!model.bodies.empty()) {
@@ -219,9 +220,8 @@ physics::Body<Real> CpuSolver<Real>::body(std::int32_t i, Vec2d origin) const {
 
 template <class Real>
 physics::Body<Real> CpuSolver<Real>::image_body(std::int32_t i, Vec2d origin,
-                                                const physics::PeriodicFrame& frame) const {
+                                                const physics::PeriodicImage& im) const {
   const Vec2d c{x_[i], y_[i]};
-  const physics::PeriodicImage im = physics::nearest_image(frame, origin, c);
   Vec2<Real> rel[3];
   physics::load_vertices(rel_x_, rel_y_, i, rel);
   return physics::body_at(physics::image_offset<Real>(origin, c, im), rel,
@@ -230,9 +230,7 @@ physics::Body<Real> CpuSolver<Real>::image_body(std::int32_t i, Vec2d origin,
 
 template <class Real>
 physics::PeriodicFrame CpuSolver<Real>::frame_at(double t) const {
-  const PeriodicRange x = cell_.x.value_or(PeriodicRange{}), y = cell_.y.value_or(PeriodicRange{});
-  return physics::periodic_frame_at(cell_.x.has_value(), x.lo, x.length(), cell_.y.has_value(),
-                                    y.lo, y.length(), cell_.shear_rate, t);
+  return periodic_frame_of(cell_, t);
 }
 
 template <class Real>
@@ -255,6 +253,7 @@ void CpuSolver<Real>::compute_pair_forces() {
     const auto dt = static_cast<Real>(dt_);
     const std::int32_t* body_of = n_bodies_ > 0 ? member_body_.data() : nullptr;
     const std::int32_t* bond_first = bonds() > 0 ? bond_first_.data() : nullptr;
+    double image_power = 0;
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
       // Members of one body, and triangles an intact bond holds: exact zeros, no history.
@@ -267,11 +266,17 @@ void CpuSolver<Real>::compute_pair_forces() {
       }
       physics::PairSlip<Real> slip = old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
-      result_[s] = physics::SceneContactLaw::force(
-          a, periodic_ ? image_body(j, origin, frame) : body(j, origin), law, dt, slip);
+      if (periodic_) {
+        const physics::PeriodicImage im = physics::nearest_image(frame, origin, {x_[j], y_[j]});
+        result_[s] = physics::SceneContactLaw::force(a, image_body(j, origin, im), law, dt, slip);
+        image_power += physics::image_power(im, static_cast<double>(result_[s].force_a.x));
+      } else {
+        result_[s] = physics::SceneContactLaw::force(a, body(j, origin), law, dt, slip);
+      }
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
     }
+    if (!image_power_.empty()) image_power_[e] = image_power;
   }
   if (too_deep < n) report_penetration(static_cast<std::int32_t>(too_deep));
 }
@@ -416,7 +421,8 @@ void CpuSolver<Real>::integrate() {
     physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
     add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p,
                     motion_[i] == Motion::Free);
-    if (periodic_ && motion_[i] == Motion::Free) physics::wrap_into_cell(frame, p);
+    if (periodic_ && motion_[i] == Motion::Free)
+      wrap(frame, p, inv_mass_[i], static_cast<std::size_t>(i));
     x_[i] = p.c.x;
     y_[i] = p.c.y;
     theta_[i] = p.theta;
@@ -466,6 +472,15 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
                           pairs_.partner.data(), result_.data(), wall_velocity, free, before, after,
                           Vec2<Real>{fx_[i], fy_[i]}, torque_[i], inv_mass_[i], gravity_,
                           local_damping_, dt_);
+  if (!image_power_.empty()) energy_[kWallWork][i] += image_power_[i] * dt_;
+}
+
+template <class Real>
+void CpuSolver<Real>::wrap(const physics::PeriodicFrame& frame, physics::Pose<double>& p,
+                           double inv_mass, std::size_t booked) {
+  const physics::Pose<double> before = p;
+  physics::wrap_into_cell(frame, p);
+  energy_[kWallWork][booked] += physics::wrap_energy(before, p, 1.0 / inv_mass, gravity_);
 }
 
 // Each body sums its members' loads in ascending member order: OpenMP equals serial.
@@ -530,7 +545,8 @@ void CpuSolver<Real>::integrate_bodies() {
                                              body_torque_[b], body_inv_mass_[b], gravity_,
                                              local_damping_, dt_);
     // The members follow their wrapped body (place_members), so a body is never cut.
-    if (periodic_ && free) physics::wrap_into_cell(frame, after);
+    if (periodic_ && free)
+      wrap(frame, after, body_inv_mass_[b], static_cast<std::size_t>(body_first_[b]));
     body_x_[b] = after.c.x;
     body_y_[b] = after.c.y;
     body_theta_[b] = after.theta;

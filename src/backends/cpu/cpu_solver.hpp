@@ -109,7 +109,11 @@ class CpuSolver final : public Solver {
   physics::Body<Real> body(std::int32_t i, Vec2d origin) const;
   /// Its nearest periodic image as pair_force sees it (periodic boundaries).
   physics::Body<Real> image_body(std::int32_t i, Vec2d origin,
-                                 const physics::PeriodicFrame& frame) const;
+                                 const physics::PeriodicImage& im) const;
+  /// A free particle (body) of inverse mass `inv_mass` put back into the cell, and what
+  /// that gave it booked as the boundary's work on particle `booked`.
+  void wrap(const physics::PeriodicFrame& frame, physics::Pose<double>& p, double inv_mass,
+            std::size_t booked);
   /// The periodic cell at time t (periodic_ only).
   physics::PeriodicFrame frame_at(double t) const;
   physics::Pose<double> pose(std::size_t i) const {
@@ -175,6 +179,9 @@ class CpuSolver final : public Solver {
   // images, free particles (bodies) are put back into the cell as they step.
   bool periodic_ = false;
   PeriodicCell cell_;
+  // Lees-Edwards only (empty otherwise): each emitter row's image_power of this step, booked
+  // as wall work when the step is written. CPU only: the GPU does not run periodic cells.
+  std::vector<double> image_power_;
 };
 
 }  // namespace tridem

@@ -8,6 +8,8 @@
 #include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
+#include <optional>
+#include <string>
 #include <utility>
 
 namespace tridem {
@@ -25,6 +27,17 @@ std::vector<PhysicsSetting> physics_settings(const Scene& scene, double dt) {
       {"[simulation] local_damping", fmt::format("{}", s.local_damping)},
       {"[simulation] max_penetration", fmt::format("{}", s.max_penetration)},
   };
+  // The periodic cell only where there is one: every other scene's settings are unchanged.
+  // A resumed run must wrap, image and shear as the checkpointed one did.
+  const PeriodicCell& cell = scene.simulation.periodic;
+  if (cell.any()) {
+    const auto range = [](const std::optional<PeriodicRange>& r) {
+      return r ? fmt::format("[{}, {}]", r->lo, r->hi) : std::string("none");
+    };
+    out.push_back({"[simulation] periodic_x", range(cell.x)});
+    out.push_back({"[simulation] periodic_y", range(cell.y)});
+    out.push_back({"[simulation] shear_rate", fmt::format("{}", cell.shear_rate)});
+  }
   for (const Material& m : scene.materials) {
     const std::string key = fmt::format("[[material]] \"{}\" ", m.name);
     out.push_back({key + "penalty", fmt::format("{}", m.penalty)});

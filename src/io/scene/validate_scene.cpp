@@ -163,13 +163,14 @@ void check_overlaps(const Scene& scene, const Refuser& refuse,
       keeps_some = keeps_some || g.keep_overlaps;
   if (keeps_some) {
     // The first overlap not kept, in the order first_initial_overlap would give.
-    for (const InitialOverlap& candidate : find_initial_overlaps(scene.triangles))
+    for (const InitialOverlap& candidate :
+         find_initial_overlaps(scene.triangles, scene.simulation.periodic))
       if (!provenance->keeps_overlap(candidate.a, candidate.b)) {
         o = candidate;
         break;
       }
   } else {
-    o = first_initial_overlap(scene.triangles);
+    o = first_initial_overlap(scene.triangles, scene.simulation.periodic);
   }
   if (!o) return;
   auto describe = [&](std::size_t id) {

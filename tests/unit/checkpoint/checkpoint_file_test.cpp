@@ -314,5 +314,50 @@ TEST(CheckpointFile, OtherPhysicsSettingsAreRefusedNamingBothValues) {
       c, "ck.bin", other, {Precision::Double, scene_fingerprint(other), physics_settings(other, 1e-5)}));
 }
 
+// A periodic run resumed with another cell would wrap and image its grains elsewhere (and
+// shear them at another rate): the cell is a physics setting, refused when changed, added,
+// or removed, naming the key and both values.
+TEST(CheckpointFile, AnotherPeriodicCellIsRefused) {
+  Scene scene = test::empty_scene();
+  for (double x : {0.0, 2.0, 4.0})
+    scene.triangles.push_back(test::triangle({x, 0}, {x + 1, 0}, {x, 1}));
+  scene.simulation.periodic.x = PeriodicRange{-1, 7};
+  scene.simulation.periodic.y = PeriodicRange{-1, 7};
+  scene.simulation.periodic.shear_rate = 2;
+  Checkpoint c = sample_checkpoint();
+  c.meta = {Precision::Double, scene_fingerprint(scene), physics_settings(scene, 1e-5)};
+  c.meta.settings = decode_checkpoint(encode_checkpoint(c), "mem").meta.settings;
+  auto run_of = [](const Scene& s) {
+    return CheckpointMeta{Precision::Double, scene_fingerprint(s), physics_settings(s, 1e-5)};
+  };
+  EXPECT_NO_THROW(check_checkpoint_fits(c, "ck.bin", scene, run_of(scene)));
+  auto refused = [&](const Scene& other, const std::string& fragment) {
+    try {
+      check_checkpoint_fits(c, "ck.bin", other, run_of(other));
+      ADD_FAILURE() << "accepted; expected '" << fragment << "'";
+    } catch (const RunError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  Scene other = scene;
+  other.simulation.periodic.x->hi = 8;
+  refused(other, "periodic_x = [-1, 7], this run has [-1, 8]");
+  other = scene;
+  other.simulation.periodic.y.reset();
+  other.simulation.periodic.shear_rate = 0;
+  refused(other, "periodic_y = [-1, 7], this run has none");
+  other = scene;
+  other.simulation.periodic.shear_rate = 3;
+  refused(other, "shear_rate = 2, this run has 3");
+  other = scene;
+  other.simulation.periodic = PeriodicCell{};
+  refused(other, "periodic_x = [-1, 7], which this run does not have");
+  // And a checkpoint of a run without a cell does not continue in one.
+  Scene plain = scene;
+  plain.simulation.periodic = PeriodicCell{};
+  c.meta = run_of(plain);
+  refused(scene, "does not record [simulation] periodic_x");
+}
+
 }  // namespace
 }  // namespace tridem
