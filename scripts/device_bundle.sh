@@ -16,11 +16,16 @@ cp "$build/app/tridem" "$dest/app/"
 cp "$build/bench/tridem_bench" "$build/bench/tridem_paper_bench" "$dest/bench/"
 # The live view's benchmark client (bench/live/run_live_bench.sh), where the build has it.
 if [ -x "$build/bench/tridem_live_client" ]; then cp "$build/bench/tridem_live_client" "$dest/bench/"; fi
+# The frame output benchmark (bench/frame_bench.cpp), where the build has it.
+if [ -x "$build/bench/tridem_frame_bench" ]; then cp "$build/bench/tridem_frame_bench" "$dest/bench/"; fi
 cp "$build/tests/tridem_tests" "$dest/tests/"
-for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_paper_bench "$dest"/tests/tridem_tests; do
+# The Gmsh module, which the programs dlopen from lib/tridem/ beside their directory.
+gmsh_module="$build/lib/tridem/libtridem_gmsh.so"
+for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_paper_bench "$dest"/tests/tridem_tests $([ -f "$gmsh_module" ] && echo "$gmsh_module"); do
   ldd "$bin" | awk '/=> \// {print $3}'
 done | sort -u | grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" "$dest/lib/"; done
+if [ -f "$gmsh_module" ]; then mkdir -p "$dest/lib/tridem" && cp "$gmsh_module" "$dest/lib/tridem/"; fi
 tar -C "$dest" -cf - lib | xz -T0 -6 >"$dest/lib.tar.xz"
 rm -rf "$dest/lib"
 du -sh "$dest"

@@ -2,7 +2,8 @@
 // .msh version Gmsh writes is read by the code that wrote it. Gmsh keeps one global
 // model: each read initialises it, opens the file, copies what tridem needs and
 // finalises it again, so reads are independent (and not to be run from two threads).
-#include "io/scene/imported_particles.hpp"
+// Part of the Gmsh module (gmsh_module_entry.cpp), not of tridem_core.
+#include "io/scene/gmsh_mesh.hpp"
 #include "tridem/error.hpp"
 
 #include <fmt/format.h>
@@ -13,8 +14,11 @@
 #include <unordered_map>
 #include <vector>
 
-namespace tridem::scene_detail {
+namespace tridem::gmsh_module {
 namespace {
+
+using scene_detail::ImportedParticles;
+using scene_detail::MeshRegion;
 
 constexpr int kTriangle3 = 2;  // Gmsh's element type of a 3-node triangle
 
@@ -116,7 +120,7 @@ ImportedParticles read_open_mesh(const std::string& name,
 
 }  // namespace
 
-ImportedParticles mesh_region(const MeshRegion& region, const std::string& what) {
+ImportedParticles mesh(const MeshRegion& region, const std::string& what) {
   try {
     GmshSession session;
     gmsh::option::setNumber("General.NumThreads", 1);
@@ -176,8 +180,8 @@ ImportedParticles mesh_region(const MeshRegion& region, const std::string& what)
   }
 }
 
-ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
-                                 const std::vector<std::string>& body_groups) {
+ImportedParticles read_mesh(const std::filesystem::path& file,
+                            const std::vector<std::string>& body_groups) {
   const std::string name = file.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
@@ -197,4 +201,4 @@ ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
   }
 }
 
-}  // namespace tridem::scene_detail
+}  // namespace tridem::gmsh_module
