@@ -7,8 +7,9 @@
 // same kind; the tolerances are those of the other parity suites (support/gpu_compare.hpp,
 // support/float_compare.hpp), which a single missing bond force exceeds by far: a bond's
 // force on a triangle of this disc (1e4 N/m and more under load) moves it by about 1e-7 m
-// in one step. The damage states must be the same: which bonds are broken, which damaged,
-// and each point's damage to rounding. The measured differences are printed.
+// in one step. The damage states must be the same: which bonds are broken, which damaged
+// (but for a point within the damage tolerance of the threshold: expect_same_damage), and
+// each point's damage to rounding. The measured differences are printed.
 #include "support/backend_test.hpp"
 #include "support/bonded_disc.hpp"
 #include "support/float_compare.hpp"
@@ -27,18 +28,37 @@ namespace tridem {
 namespace {
 
 /// The largest difference of the points' damage, after checking that the same bonds are
-/// broken and the same damaged.
-double expect_same_damage(const SolverState& cpu, const SolverState& gpu, const std::string& what) {
+/// broken and the same points damaged. A point whose damage is within `tolerance` of a
+/// threshold (0: undamaged, 1: broken) on one backend may sit on the other side of it on
+/// the other: the two agree to rounding, not bit for bit, so a bond on the point of
+/// breaking may break a step apart; any other disagreement fails. Such near misses are
+/// counted in `near`.
+double expect_same_damage(const SolverState& cpu, const SolverState& gpu, double tolerance,
+                          std::size_t& near, const std::string& what) {
   EXPECT_EQ(cpu.bond_damage.size(), gpu.bond_damage.size()) << what;
   EXPECT_EQ(cpu.bond_dissipated.size(), gpu.bond_dissipated.size()) << what;
   double largest = 0;
   for (std::size_t k = 0; k < cpu.bonds() && k < gpu.bonds(); ++k) {
-    const double c0 = cpu.bond_damage[2 * k], c1 = cpu.bond_damage[2 * k + 1];
-    const double g0 = gpu.bond_damage[2 * k], g1 = gpu.bond_damage[2 * k + 1];
-    EXPECT_EQ(c0 == 1 && c1 == 1, g0 == 1 && g1 == 1) << what << ": broken, bond " << k;
-    EXPECT_EQ(c0 > 0, g0 > 0) << what << ": damaged, bond " << k << " point 0";
-    EXPECT_EQ(c1 > 0, g1 > 0) << what << ": damaged, bond " << k << " point 1";
-    largest = std::max({largest, std::abs(c0 - g0), std::abs(c1 - g1)});
+    const double c[2] = {cpu.bond_damage[2 * k], cpu.bond_damage[2 * k + 1]};
+    const double g[2] = {gpu.bond_damage[2 * k], gpu.bond_damage[2 * k + 1]};
+    const bool cpu_broken = c[0] == 1 && c[1] == 1, gpu_broken = g[0] == 1 && g[1] == 1;
+    if (cpu_broken != gpu_broken) {
+      const double* intact = cpu_broken ? g : c;
+      const bool close = intact[0] >= 1 - tolerance && intact[1] >= 1 - tolerance;
+      near += close;
+      EXPECT_TRUE(close) << what << ": bond " << k << " broken on " << (cpu_broken ? "CPU" : "GPU")
+                         << " only, damage " << c[0] << ", " << c[1] << " (CPU) " << g[0] << ", "
+                         << g[1] << " (GPU)";
+    }
+    for (int p = 0; p < 2; ++p) {
+      if ((c[p] > 0) != (g[p] > 0)) {
+        const bool close = std::max(c[p], g[p]) <= tolerance;
+        near += close;
+        EXPECT_TRUE(close) << what << ": bond " << k << " point " << p << " damaged on one backend "
+                           << "only: " << c[p] << " (CPU) " << g[p] << " (GPU)";
+      }
+      largest = std::max(largest, std::abs(c[p] - g[p]));
+    }
   }
   return largest;
 }
@@ -53,11 +73,12 @@ void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, st
   const double dx = in_float ? test::kFloatPositionTolerance : test::kPositionTolerance;
   const double da = in_float ? test::kFloatAngleTolerance : test::kAngleTolerance;
   const double dv = in_float ? test::kFloatVelocityTolerance : test::kVelocityTolerance;
-  // A point's damage is a smooth function of its opening while it softens: it differs as the
-  // positions do, relative to the element (5 mm), times the softening's slope (u_f / (u_f - 1)
-  // per unit of opening over the elastic limit's, some 1e3 for this granite): 1e-9 m gives
-  // 1e-4 in float's 3e-8 m, 1e-6 in double's 1e-9 m.
-  const double dd = in_float ? 1e-2 : 1e-4;
+  // A point's damage is a smooth function of its opening while it softens, of slope about
+  // 1/delta_0 with delta_0 = f_t / k the elastic limit's opening (k = E/h, h = 2.9 mm
+  // across a 5 mm element: delta_0 = 5.8e-7 m): the position tolerance, as a difference of
+  // opening, allows 1e-9 m / delta_0 = 2e-3 of damage in double and 3e-8 m / delta_0 = 5e-2
+  // in float.
+  const double dd = in_float ? 5e-2 : 2e-3;
   Snapshot a, b;
   SolverState sa, sb;
   for (std::int64_t s = every; s <= steps; s += every) {
@@ -70,15 +91,16 @@ void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, st
     const std::string what = scene.source + ", step " + std::to_string(s);
     ASSERT_EQ(a.size(), b.size());
     const test::Difference d = test::max_difference(a, b);
-    const double damage = expect_same_damage(sa, sb, what);
+    std::size_t near = 0;
+    const double damage = expect_same_damage(sa, sb, dd, near, what);
     const test::BondCount count = test::count_bonds(sa), gpu_count = test::count_bonds(sb);
     const EnergyBudget ea = cpu->energy(), eb = gpu->energy();
     std::printf("%s: max |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s, |d damage| %.3g; "
                 "damaged %zu/%zu, broken %zu/%zu of %zu bonds; fracture %.6g/%.6g J/m, elastic "
-                "%.6g/%.6g J/m\n",
+                "%.6g/%.6g J/m; %zu near misses at a threshold\n",
                 what.c_str(), d.position, d.angle, d.velocity, damage, count.damaged,
                 gpu_count.damaged, count.broken, gpu_count.broken, sa.bonds(),
-                ea.dissipated_fracture, eb.dissipated_fracture, ea.elastic, eb.elastic);
+                ea.dissipated_fracture, eb.dissipated_fracture, ea.elastic, eb.elastic, near);
     EXPECT_LE(d.position, dx) << what;
     EXPECT_LE(d.angle, da) << what;
     EXPECT_LE(d.velocity, dv) << what;
