@@ -91,8 +91,10 @@ Scene bonded_pile(std::size_t n, double size) {
   Scene s = dense_pile_with_edges(n, size, 1.0, &bonds);
   s.source = "bonded_pile";
   // The sand made bondable: bonds as stiff as the contacts (E = p) and strong enough that
-  // the pile's own weight and its start-up pressing break none (the benchmark measures
-  // intact bonds, the dearer case: a broken bond is skipped).
+  // the pile's own weight and the start-up push of its overlapping contacts break none (the
+  // benchmark measures intact bonds, the dearer case: a broken bond is skipped). The bonds
+  // start unstressed: their points sit on the lattice's edges about the centroids, which
+  // the growth leaves in place.
   Material& m = s.materials.front();
   m.young_modulus = m.penalty;
   m.tensile_strength = 1e6;
