@@ -36,10 +36,12 @@
 //   --layout=1d|2d, --rows=N, --columns=N, --capacity=N
 //                     [simulation.decomposition] for --method=decomposition (default 1d,
 //                     capacity 256; rows and columns 2d only, chosen when not given)
-//   --scenes=LIST     dense_pile (default), body_pile, or both: body_pile(n) is dense_pile(n)
-//                     with its grains grouped into rigid bodies of 10 triangles (issue 13:
-//                     10^6 triangles in 10^5 bodies against dense_pile(10^6)); its cases
-//                     are body_pile/<backend>/n:<n>
+//   --scenes=LIST     dense_pile (default), body_pile, bonded_pile, or several: body_pile(n)
+//                     is dense_pile(n) with its grains grouped into rigid bodies of 10
+//                     triangles (issue 13: 10^6 triangles in 10^5 bodies against
+//                     dense_pile(10^6)); bonded_pile(n) is dense_pile(n) with every grain
+//                     bonded to its lattice neighbours (issue 14: about 1.5 cohesive bonds
+//                     per triangle; counter `bonds`); their cases are <scene>/<backend>/n:<n>
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
@@ -128,8 +130,25 @@ bool g_stage_timing = true;
 tridem::SimulationSettings g_method;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies };
-const char* pile_name(Pile p) { return p == Pile::Dense ? "dense_pile" : "body_pile"; }
+enum class Pile { Dense, Bodies, Bonded };
+constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded};
+const char* pile_name(Pile p) {
+  switch (p) {
+    case Pile::Dense: return "dense_pile";
+    case Pile::Bodies: return "body_pile";
+    case Pile::Bonded: return "bonded_pile";
+  }
+  return "";
+}
+
+tridem::Scene make_pile(Pile kind, std::size_t n) {
+  switch (kind) {
+    case Pile::Dense: return tridem::dense_pile(n);
+    case Pile::Bodies: return tridem::body_pile(n);
+    case Pile::Bonded: return tridem::bonded_pile(n);
+  }
+  return {};
+}
 
 /// The scene of the last pile and size asked for: built once per size, not once per
 /// repetition.
@@ -138,7 +157,7 @@ const tridem::Scene& pile(Pile kind, std::size_t n) {
   static Pile cached_kind = Pile::Dense;
   static tridem::Scene scene;
   if (cached_n != n || cached_kind != kind) {
-    scene = kind == Pile::Dense ? tridem::dense_pile(n) : tridem::body_pile(n);
+    scene = make_pile(kind, n);
     cached_kind = kind;
     scene.simulation.method = g_method.method;
     scene.simulation.contact_test = g_method.contact_test;
@@ -200,6 +219,7 @@ void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std
   state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
   state.counters["bodies"] = static_cast<double>(snap.body_count());
+  state.counters["bonds"] = static_cast<double>(snap.bond_a.size());
   const tridem::StageTimes after = solver->stage_times();
   const auto steps = static_cast<double>(after.steps - before.steps);
   for (int s = 0; s < tridem::kStageCount && steps > 0; ++s) {
@@ -269,15 +289,15 @@ int main(int argc, char** argv) {
     for (std::size_t at = 0; at <= scenes.size();) {
       const std::size_t comma = std::min(scenes.find(',', at), scenes.size());
       const std::string name = scenes.substr(at, comma - at);
-      if (name == pile_name(Pile::Dense))
-        piles.push_back(Pile::Dense);
-      else if (name == pile_name(Pile::Bodies))
-        piles.push_back(Pile::Bodies);
-      else {
-        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile; got '" << name
-                  << "'\n";
+      const auto* p = std::find_if(std::begin(kPiles), std::end(kPiles),
+                                   [&](Pile x) { return name == pile_name(x); });
+      if (p == std::end(kPiles)) {
+        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile; "
+                     "got '"
+                  << name << "'\n";
         return 2;
       }
+      piles.push_back(*p);
       at = comma + 1;
     }
   }

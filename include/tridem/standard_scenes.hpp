@@ -3,6 +3,7 @@
 #include "tridem/scene.hpp"
 
 #include <cstddef>
+#include <vector>
 
 namespace tridem {
 
@@ -16,6 +17,18 @@ namespace tridem {
 /// pre-stressed pile then loosens from its free surface (at 10³ grains, about 2 touching
 /// pairs per triangle after 200 steps), so benchmarks time early steps.
 Scene dense_pile(std::size_t n, double size = 0.01, double aspect = 1.0);
+
+/// dense_pile, and in `edges` (when not null) a bond for every two of its grains that share a
+/// lattice edge, on the edge as the lattice made it (before the grains grew).
+Scene dense_pile_with_edges(std::size_t n, double size, double aspect,
+                            std::vector<BondSpec>* edges);
+
+/// dense_pile(n, size) with every grain bonded to its lattice neighbours across their
+/// shared edges (issue 14's benchmark: about 1.5 bonds per triangle): the same triangles,
+/// overlaps and pair lists, the sand made bondable (E = its penalty; strengths its weight
+/// never reaches). The pairs an intact bond holds add exact zeros; the bonds add their own
+/// work, one per bond, in the same step.
+Scene bonded_pile(std::size_t n, double size = 0.01);
 
 /// dense_pile(n, size) with its grains grouped into rigid bodies (issue 13's benchmark: 10^6
 /// triangles in 10^5 bodies against 10^6 free ones): in each lattice row, `members`

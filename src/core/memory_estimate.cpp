@@ -50,15 +50,20 @@ std::size_t cpu_bytes(std::size_t n, std::size_t pairs) {
   return n * (per_particle + host) + pairs * per_pair;
 }
 
+/// The solver's bytes per bond, on either backend (core/bond_columns.hpp): a, b and
+/// material, the geometry in Real, each point's damage, the broken flag, the released
+/// energy (double), the step's result, and two list slots (partner, bond) per bond plus the
+/// per-particle offsets (a bond is shared by two particles, and each particle with bonds has
+/// at least one: one offset per bond is an upper bound).
+template <class Real>
+constexpr std::size_t solver_bond_bytes() {
+  return 3 * 4 + sizeof(physics::BondGeometry<Real>) + physics::kBondPoints * sizeof(Real) + 1 + 8 +
+         sizeof(physics::BondForce<Real>) + 2 * 2 * 4 + 4;
+}
+
 template <class Real>
 std::size_t bond_bytes() {
-  // The solver's: a, b and material, the geometry in Real, each point's damage, the broken
-  // flag, the released energy (double), the step's result, and two list slots (partner,
-  // bond) per bond plus the per-particle offsets (at most 3 bonds per particle: one more
-  // offset per bond is an upper bound).
-  const std::size_t solver = 3 * 4 + sizeof(physics::BondGeometry<Real>) +
-                             physics::kBondPoints * sizeof(Real) + 1 + 8 +
-                             sizeof(physics::BondForce<Real>) + 2 * 2 * 4 + 4;
+  const std::size_t solver = solver_bond_bytes<Real>();
   // The host's: the scene's BondSpec, the bond model (a, b, material, geometry in double,
   // its slots) and the snapshot's line (a, b, damage, broken, two ends).
   const std::size_t host = sizeof(BondSpec) + 3 * 4 + sizeof(physics::BondGeometry<double>) +
@@ -72,9 +77,18 @@ std::size_t cpu_bond_bytes(Precision precision) {
   return precision == Precision::Float ? bond_bytes<float>() : bond_bytes<double>();
 }
 
-std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision) {
-  return precision == Precision::Float ? gpu_bytes<float>(n, pairs)
-                                       : gpu_bytes<double>(n, pairs);
+std::size_t gpu_bond_bytes(Precision precision) {
+  // The GPU's columns, plus the double of each bond's elastic energy that energy() sums.
+  return (precision == Precision::Float ? solver_bond_bytes<float>()
+                                        : solver_bond_bytes<double>()) +
+         8;
+}
+
+std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                             std::size_t bonds) {
+  return (precision == Precision::Float ? gpu_bytes<float>(n, pairs)
+                                        : gpu_bytes<double>(n, pairs)) +
+         bonds * gpu_bond_bytes(precision);
 }
 
 std::size_t cpu_run_bytes(std::size_t n, std::size_t pairs, Precision precision,

@@ -18,9 +18,14 @@ inline constexpr std::size_t reserved_pairs(std::size_t n) {
   return kReservedPairsPerParticle * n + 1024;
 }
 
-/// Bytes of GPU memory the CUDA solver allocates for n particles and room for `pairs`
-/// pairs (sized once at start).
-std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision);
+/// Bytes of GPU memory the CUDA solver allocates for n particles, room for `pairs` pairs
+/// and `bonds` cohesive bonds (sized once at start).
+std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                             std::size_t bonds = 0);
+
+/// Of those, the bytes of one cohesive bond on the GPU: the columns of core/bond_columns.hpp
+/// and the energy scratch.
+std::size_t gpu_bond_bytes(Precision precision);
 
 /// Bytes of host memory a run on the CPU backends holds for n particles, room for `pairs`
 /// pairs and `bonds` cohesive bonds: the solver and the host copies (scene, model,

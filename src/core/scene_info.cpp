@@ -38,7 +38,7 @@ SceneInfo describe_scene(const Scene& scene) {
   const std::size_t n = model.size();
   info.memory_bytes =
       cpu_run_bytes(n, reserved_pairs(n), scene.simulation.precision, scene.bonds.size());
-  info.gpu_memory_bytes = cuda_solver_bytes(n, scene.simulation.precision);
+  info.gpu_memory_bytes = cuda_solver_bytes(n, scene.simulation.precision, scene.bonds.size());
   info.gpu = cuda_device_description();
   return info;
 }

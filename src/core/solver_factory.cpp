@@ -88,24 +88,8 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   check_method(scene);
   check_time_step(scene, ts, config.force);
   const Backend requested = scene.simulation.backend;
-  Backend backend = resolve_backend(requested);
-  // The GPU does not compute cohesive bonds yet (issue 14): a bonded scene runs on the CPU,
-  // never on a GPU that would ignore its bonds.
-  if (!scene.bonds.empty() && backend == Backend::Cuda) {
-    if (requested != Backend::Auto)
-      throw SceneError(fmt::format(
-          "{}: the scene has {} cohesive bonds ([[mesh]] bonded = true), which backend '{}' "
-          "does not compute yet; use backend = \"{}\", \"{}\" or \"{}\" (auto runs bonded "
-          "scenes on the CPU)",
-          scene_label(scene), scene.bonds.size(), backend_name(Backend::Cuda),
-          backend_name(Backend::OpenMP), backend_name(Backend::Cpu), backend_name(Backend::Auto)));
-    backend = fastest_cpu_backend();
-    fmt::print(stderr,
-               "note: backend = auto runs this bonded scene on {}: the GPU does not "
-               "compute cohesive bonds yet\n",
-               backend_name(backend));
-  }
-  // Periodic boundaries run on the CPU only for now: auto picks it (as for bonds).
+  Backend backend = resolve_backend(requested);  // bonded scenes too: the GPU computes bonds
+  // Periodic boundaries run on the CPU only for now: auto picks it.
   if (scene.simulation.periodic.any() && backend == Backend::Cuda && requested == Backend::Auto) {
     backend = fastest_cpu_backend();
     fmt::print(stderr,

@@ -4,10 +4,12 @@
 // survive the round trip: RestartWithoutHistoryDiverges shows that it matters here.
 #include "support/backend_test.hpp"
 #include "support/body_scenes.hpp"
+#include "support/bonded_disc.hpp"
 #include "support/gpu.hpp"
 #include "support/program_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
+#include "tridem/error.hpp"
 #include "tridem/solver.hpp"
 
 #include <gtest/gtest.h>
@@ -117,6 +119,43 @@ INSTANTIATE_TEST_SUITE_P(OpenMP, BodyRestart,
                                            test::SolverChoice(Backend::OpenMP,
                                                               Method::Decomposition,
                                                               Precision::Float)));
+
+// Cohesive bonds: a loaded disc whose bonds are damaged at the checkpoint and break after
+// it (support/bonded_disc.hpp); the checkpoint carries each point's damage and released
+// energy (the broken flags follow from them), so the restarted run breaks the same bonds at
+// the same steps and ends bit for bit where the straight one does, every backend.
+using BondRestart = test::BackendTest;
+
+TEST_P(BondRestart, LoadedDiscIsBitIdentical) {
+  const test::SolverChoice& c = GetParam();
+  Scene s;
+  try {
+    s = test::loaded_bonded_disc();
+  } catch (const SceneError& e) {
+    GTEST_SKIP() << e.what();  // a build without Gmsh
+  }
+  if (c.method == Method::Decomposition)
+    s = test::with_decomposition(s, DecompositionLayout::Grid, 200);
+  const std::int64_t steps = 2 * test::kLoadedDiscDamagedBy;
+  auto straight = solver_for(s, c.backend, c.precision, c.method);
+  const SolverState expected = final_state(*straight, steps);
+  const SolverState half = halfway_state(s, c.backend, c.precision, c.method, steps);
+  ASSERT_GT(test::count_bonds(half).damaged, 0u) << "bonds must be damaged at the restart";
+  ASSERT_GT(test::count_bonds(expected).broken, test::count_bonds(half).broken)
+      << "bonds must break after the restart";
+  auto restarted = solver_for(s, c.backend, c.precision, c.method);
+  restarted->load_state(half);
+  const SolverState got = final_state(*restarted, steps);
+  expect_bit_identical(got, expected);
+  EXPECT_EQ(got.bond_damage, expected.bond_damage);
+  EXPECT_EQ(got.bond_dissipated, expected.bond_dissipated);
+  EXPECT_EQ(restarted->energy().dissipated_fracture, straight->energy().dissipated_fracture);
+  EXPECT_EQ(restarted->energy().elastic, straight->energy().elastic);
+}
+
+TRIDEM_INSTANTIATE_SOLVERS(BondRestart);
+INSTANTIATE_TEST_SUITE_P(OpenMP, BondRestart,
+                         ::testing::Values(test::SolverChoice(Backend::OpenMP)));
 
 // Motion programs and a servo: nothing but the walls' poses and velocities carries them
 // (the time is the step's), so a restart continues them bit for bit.

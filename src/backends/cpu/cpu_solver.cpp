@@ -65,30 +65,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   for (const auto& law : contact_law_table(scene.materials))
     laws_.push_back(physics::SceneContactLaw::cast<Real>(law));
   if (!scene.bonds.empty()) {
-    const BondModel bonds = build_bond_model(scene, model);
-    bond_a_ = bonds.a;
-    bond_b_ = bonds.b;
-    bond_material_ = bonds.material;
-    for (const auto& g : bonds.geometry) {
-      physics::BondGeometry<Real> r{};
-      for (int k = 0; k < physics::kBondPoints; ++k) {
-        r.on_a[k] = {static_cast<Real>(g.on_a[k].x), static_cast<Real>(g.on_a[k].y)};
-        r.on_b[k] = {static_cast<Real>(g.on_b[k].x), static_cast<Real>(g.on_b[k].y)};
-      }
-      r.normal = {static_cast<Real>(g.normal.x), static_cast<Real>(g.normal.y)};
-      r.length = static_cast<Real>(g.length);
-      r.stiffness = static_cast<Real>(g.stiffness);
-      bond_geometry_.push_back(r);
-    }
-    for (const auto& m : bonds.strength)
-      bond_strength_.push_back(physics::bond_strength_cast<Real>(m));
-    bond_first_ = bonds.first;
-    bond_partner_ = bonds.partner;
-    bond_of_ = bonds.bond;
-    bond_damage_.assign(bonds.size(), {});
-    bond_broken_.assign(bonds.size(), 0);
-    bond_dissipated_.assign(bonds.size(), 0.0);
-    bond_result_.assign(bonds.size(), {});
+    bonds_ = initial_bond_columns<Real>(build_bond_model(scene, model));
+    bond_view_ = bonds_.view(bonds_.size());
   }
   // Room for a dense packing's pairs up front; the lists only grow past it.
   const auto initial_pairs = static_cast<std::int64_t>(reserved_pairs(n_));
@@ -252,14 +230,11 @@ void CpuSolver<Real>::compute_pair_forces() {
     const physics::Body<Real> a = body(emitter, origin);
     const auto dt = static_cast<Real>(dt_);
     const std::int32_t* body_of = n_bodies_ > 0 ? member_body_.data() : nullptr;
-    const std::int32_t* bond_first = bonds() > 0 ? bond_first_.data() : nullptr;
     double image_power = 0;
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
       // Members of one body, and triangles an intact bond holds: exact zeros, no history.
-      if (physics::same_body(body_of, e, j) ||
-          physics::intact_bond_between(bond_first, bond_partner_.data(), bond_of_.data(),
-                                       bond_broken_.data(), e, j)) {
+      if (physics::same_body(body_of, e, j) || physics::intact_bond_between(bond_view_, e, j)) {
         result_[s] = physics::PairForce<Real>{};
         slip_[s] = physics::PairSlip<Real>{};
         continue;
@@ -281,50 +256,36 @@ void CpuSolver<Real>::compute_pair_forces() {
   if (too_deep < n) report_penetration(static_cast<std::int32_t>(too_deep));
 }
 
-// One thread per bond, each writing its own slot: OpenMP equals serial.
+// One thread per bond, each writing its own slot: OpenMP equals serial. The bond's frame:
+// origin at a's centroid, as for a pair (physics/local_frame.hpp), b at its nearest image.
 template <class Real>
 void CpuSolver<Real>::compute_bond_forces() {
   const auto nb = static_cast<std::int64_t>(bonds());
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
+  const physics::BondArrays<Real> v = bond_view_;
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t k = 0; k < nb; ++k) {
-    if (bond_broken_[k]) {
-      bond_result_[k] = physics::BondForce<Real>{};
-      continue;
-    }
-    const std::int32_t a = bond_a_[k], b = bond_b_[k];
-    // The bond's frame: origin at a's centroid, as for a pair (physics/local_frame.hpp).
-    const Vec2d origin{x_[a], y_[a]};
-    const physics::BondSide<Real> side_a{{Real(0), Real(0)}, theta_[a]};
-    const Vec2d cb{x_[b], y_[b]};
-    const physics::BondSide<Real> side_b{
-        physics::image_offset<Real>(origin, cb, physics::nearest_image(frame, origin, cb)),
-        theta_[b]};
-    bond_result_[k] =
-        physics::bond_force(side_a, side_b, bond_geometry_[k], bond_strength_[bond_material_[k]],
-                            bond_damage_[k].data());
+    const std::int32_t a = v.a[k], b = v.b[k];
+    const Vec2d origin{x_[a], y_[a]}, cb{x_[b], y_[b]};
+    v.result[k] = physics::step_bond(
+        v, k, physics::image_offset<Real>(origin, cb, physics::nearest_image(frame, origin, cb)),
+        theta_[a], theta_[b]);
   }
 }
 
-// After its pairs, each particle adds its bonds' loads in ascending bond order.
+// After its pairs, each particle adds its bonds' loads (physics::add_bond_loads' order).
 template <class Real>
 void CpuSolver<Real>::add_bond_loads() {
   const auto n = static_cast<std::int64_t>(n_);
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::int64_t p = 0; p < n; ++p) {
-    for (std::int32_t s = bond_first_[p]; s < bond_first_[p + 1]; ++s) {
-      const physics::BondForce<Real>& f = bond_result_[bond_of_[s]];
-      if (bond_a_[bond_of_[s]] == p) {
-        fx_[p] += f.force_a.x;
-        fy_[p] += f.force_a.y;
-        torque_[p] += f.torque_a;
-      } else {
-        fx_[p] -= f.force_a.x;
-        fy_[p] -= f.force_a.y;
-        torque_[p] += f.torque_b;
-      }
-    }
+    Vec2<Real> f{fx_[p], fy_[p]};
+    Real t = torque_[p];
+    physics::add_bond_loads(bond_view_, p, f, t);
+    fx_[p] = f.x;
+    fy_[p] = f.y;
+    torque_[p] = t;
   }
 }
 
@@ -332,13 +293,7 @@ template <class Real>
 void CpuSolver<Real>::commit_bonds() {
   const auto nb = static_cast<std::int64_t>(bonds());
 #pragma omp parallel for schedule(static) if (parallel_)
-  for (std::int64_t k = 0; k < nb; ++k) {
-    if (bond_broken_[k]) continue;
-    const physics::BondForce<Real>& f = bond_result_[k];
-    for (int p = 0; p < physics::kBondPoints; ++p) bond_damage_[k][p] = f.damage[p];
-    bond_broken_[k] = f.broken ? 1 : 0;
-    bond_dissipated_[k] += static_cast<double>(f.dissipated);
-  }
+  for (std::int64_t k = 0; k < nb; ++k) physics::commit_bond(bond_view_, k);
 }
 
 template <class Real>
@@ -592,8 +547,8 @@ EnergyBudget CpuSolver<Real>::energy() const {
   }
   if (step_ > 0)
     for (std::size_t k = 0; k < bonds(); ++k)
-      b.elastic += static_cast<double>(bond_result_[k].elastic);
-  for (double d : bond_dissipated_) b.dissipated_fracture += d;
+      b.elastic += static_cast<double>(bonds_.result[k].elastic);
+  for (double d : bonds_.dissipated) b.dissipated_fracture += d;
   return b;
 }
 
@@ -605,7 +560,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   copy_shown_fields(out, *this);
   fill_from_model(out, *this);
   fill_bodies(out, *this, n_bodies_);
-  fill_bonds(out);
+  fill_bonds(out, bonds_);
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
@@ -613,35 +568,6 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
                   x_.data(), y_.data());
   if (periodic_)
     set_image_shifts(out, frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data());
-}
-
-template <class Real>
-void CpuSolver<Real>::fill_bonds(Snapshot& out) const {
-  const std::size_t nb = bonds();
-  out.bond_a = bond_a_;
-  out.bond_b = bond_b_;
-  for (auto* v : {&out.bond_damage, &out.bond_x0, &out.bond_y0, &out.bond_x1, &out.bond_y1})
-    v->resize(nb);
-  out.bond_broken = bond_broken_;
-  // The edge's ends from its two Gauss points on a, extrapolated to 0 and 1 along it.
-  const double xi0 = physics::bond_point_position(0), xi1 = physics::bond_point_position(1);
-  for (std::size_t k = 0; k < nb; ++k) {
-    double mean = 0;
-    for (Real d : bond_damage_[k]) mean += static_cast<double>(d) / physics::kBondPoints;
-    out.bond_damage[k] = mean;
-    const auto a = static_cast<std::size_t>(bond_a_[k]);
-    const physics::BondGeometry<Real>& g = bond_geometry_[k];
-    const Vec2d p0{static_cast<double>(g.on_a[0].x), static_cast<double>(g.on_a[0].y)};
-    const Vec2d p1{static_cast<double>(g.on_a[1].x), static_cast<double>(g.on_a[1].y)};
-    const Vec2d c{x_[a], y_[a]};
-    const double cs = std::cos(theta_[a]), sn = std::sin(theta_[a]);
-    const Vec2d e0 = c + rotate(p0 + (p1 - p0) * (-xi0 / (xi1 - xi0)), cs, sn);
-    const Vec2d e1 = c + rotate(p0 + (p1 - p0) * ((1 - xi0) / (xi1 - xi0)), cs, sn);
-    out.bond_x0[k] = e0.x;
-    out.bond_y0[k] = e0.y;
-    out.bond_x1[k] = e1.x;
-    out.bond_y1[k] = e1.y;
-  }
 }
 
 template class CpuSolver<float>;

@@ -6,12 +6,12 @@
 #include "backends/cpu/thread_choice.hpp"
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/single_domain.hpp"
-#include "core/bond_model.hpp"
+#include "core/bond_columns.hpp"
 #include "core/particle_model.hpp"
 #include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
 #include "decomposition/decomposed_pairs.hpp"
-#include "physics/cohesive_bond.hpp"
+#include "physics/bond_step.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/motion_program.hpp"
@@ -61,7 +61,7 @@ class CpuSolver final : public Solver {
   TRIDEM_BODY_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   std::size_t bodies() const { return n_bodies_; }
-  std::size_t bonds() const { return bond_a_.size(); }
+  std::size_t bonds() const { return bonds_.size(); }
 
   /// The pairs of the last completed step and their forces (between steps): MPI ranks
   /// (src/mpi/) sum the walls' loads, the elastic energy and the contacts across ranks
@@ -99,7 +99,6 @@ class CpuSolver final : public Solver {
   void compute_bond_forces();
   void add_bond_loads();
   void commit_bonds();
-  void fill_bonds(Snapshot& out) const;  ///< the snapshot's bond columns
   physics::Pose<double> body_pose(std::size_t b) const {
     return {{body_x_[b], body_y_[b]}, body_theta_[b], {body_vx_[b], body_vy_[b]}, body_w_[b]};
   }
@@ -143,17 +142,12 @@ class CpuSolver final : public Solver {
   std::size_t n_bodies_ = 0;  ///< bodies, when some has several members; else 0
   TRIDEM_BODY_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
   TRIDEM_MEMBER_FIELDS(TRIDEM_DECLARE_MEMBER_COLUMNS)
-  // Bonds (empty without): the model (core/bond_model.hpp) in Real, each particle's list,
+  // Bonds (empty without; core/bond_columns.hpp): the model in Real, each particle's list,
   // the damage of each bond's points and whether it broke, its dissipated energy (J/m,
-  // cumulative), and this step's forces.
-  std::vector<std::int32_t> bond_a_, bond_b_, bond_material_;
-  std::vector<physics::BondGeometry<Real>> bond_geometry_;
-  std::vector<physics::BondStrength<Real>> bond_strength_;
-  std::vector<std::int32_t> bond_first_, bond_partner_, bond_of_;
-  std::vector<std::array<Real, physics::kBondPoints>> bond_damage_;
-  std::vector<std::uint8_t> bond_broken_;
-  std::vector<double> bond_dissipated_;
-  std::vector<physics::BondForce<Real>> bond_result_;
+  // cumulative), and this step's forces; bond_view_ points into them (the shared rules of
+  // physics/bond_step.hpp read it).
+  HostBondColumns<Real> bonds_;
+  physics::BondArrays<Real> bond_view_{};
   std::vector<physics::LawParameters<Real>> laws_;
   int n_materials_;
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity

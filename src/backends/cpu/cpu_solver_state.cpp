@@ -18,11 +18,7 @@ void CpuSolver<Real>::save_state(SolverState& out) const {
   // Bodies: their own pose and velocities (empty columns without bodies).
   SolverState::for_each_body_column([&](auto field) { out.column(field) = column(field); });
   append_history(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), old_slip_.data());
-  // Bonds: each point's damage (Real, exact in double) and the energy released so far.
-  out.bond_damage.clear();
-  for (const auto& d : bond_damage_)
-    for (Real v : d) out.bond_damage.push_back(static_cast<double>(v));
-  out.bond_dissipated = bond_dissipated_;
+  save_bonds(out, bonds_);
 }
 
 template <class Real>
@@ -52,18 +48,7 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   });
 
   // Bonds: the damage and energy of the state; broken where every point is fully damaged.
-  validate_bond_state(in, bonds(), description());
-  for (std::size_t k = 0; k < bonds(); ++k) {
-    bool broken = true;
-    for (int p = 0; p < physics::kBondPoints; ++p) {
-      const double d = in.bond_damage[k * physics::kBondPoints + static_cast<std::size_t>(p)];
-      bond_damage_[k][static_cast<std::size_t>(p)] = static_cast<Real>(d);
-      broken = broken && d >= 1;
-    }
-    bond_broken_[k] = broken ? 1 : 0;
-    bond_dissipated_[k] = in.bond_dissipated[k];
-    bond_result_[k] = physics::BondForce<Real>{};
-  }
+  load_bonds(in, bonds_, description());
 
   history_rows(in, n_, old_pairs_.offset, old_pairs_.partner, old_slip_);
   // The forces of those pairs are not stored: the loaded step reports no contacts.

@@ -30,8 +30,8 @@ std::string cuda_device_description(int device = 0);
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config);
 
-/// Bytes of GPU memory the CUDA solver allocates at start for n particles
-/// (core/memory_estimate.hpp); 0 in a build without CUDA.
-std::size_t cuda_solver_bytes(std::size_t n, Precision precision);
+/// Bytes of GPU memory the CUDA solver allocates at start for n particles and `bonds`
+/// cohesive bonds (core/memory_estimate.hpp); 0 in a build without CUDA.
+std::size_t cuda_solver_bytes(std::size_t n, Precision precision, std::size_t bonds = 0);
 
 }  // namespace tridem

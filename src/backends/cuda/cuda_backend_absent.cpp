@@ -23,6 +23,6 @@ std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, con
   throw RunError(kAbsent);  // make_solver asks cuda_available() first, and says why
 }
 
-std::size_t cuda_solver_bytes(std::size_t, Precision) { return 0; }
+std::size_t cuda_solver_bytes(std::size_t, Precision, std::size_t) { return 0; }
 
 }  // namespace tridem

@@ -1,6 +1,7 @@
 #include "backends/cuda/cuda_solver.cuh"
 
 #include "backends/cuda/body_kernels.cuh"
+#include "backends/cuda/bond_kernels.cuh"
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/step_kernels.cuh"
 #include "broadphase/candidate_pairs.hpp"
@@ -64,13 +65,17 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   device_name_ = prop.name;
   // Refuse before allocating anything: a scene that does not fit says so up front.
   const std::size_t reserve = reserved_pairs(n_);
-  const std::size_t need = gpu_solver_bytes(n_, reserve, scene.simulation.precision);
+  const std::size_t need =
+      gpu_solver_bytes(n_, reserve, scene.simulation.precision, scene.bonds.size());
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
     throw RunError(
         "the scene needs about " + mib(need) + " of GPU memory for " + std::to_string(n_) +
-        " particles, but the GPU (" + device_name_ + ") has " + mib(free_bytes) + " free of " +
+        " particles" +
+        (scene.bonds.empty() ? std::string()
+                             : " and " + std::to_string(scene.bonds.size()) + " bonds") +
+        ", but the GPU (" + device_name_ + ") has " + mib(free_bytes) + " free of " +
         mib(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
         "\", fewer particles, or backend = \"" + std::string(backend_name(Backend::OpenMP)) + "\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
@@ -102,6 +107,8 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     n_bodies_ = model.bodies.size();
     bodies_.upload_initial(model.bodies, n_);
   }
+  if (!scene.bonds.empty())
+    bonds_.upload(initial_bond_columns<Real>(build_bond_model(scene, model)));
 
   const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
@@ -173,30 +180,30 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       *host = {0, INT_MAX, INT_MAX};
       TRIDEM_CUDA_CHECK(
           cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
-      const PairArrays<Real>& q = step_pairs_;
-      if (q.count == 0) return;
-      constexpr int threads = PairKernelShape<Real>::threads;
-      const int grid = (q.count + threads - 1) / threads;
-      if (n_bodies_ > 0)
-        pair_forces_kernel<Real, true>
-            <<<grid, threads, 0, stream_>>>(p, q, params_, status, bodies_.member_body.data());
-      else
-        pair_forces_kernel<Real><<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr);
-      TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+      launch_pair_forces(p, status);
+      if (bonds_.size() > 0) {  // each bond's force, in the same step as the contacts
+        bond_forces_kernel<Real><<<blocks(bonds_.size()), kBlock, 0, stream_>>>(p, bond_arrays());
+        TRIDEM_CUDA_CHECK_LAUNCH("bond_forces_kernel");
+      }
       return;
     }
     case Stage::Gather:  // with the Check stage's runaway test of every particle (body)
       if (n_bodies_ > 0) return gather(p, status);
       gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
-                                                              false);
+                                                              false, bond_arrays());
       TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
       if (has_servos_) {  // a servo's law reads the force on its wall at every step
-        gather_kernel<Real>
-            <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
+        gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
+                                                                true, bond_arrays());
         TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
       }
       return;
     case Stage::Integrate:  // with the Geometry stage of the next step
+      if (bonds_.size() > 0) {  // the step's damage, unless the step is refused
+        commit_bonds_kernel<Real>
+            <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(bond_arrays(), status);
+        TRIDEM_CUDA_CHECK_LAUNCH("commit_bonds_kernel");
+      }
       if (n_bodies_ > 0) return integrate(p, status);
       integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                                  true);
@@ -224,11 +231,34 @@ void CudaSolver<Real>::run_stage(Stage stage) {
   }
 }
 
+template <class Real>
+void CudaSolver<Real>::launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status) {
+  const PairArrays<Real>& q = step_pairs_;
+  if (q.count == 0) return;
+  constexpr int threads = PairKernelShape<Real>::threads;
+  const int grid = (q.count + threads - 1) / threads;
+  const std::int32_t* member_body = bodies_.member_body.data();
+  const physics::BondArrays<Real> bonds = bond_arrays();
+  const bool with_bodies = n_bodies_ > 0, with_bonds = bonds_.size() > 0;
+  if (with_bodies && with_bonds)
+    pair_forces_kernel<Real, true, true>
+        <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
+  else if (with_bodies)
+    pair_forces_kernel<Real, true>
+        <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
+  else if (with_bonds)
+    pair_forces_kernel<Real, false, true>
+        <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
+  else
+    pair_forces_kernel<Real><<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
+  TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+}
+
 // Bodies: the members' sums (free ones), then each free body's, with its runaway test.
 template <class Real>
 void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status) {
   gather_kernel<Real, true>
-      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, false);
+      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, false, bond_arrays());
   TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
   body_gather_kernel<Real>
       <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status, false);
@@ -236,7 +266,7 @@ void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status)
   if (!has_servos_) return;
   // A servo's law reads the force on its body at every step: the walls' sums too.
   gather_kernel<Real, true>
-      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
+      <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true, bond_arrays());
   TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
   body_gather_kernel<Real>
       <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status, true);
@@ -331,7 +361,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   if (step_ > 0) {
     // Walls' forces are summed only here: the time loop does not need them.
     gather_kernel<Real><<<blocks(n), kBlock, 0, stream_>>>(arrays(), pairs_->arrays(), params_,
-                                                           status_.data(), true);
+                                                           status_.data(), true, bond_arrays());
     TRIDEM_CUDA_CHECK_LAUNCH("gather_kernel");
     if (n_bodies_ > 0) {  // and those of fixed and prescribed bodies
       body_gather_kernel<Real><<<blocks(n_bodies_), kBlock, 0, stream_>>>(
@@ -366,6 +396,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   fill_from_model(out, host_model_);
   if (n_bodies_ > 0) bodies_.download(host_bodies_, n_bodies_, n);  // after the sync above
   fill_bodies(out, host_bodies_, n_bodies_);
+  fill_bonds(out, bonds_.download_state());  // after the sync above
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   std::vector<int> offset, partner;
@@ -397,6 +428,19 @@ EnergyBudget CudaSolver<Real>::energy() const {
   }
   EnergyBudget b;
   b.elastic = totals[kEnergyAccumulators];
+  if (bonds_.size() > 0) {  // the CPU's order: the pairs' energy, then the bonds' ascending
+    std::vector<double> bond_sums(bonds_.size());
+    if (results_) {
+      bond_elastic_kernel<Real>
+          <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(bond_arrays(), bonds_.elastic.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("bond_elastic_kernel");
+      TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+      bonds_.elastic.download(bond_sums);
+      for (double v : bond_sums) b.elastic += v;
+    }
+    bonds_.d.dissipated.download(bond_sums);
+    for (double v : bond_sums) b.dissipated_fracture += v;
+  }
   b.dissipated_damping = totals[kDissipatedDamping];
   b.dissipated_friction = totals[kDissipatedFriction];
   b.dissipated_local = totals[kDissipatedLocal];
@@ -473,8 +517,8 @@ std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel
   return std::make_unique<cuda::CudaSolver<double>>(scene, model, ts, config);
 }
 
-std::size_t cuda_solver_bytes(std::size_t n, Precision precision) {
-  return gpu_solver_bytes(n, reserved_pairs(n), precision);
+std::size_t cuda_solver_bytes(std::size_t n, Precision precision, std::size_t bonds) {
+  return gpu_solver_bytes(n, reserved_pairs(n), precision, bonds);
 }
 
 }  // namespace tridem

@@ -4,6 +4,7 @@
 // CPU solver's stages (kPipeline) with the same sums in the same order, so that both
 // agree to rounding and two runs of one scene agree bit for bit.
 #include "backends/cuda/body_buffers.cuh"
+#include "backends/cuda/bond_buffers.cuh"
 #include "backends/cuda/decomposed_rows.cuh"
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/pair_list_builder.cuh"
@@ -60,6 +61,9 @@ class CudaSolver final : public Solver {
  private:
   ParticleArrays<Real> arrays() const { return d_.view(static_cast<int>(n_)); }
   BodyArrays body_arrays() const { return bodies_.view(static_cast<int>(n_bodies_)); }
+  physics::BondArrays<Real> bond_arrays() const { return bonds_.view(); }
+  /// The pair forces of this step, with the filters the scene needs (bodies, bonds).
+  void launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status);
   /// The geometry of the current state (and a rebuild); with `place`, the members placed
   /// on their bodies first (at the start, as CpuSolver's constructor does).
   void update_geometry(bool place = false);
@@ -98,6 +102,9 @@ class CudaSolver final : public Solver {
   std::size_t n_bodies_ = 0;
   BodyBuffers bodies_;
   mutable BodyColumns host_bodies_;  ///< a snapshot's copy of them
+  /// Cohesive bonds (docs/fracture.md; empty without): computed with the pair forces,
+  /// added by the gather after the pairs, their damage written with the step.
+  BondBuffers<Real> bonds_;
   std::unique_ptr<PairListBuilder<Real>> pairs_;
   /// method = decomposition: the pair list is built by sub-domain, every step.
   std::unique_ptr<DecomposedRows<Real>> decomposed_;

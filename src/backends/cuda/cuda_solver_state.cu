@@ -28,12 +28,18 @@ void CudaSolver<Real>::save_state(SolverState& out) const {
   std::vector<physics::PairSlip<Real>> slip;
   pairs_->download(offset, partner, &slip, nullptr);
   append_history(out, n_, offset.data(), partner.data(), slip.data());
+  // Bonds: each point's damage and the energy released, as the CPU saves them.
+  save_bonds(out, bonds_.download_state());
 }
 
 template <class Real>
 void CudaSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, n_bodies_, description());
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  // Bonds: validated and read as the CPU reads them (broken where every point is fully
+  // damaged, no result until the next step), then uploaded.
+  load_bonds(in, bonds_.host, description());
+  bonds_.upload_state();
   // An empty Sum reads as zeros. Forces are recomputed by the next step; until then
   // nothing stale is shown.
   SolverState::for_each_field([&](auto field) {

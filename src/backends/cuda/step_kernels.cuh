@@ -6,6 +6,7 @@
 #include "backends/cuda/device_views.cuh"
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
+#include "physics/bond_step.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/integrate.hpp"
 #include "physics/local_frame.hpp"
@@ -43,16 +44,20 @@ struct PairKernelShape<float> {
 
 /// kBodies: a scene with bodies of several triangles, whose members of one body
 /// (`member_body`) add exact zeros and keep no history (physics::same_body, as on the CPU);
-/// a scene without them compiles the kernel without the filter.
-template <class Real, bool kBodies = false>
+/// kBonds: a bonded scene, whose pairs an intact bond holds (`bonds`, physics::
+/// intact_bond_between: the bond carries them) add exact zeros and keep no history too. A
+/// scene without them compiles the kernel without the filter.
+template <class Real, bool kBodies = false, bool kBonds = false>
 __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
     pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
-                       StepStatus* status, const std::int32_t* member_body) {
+                       StepStatus* status, const std::int32_t* member_body,
+                       physics::BondArrays<Real> bonds) {
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
-  if constexpr (kBodies) {
-    if (physics::same_body(member_body, e, j)) {
+  if constexpr (kBodies || kBonds) {
+    if ((kBodies && physics::same_body(member_body, e, j)) ||
+        (kBonds && physics::intact_bond_between(bonds, e, j))) {
       q.load[s] = physics::PairLoad<Real>{};
       if (sp.details) q.detail[s] = physics::PairDetail<Real>{};
       q.slip[s] = physics::PairSlip<Real>{};
@@ -90,15 +95,18 @@ __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>
 /// (the state is not written yet). With `prescribed`, sums those of the other particles
 /// instead: only output needs them (wall forces), and walls can touch thousands of grains.
 /// kBodies: the particles are members of bodies, whose runaway test is their body's
-/// (body_kernels.cuh), so none is made here.
+/// (body_kernels.cuh), so none is made here. With bonds (bonds.count > 0), each particle adds
+/// its bonds' loads after its pairs' (bond_kernels.cuh computed them), as the CPU does.
 template <class Real, bool kBodies = false>
 __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
-                              StepStatus* status, bool prescribed) {
+                              StepStatus* status, bool prescribed,
+                              physics::BondArrays<Real> bonds) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n || (p.free[i] != 0) == prescribed) return;
   Vec2<Real> f;
   Real t;
   sum_pair_forces(i, q.offset, q.reverse_offset, q.reverse_slot, q.load, f, t);
+  if (bonds.count > 0) physics::add_bond_loads(bonds, i, f, t);
   p.fx[i] = f.x;
   p.fy[i] = f.y;
   p.torque[i] = t;
