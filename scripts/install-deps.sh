@@ -26,6 +26,9 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   chromium chromium-driver python3-selenium ffmpeg
 # The frames' check with VTK's own readers (tests/paraview).
 $SUDO apt-get install -y -qq --no-install-recommends python3-vtk9
+# The experiments' curves and pictures (scripts/biaxial_curves.py, shear_flow_mu_i.py,
+# drum_angle.py, hopper_gate_plot.py; docs/experiments.md).
+$SUDO apt-get install -y -qq --no-install-recommends python3-numpy python3-matplotlib
 # The fuzz build (scripts/run-fuzzers.sh): clang with libFuzzer and its sanitizer
 # runtimes, and clang's OpenMP.
 $SUDO apt-get install -y -qq --no-install-recommends \

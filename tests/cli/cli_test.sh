@@ -51,7 +51,7 @@ grep -q "triangle-steps/s" out.txt || fail "run does not print the summary"
 [ "$(head -1 pile_out/bodies.csv)" = "id,x,y,theta,vx,vy,omega,mass,inertia,members" ] || fail "bodies.csv header"
 [ "$(wc -l <pile_out/bodies.csv)" = "$(wc -l <pile_out/final.csv)" ] || fail "bodies.csv: not one row per triangle without bodies"
 [ "$(head -1 pile_out/energy.csv)" = "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,dissipated_damping,dissipated_friction,dissipated_local,wall_work,total,dissipated_fracture" ] || fail "energy.csv header"
-[ "$(head -1 pile_out/walls.csv)" = "step,time,id,fx,fy,torque" ] || fail "walls.csv header"
+[ "$(head -1 pile_out/walls.csv)" = "step,time,id,fx,fy,torque,x,y,vx,vy" ] || fail "walls.csv header"
 [ "$(cut -d, -f1 pile_out/energy.csv | tail -n +2 | tr '\n' ' ')" = "0 100 200 " ] || fail "energy.csv steps"
 for f in frames/frame_000000000.vtu frames/frame_000000100.vtu frames/frame_000000200.vtu tridem.pvd \
          contacts/contacts_000000200.csv; do

@@ -27,8 +27,8 @@ void write_wall_rows(OutFile& out, const Snapshot& s) {
   check_snapshot(s, out.path().string());
   for (std::size_t k = 0; k < s.size(); ++k)
     if (s.motion[k] != Motion::Free)
-      out.print("{},{:.17g},{},{:.17g},{:.17g},{:.17g}\n", s.step, s.time, k, s.fx[k], s.fy[k],
-                s.torque[k]);
+      out.print("{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", s.step,
+                s.time, k, s.fx[k], s.fy[k], s.torque[k], s.x[k], s.y[k], s.vx[k], s.vy[k]);
 }
 
 }  // namespace tridem::io

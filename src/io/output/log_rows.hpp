@@ -12,7 +12,9 @@ namespace tridem::io {
 inline constexpr std::string_view kEnergyHeader =
     "step,time,kinetic,momentum_x,momentum_y,angular_momentum,potential,elastic,"
     "dissipated_damping,dissipated_friction,dissipated_local,wall_work,total,dissipated_fracture\n";
-inline constexpr std::string_view kWallsHeader = "step,time,id,fx,fy,torque\n";
+// walls.csv: x, y, vx, vy (the wall's centroid and velocity, issue 15's strains) came after
+// torque; columns are only ever added at the end.
+inline constexpr std::string_view kWallsHeader = "step,time,id,fx,fy,torque,x,y,vx,vy\n";
 inline constexpr std::string_view kBondsHeader =
     "step,time,intact,damaged,broken,fracture_energy\n";
 
@@ -26,7 +28,8 @@ void write_energy_row(OutFile&, const EnergyRow&);
 
 void write_measure_row(OutFile&, const Measurement&);
 
-/// One row per fixed or prescribed particle: the contact force and torque on it.
+/// One row per fixed or prescribed particle: the contact force and torque on it, then its
+/// centroid and velocity (where a servo or programmed wall is: a sample's strain).
 void write_wall_rows(OutFile&, const Snapshot&);
 
 /// bonds.csv's row: the bonds intact (no damage), damaged (some, not broken) and broken,

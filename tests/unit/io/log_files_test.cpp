@@ -62,15 +62,35 @@ TEST(LogFiles, WallsCsvHasRowsOnlyForNonFreeParticles) {
 
   const auto lines = test::read_lines(tmp.path() / "walls.csv");
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[0], "step,time,id,fx,fy,torque");
+  // The first six columns are the first version's contract; the wall's place came after.
+  EXPECT_EQ(lines[0], "step,time,id,fx,fy,torque,x,y,vx,vy");
   const std::size_t ids[] = {1, 2, 1, 2};
   for (std::size_t r = 0; r < 4; ++r) {
     const std::size_t k = ids[r];
     EXPECT_EQ(test::numbers(lines[1 + r]),
               (std::vector<double>{r < 2 ? 1200.0 : 1300.0, s.time, double(k), s.fx[k], s.fy[k],
-                                   s.torque[k]}))
+                                   s.torque[k], s.x[k], s.y[k], s.vx[k], s.vy[k]}))
         << "row " << r;
   }
+}
+
+TEST(LogFiles, WallsCsvEndsWithTheWallsCentroidAndVelocity) {
+  test::TempDir tmp;
+  Snapshot s = test::sample_snapshot();
+  s.motion[0] = Motion::Prescribed;
+  s.x[0] = 0.125;
+  s.y[0] = -2.5;
+  s.vx[0] = 0.75;
+  s.vy[0] = -0.0625;
+  OutputSet out(OutputSettings{}, tmp.path());
+  out.log(s);
+  const auto lines = test::read_lines(tmp.path() / "walls.csv");
+  ASSERT_GE(lines.size(), 2u);
+  const std::vector<double> row = test::numbers(lines[1]);
+  ASSERT_EQ(row.size(), 10u);
+  EXPECT_EQ(row[2], 0.0);  // the wall's id
+  EXPECT_EQ((std::vector<double>(row.begin() + 6, row.end())),
+            (std::vector<double>{0.125, -2.5, 0.75, -0.0625}));
 }
 
 }  // namespace
