@@ -57,7 +57,8 @@ TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* 
                                       WallVelocity&& wall_velocity, bool free,
                                       const physics::Pose<double>& before,
                                       const physics::Pose<double>& after, Vec2<Real> f, Real m,
-                                      double inv_mass, Vec2d g, double alpha, double dt) {
+                                      double inv_mass, double inv_inertia, Vec2d g, double alpha,
+                                      double dt) {
   const RowEnergy row = row_energy(i, offset, partner, result, wall_velocity, dt);
   sums[kDissipatedDamping][i] += row.damping;
   sums[kDissipatedFriction][i] += row.friction;
@@ -65,7 +66,7 @@ TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* 
   if (free && alpha > 0)
     sums[kDissipatedLocal][i] += physics::local_damping_dissipation(
         before, after, Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)},
-        static_cast<double>(m), inv_mass, g, alpha, dt);
+        static_cast<double>(m), inv_mass, inv_inertia, g, alpha, dt);
 }
 
 }  // namespace tridem

@@ -7,10 +7,23 @@
 
 namespace tridem::physics {
 
+/// A velocity component this many times smaller than the change the step's force makes
+/// in it counts as at rest for local damping.
+inline constexpr double kDampingRestRatio = 1e-9;
+
+/// Cundall's damping of one component: the force less α|F| along the velocity's sign.
+/// `response` is the component's velocity change per unit force in one step (inv_mass·dt,
+/// or inv_inertia·dt). A velocity below kDampingRestRatio of the step's change counts as
+/// at rest (no damping), as v = 0 does: a grain that starts from rest carries velocities of
+/// rounding noise (1e-13 m/s against the 0.4 m/s a platen's first contact gives it), whose
+/// sign would otherwise decide ±α of that force, and differ between backends that round
+/// differently (docs/model.md, "Local damping").
 template <class Real>
-TRIDEM_HD inline Real local_damping(Real force, Real velocity, Real alpha) {
-  const Real sign = velocity > Real(0) ? Real(1) : (velocity < Real(0) ? Real(-1) : Real(0));
-  return force - alpha * (force < Real(0) ? -force : force) * sign;
+TRIDEM_HD inline Real local_damping(Real force, Real velocity, Real alpha, Real response) {
+  const Real magnitude = force < Real(0) ? -force : force;
+  const Real speed = velocity < Real(0) ? -velocity : velocity;
+  if (!(speed > static_cast<Real>(kDampingRestRatio) * magnitude * response)) return force;
+  return force - alpha * magnitude * (velocity > Real(0) ? Real(1) : Real(-1));
 }
 
 template <class Real>
@@ -28,8 +41,10 @@ TRIDEM_HD inline void integrate_free(Pose<Real>& p, Vec2<Real> f, Real m, Real i
   const Real mass = Real(1) / inv_mass;
   Vec2<Real> total = f + g * mass;
   if (alpha > Real(0)) {
-    total = {local_damping(total.x, p.v.x, alpha), local_damping(total.y, p.v.y, alpha)};
-    m = local_damping(m, p.w, alpha);
+    const Real linear = inv_mass * dt, angular = inv_inertia * dt;
+    total = {local_damping(total.x, p.v.x, alpha, linear),
+             local_damping(total.y, p.v.y, alpha, linear)};
+    m = local_damping(m, p.w, alpha, angular);
   }
   p.v += total * (inv_mass * dt);
   p.w += m * inv_inertia * dt;
@@ -44,12 +59,14 @@ TRIDEM_HD inline void integrate_free(Pose<Real>& p, Vec2<Real> f, Real m, Real i
 template <class Real>
 TRIDEM_HD inline Real local_damping_dissipation(const Pose<Real>& before, const Pose<Real>& after,
                                                 Vec2<Real> f, Real m, Real inv_mass,
-                                                Vec2<Real> g, Real alpha, Real dt) {
+                                                Real inv_inertia, Vec2<Real> g, Real alpha,
+                                                Real dt) {
   if (!(alpha > Real(0))) return Real(0);
   const Vec2<Real> total = f + g * (Real(1) / inv_mass);
-  const Real fx = total.x - local_damping(total.x, before.v.x, alpha);
-  const Real fy = total.y - local_damping(total.y, before.v.y, alpha);
-  const Real mz = m - local_damping(m, before.w, alpha);
+  const Real linear = inv_mass * dt, angular = inv_inertia * dt;
+  const Real fx = total.x - local_damping(total.x, before.v.x, alpha, linear);
+  const Real fy = total.y - local_damping(total.y, before.v.y, alpha, linear);
+  const Real mz = m - local_damping(m, before.w, alpha, angular);
   const Real half_dt = Real(0.5) * dt;
   return (fx * (before.v.x + after.v.x) + fy * (before.v.y + after.v.y) +
           mz * (before.w + after.w)) * half_dt;

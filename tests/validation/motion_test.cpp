@@ -56,9 +56,22 @@ TEST_P(MotionTest, PrescribedWallFollowsItsVelocityAndPushesAGrain) {
 }
 
 TEST(Motion, LocalDampingOpposesVelocityByAFractionOfTheForce) {
-  EXPECT_DOUBLE_EQ(physics::local_damping(10.0, 1.0, 0.3), 7.0);    // force along v: less
-  EXPECT_DOUBLE_EQ(physics::local_damping(-10.0, 1.0, 0.3), -13.0); // against v: more
-  EXPECT_DOUBLE_EQ(physics::local_damping(10.0, 0.0, 0.3), 10.0);   // at rest: unchanged
+  EXPECT_DOUBLE_EQ(physics::local_damping(10.0, 1.0, 0.3, 0.01), 7.0);     // force along v: less
+  EXPECT_DOUBLE_EQ(physics::local_damping(-10.0, 1.0, 0.3, 0.01), -13.0);  // against v: more
+  EXPECT_DOUBLE_EQ(physics::local_damping(10.0, 0.0, 0.3, 0.01), 10.0);    // at rest: unchanged
+}
+
+// A velocity of rounding noise beside the step's change (force 1e5 N/m, 0.4 m/s in one
+// step) is rest: its sign does not decide +-alpha of the force. Just above the ratio, it
+// does.
+TEST(Motion, LocalDampingTreatsANoiseVelocityAsRest) {
+  const double response = 4e-6;  // m/s per N/m in one step: 1e5 N/m gives 0.4 m/s
+  const double change = 1e5 * response;
+  for (double noise : {1e-13, -1e-13, 0.5 * physics::kDampingRestRatio * change})
+    EXPECT_DOUBLE_EQ(physics::local_damping(-1e5, noise, 0.2, response), -1e5) << noise;
+  const double moving = 2 * physics::kDampingRestRatio * change;
+  EXPECT_DOUBLE_EQ(physics::local_damping(-1e5, moving, 0.2, response), -1.2e5);
+  EXPECT_DOUBLE_EQ(physics::local_damping(-1e5, -moving, 0.2, response), -0.8e5);
 }
 
 TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {

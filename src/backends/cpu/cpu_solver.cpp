@@ -425,8 +425,8 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
   };
   tridem::add_step_energy(energy_, static_cast<std::int64_t>(i), pairs_.offset.data(),
                           pairs_.partner.data(), result_.data(), wall_velocity, free, before, after,
-                          Vec2<Real>{fx_[i], fy_[i]}, torque_[i], inv_mass_[i], gravity_,
-                          local_damping_, dt_);
+                          Vec2<Real>{fx_[i], fy_[i]}, torque_[i], inv_mass_[i], inv_inertia_[i],
+                          gravity_, local_damping_, dt_);
   if (!image_power_.empty()) energy_[kWallWork][i] += image_power_[i] * dt_;
 }
 
@@ -497,8 +497,8 @@ void CpuSolver<Real>::integrate_bodies() {
     if (free && local_damping_ > 0)  // the body's, booked on its first member
       energy_[kDissipatedLocal][static_cast<std::size_t>(body_first_[b])] +=
           physics::local_damping_dissipation(before, after, Vec2d{body_fx_[b], body_fy_[b]},
-                                             body_torque_[b], body_inv_mass_[b], gravity_,
-                                             local_damping_, dt_);
+                                             body_torque_[b], body_inv_mass_[b],
+                                             body_inv_inertia_[b], gravity_, local_damping_, dt_);
     // The members follow their wrapped body (place_members), so a body is never cut.
     if (periodic_ && free)
       wrap(frame, after, body_inv_mass_[b], static_cast<std::size_t>(body_first_[b]));

@@ -78,7 +78,7 @@ __global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, Step
   if (free && sp.local_damping > 0)
     p.energy[kDissipatedLocal][b.body_first[k]] += physics::local_damping_dissipation(
         before, after, Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k], b.body_inv_mass[k],
-        sp.gravity, sp.local_damping, sp.dt);
+        b.body_inv_inertia[k], sp.gravity, sp.local_damping, sp.dt);
   b.body_x[k] = after.c.x;
   b.body_y[k] = after.c.y;
   b.body_theta[k] = after.theta;

@@ -153,7 +153,7 @@ __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const Pair
   double* const* sums = p.energy;
   tridem::add_step_energy(sums, i, q.offset, q.partner, q.load, wall_velocity, is_free, before,
                           after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
-                          sp.gravity, sp.local_damping, sp.dt);
+                          p.inv_inertia[i], sp.gravity, sp.local_damping, sp.dt);
 }
 
 /// Writes the advanced state (unless some particle ran away or some pair overlaps too
