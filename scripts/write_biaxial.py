@@ -113,10 +113,12 @@ def main():
     p.add_argument("--seed", type=int, default=SEED, help="the grains' draws")
     p.add_argument("--dest", default=os.path.join(tx.ROOT, "examples"),
                    help="folder of biaxial.toml and biaxial_grains.csv")
+    p.add_argument("--scale", type=float, default=1.0, help="the sample's sides, x WIDTH, HEIGHT")
     a = p.parse_args()
-    name = "biaxial_prepare" if a.seed == SEED else f"biaxial_prepare_seed{a.seed}"
+    name = "biaxial_prepare" + ("" if a.seed == SEED else f"_seed{a.seed}") + \
+        ("" if a.scale == 1 else f"_scale{a.scale:g}")
     out = os.path.join(tx.ROOT, "out", name)
-    prepare(out, seed=a.seed)
+    prepare(out, WIDTH * a.scale, HEIGHT * a.scale, a.seed)
     os.makedirs(a.dest, exist_ok=True)
     shifted, w, h = tx.packing_at_origin(tx.read_csv(os.path.join(out, "final.csv")))
     d = 0.5 * (SIZES[0] + SIZES[1])
