@@ -14,7 +14,6 @@ axial eps_a = 1 - H/H0, volumetric eps_v = 1 - (W H)/(W0 H0) (contraction positi
 sin(phi_mob) = (sigma_1 - sigma_3) / (sigma_1 + sigma_3).
 """
 import argparse
-import math
 import os
 
 import numpy as np

@@ -45,8 +45,7 @@ def shrunk(rows, scale2, height):
     for members in bodies.values():
         area = cx = cy = 0.0
         for r in members:
-            a = 0.5 * abs((r["x2"] - r["x1"]) * (r["y3"] - r["y1"])
-                          - (r["x3"] - r["x1"]) * (r["y2"] - r["y1"]))
+            a = tx.triangle_area(r)
             area += a
             cx += a * (r["x1"] + r["x2"] + r["x3"]) / 3
             cy += a * (r["y1"] + r["y2"] + r["y3"]) / 3
@@ -65,9 +64,7 @@ def grain_size(rows):
     """Mean equal-area diameter of the bodies, m."""
     areas = {}
     for r in rows:
-        a = 0.5 * abs((r["x2"] - r["x1"]) * (r["y3"] - r["y1"])
-                      - (r["x3"] - r["x1"]) * (r["y2"] - r["y1"]))
-        areas[r["body"]] = areas.get(r["body"], 0.0) + a
+        areas[r["body"]] = areas.get(r["body"], 0.0) + tx.triangle_area(r)
     return float(np.mean([2 * math.sqrt(a / math.pi) for a in areas.values()]))
 
 
@@ -75,8 +72,7 @@ def packing_fraction(grains, w, h):
     """The grains' area over the cell's: the packing fraction the run keeps (constant
     volume). measure_cell.csv's is lower: it counts only the parts of triangles inside the
     cell, and a body's members may lie outside it (it wraps by its centroid)."""
-    return sum(0.5 * abs((r["x2"] - r["x1"]) * (r["y3"] - r["y1"])
-                         - (r["x3"] - r["x1"]) * (r["y2"] - r["y1"])) for r in grains) / (w * h)
+    return sum(tx.triangle_area(r) for r in grains) / (w * h)
 
 
 def write(scale2, scene_path, grains_path, out_dir):
