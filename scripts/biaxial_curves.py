@@ -2,7 +2,10 @@
 """The curves of a biaxial test (examples/biaxial.toml) from its walls.csv: axial strain,
 volumetric strain, stress ratio and the mobilised friction angle, its peak and its late-stage
 mean; whether the late stage is at critical state (the volume no longer changing).
-    scripts/biaxial_curves.py [OUT_DIR] [--png docs/images/biaxial.png] [--target 1e4]
+    scripts/biaxial_curves.py [OUT_DIR ...] [--png docs/images/biaxial.png] [--target 1e4]
+With several output folders (samples of other seeds: scripts/write_biaxial.py --seed N),
+each is summarised, the plot draws them all (the first in colour) and the last lines give
+the samples' mean and spread.
 
 Stresses are the walls' (frictionless, so principal): sigma_1 = the top and bottom walls'
 mean normal force over the box's current width, sigma_3 = the side walls' over its current
@@ -11,7 +14,6 @@ axial eps_a = 1 - H/H0, volumetric eps_v = 1 - (W H)/(W0 H0) (contraction positi
 sin(phi_mob) = (sigma_1 - sigma_3) / (sigma_1 + sigma_3).
 """
 import argparse
-import math
 import os
 
 import numpy as np
@@ -63,30 +65,36 @@ def summary(c, target, late_from=2 / 3):
     }
 
 
-def plot(c, s, png):
+def plot(c, s, png, others=()):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
     e = 100 * c["eps_a"]
-    ax[0].plot(e, c["phi"], lw=0.6, color="0.6", label="each row")
-    ax[0].plot(e, smooth(c["phi"], 5), color="C0", label="running mean (5 rows)")
+    for k, o in enumerate(others):
+        label = f"{len(others)} other samples" if k == 0 else None
+        ax[0].plot(100 * o["eps_a"], smooth(o["phi"], 5), lw=0.7, color="0.75", label=label)
+        ax[1].plot(100 * o["eps_a"], 100 * o["eps_v"], lw=0.7, color="0.75", label=label)
+    ax[0].plot(e, smooth(c["phi"], 5), color="C0", label="the example (running mean, 5 rows)")
     ax[0].axhline(s["late_phi_mean"], color="C3", ls="--",
-                  label=f"late mean {s['late_phi_mean']:.1f}°")
+                  label=f"its late mean {s['late_phi_mean']:.1f}°")
     ax[0].plot(100 * s["peak_eps_a"], s["peak_phi"], "o", color="C1",
-               label=f"peak {s['peak_phi']:.1f}°")
+               label=f"its peak {s['peak_phi']:.1f}°")
     ax[0].set_xlabel("axial strain ε_a (%)")
     ax[0].set_ylabel("mobilised friction angle φ (°)")
-    ax[0].legend(fontsize=8)
-    ax[1].plot(e, 100 * c["eps_v"], color="C2")
+    ax[0].legend(fontsize=7, loc="lower right")
+    ax[1].plot(e, 100 * c["eps_v"], color="C2", label="the example")
     ax[1].set_xlabel("axial strain ε_a (%)")
     ax[1].set_ylabel("volumetric strain ε_v (%, contraction +)")
     ax[1].axhline(0, color="0.8", lw=0.5)
+    ax[1].legend(fontsize=7)
     ax[2].plot(e, c["s1"] / s["s3_target"], label="σ1 (top, bottom)")
-    ax[2].plot(e, c["s3"] / s["s3_target"], label="σ3 (sides)")
+    ax[2].plot(e, c["s3"] / s["s3_target"], label="σ3 (sides): force / current height")
+    ax[2].plot(e, c["s3"] * c["h"] / c["h"][0] / s["s3_target"], ls=":",
+               label="σ3 × H/H0: what the servo holds")
     ax[2].set_xlabel("axial strain ε_a (%)")
     ax[2].set_ylabel(f"stress / confining target {s['s3_target']:g} Pa")
-    ax[2].legend(fontsize=8)
+    ax[2].legend(fontsize=7)
     for a in ax:
         a.grid(alpha=0.3)
     fig.suptitle("Biaxial test of angular grains at constant confining stress "
@@ -95,15 +103,8 @@ def plot(c, s, png):
     fig.savefig(png, dpi=110)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("out", nargs="?", default=os.path.join(tx.ROOT, "out", "biaxial"))
-    p.add_argument("--png", default=None, help="plot to this PNG (e.g. docs/images/biaxial.png)")
-    p.add_argument("--target", type=float, default=1e4, help="the servos' stress, Pa")
-    a = p.parse_args()
-    c = curves(a.out)
-    s = summary(c, a.target)
-    print(f"rows {len(c['time'])}, axial strain to {100 * s['eps_end']:.2f} %")
+def report(s):
+    print(f"axial strain to {100 * s['eps_end']:.2f} %")
     print(f"peak friction angle {s['peak_phi']:.2f} deg at axial strain "
           f"{100 * s['peak_eps_a']:.2f} %")
     print(f"late stage (axial strain {100 * s['late_from']:.1f}-{100 * s['eps_end']:.1f} %): "
@@ -113,9 +114,28 @@ def main():
           f"{s['late_dilatancy']:.3f} (0 at critical state; negative: still dilating)")
     print(f"confining stress sigma_3 (force / current height): mean {s['s3_mean']:.4g} Pa, "
           f"range {s['s3_min']:.4g}-{s['s3_max']:.4g} (target {s['s3_target']:g}); "
-          f"force / initial height: mean {s['s3_force_mean']:.4g}")
+          f"force / initial height (what the servos hold): mean {s['s3_force_mean']:.4g}")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("out", nargs="*", default=[os.path.join(tx.ROOT, "out", "biaxial")])
+    p.add_argument("--png", default=None, help="plot to this PNG (e.g. docs/images/biaxial.png)")
+    p.add_argument("--target", type=float, default=1e4, help="the servos' stress, Pa")
+    a = p.parse_args()
+    samples = [curves(out) for out in a.out]
+    sums = [summary(c, a.target) for c in samples]
+    for out, s in zip(a.out, sums):
+        print(f"== {out}")
+        report(s)
+    if len(sums) > 1:
+        for key, what in (("peak_phi", "peak friction angle"),
+                          ("late_phi_mean", "late-stage friction angle")):
+            v = np.array([s[key] for s in sums])
+            print(f"{len(v)} samples: {what} {v.mean():.2f} +- {v.std():.2f} deg "
+                  f"(mean, std of samples; {v.min():.2f}-{v.max():.2f})")
     if a.png:
-        plot(c, s, a.png)
+        plot(samples[0], sums[0], a.png, samples[1:])
         print("wrote", a.png)
 
 

@@ -21,8 +21,9 @@ def tridem_binary():
 
 
 def run(scene, out, *extra):
-    """Runs a scene on the serial CPU solver into `out` (quiet) and returns nothing; a failed
-    run stops the script with tridem's message."""
+    """Runs a scene into `out` without a progress bar (extra: more options, such as
+    --backend cpu) and returns what tridem printed; a failed run stops the script with
+    tridem's message."""
     cmd = [tridem_binary(), "run", scene, "--out", out, "--quiet", *extra]
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
@@ -96,6 +97,12 @@ def packing_at_origin(final, first_grain=4):
     w, h = v[:, 0::2].max() + 1e-7, v[:, 1::2].max() + 1e-7
     rows = [dict(zip(corners, r), body=int(b)) for r, b in zip(v, final["body"][keep])]
     return rows, w, h
+
+
+def triangle_area(r):
+    """The area of an [[import]] CSV row's triangle (a dict with x1..y3)."""
+    return 0.5 * abs((r["x2"] - r["x1"]) * (r["y3"] - r["y1"])
+                     - (r["x3"] - r["x1"]) * (r["y2"] - r["y1"]))
 
 
 def write_grains_csv(path, rows, extra=()):

@@ -17,7 +17,8 @@ PITCH = 0.0115         # lattice spacing of the grains' centres (> the largest g
 FILL_TOP = 0.01        # grains below this height (drum centre at 0), m
 DURATION = 2.1         # simulated time, s
 SAFETY = 0.9           # of the per-body critical step
-FRAME_EVERY = 25000    # steps between frames (about 9e-6 s each)
+FRAME_EVERY = 2500     # steps between frames (about 9e-6 s each): 0.02 s, for the
+                       # surface angle over time (scripts/drum_angle.py)
 
 rnd = random.Random(SEED)
 

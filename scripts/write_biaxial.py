@@ -37,7 +37,7 @@ GAIN_TEST = 4e-4                 # how to choose); while testing: the side walls
 MAX_SPEED = 0.05                 # m/s, while testing
 PREPARE_SPEED = 0.1              # m/s, the top wall while consolidating; the side walls at
                                  # the speed that closes the box in the same time
-PREPARE_TIME = 1.0               # s
+PREPARE_TIME = 1.0               # s, for the example's size (longer in proportion for a larger box)
 SAFETY = 0.9                     # of the per-body critical step (docs/model.md)
 
 MATERIALS = f"""[[material]]
@@ -73,7 +73,7 @@ def prepare(out, width=WIDTH, height=HEIGHT, seed=SEED):
         tx.TOP: servo("[0, -1]", width, PREPARE_SPEED, GAIN)})
     scene = f"""# Consolidation of the biaxial sample (scripts/write_biaxial.py writes and runs it).
 [simulation]
-time = {PREPARE_TIME}
+time = {PREPARE_TIME * max(1.0, height / HEIGHT):g}
 safety = {SAFETY}
 local_damping = 0.3
 
@@ -113,10 +113,12 @@ def main():
     p.add_argument("--seed", type=int, default=SEED, help="the grains' draws")
     p.add_argument("--dest", default=os.path.join(tx.ROOT, "examples"),
                    help="folder of biaxial.toml and biaxial_grains.csv")
+    p.add_argument("--scale", type=float, default=1.0, help="the sample's sides, x WIDTH, HEIGHT")
     a = p.parse_args()
-    name = "biaxial_prepare" if a.seed == SEED else f"biaxial_prepare_seed{a.seed}"
+    name = "biaxial_prepare" + ("" if a.seed == SEED else f"_seed{a.seed}") + \
+        ("" if a.scale == 1 else f"_scale{a.scale:g}")
     out = os.path.join(tx.ROOT, "out", name)
-    prepare(out, seed=a.seed)
+    prepare(out, WIDTH * a.scale, HEIGHT * a.scale, a.seed)
     os.makedirs(a.dest, exist_ok=True)
     shifted, w, h = tx.packing_at_origin(tx.read_csv(os.path.join(out, "final.csv")))
     d = 0.5 * (SIZES[0] + SIZES[1])
