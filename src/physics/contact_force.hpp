@@ -267,7 +267,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   }
   // Sums over the loaded edges of both roles.
   Real total_integral = 0, total_stiffness = 0, total_shape = 0;
-  Real phi_moment = 0, twice_area = 0;  // for the stored energy (see elastic_energy)
+  Real phi_moment = 0;                      // for the stored energy (see elastic_energy)
   Real kxx = 0, kxy = 0, kyx = 0, kyy = 0;  // Σ n ⊗ gradient: the normal stiffness over p
   Vec2<Real> point_moment{};
   TRIDEM_UNROLL
@@ -298,10 +298,8 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       kyx += normal.y * load.gradient.x;
       kyy += normal.y * load.gradient.y;
       // ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] (divergence of φ·(x − c_T), which is
-      // 3φ − 1 inside T); |Ω| = ½ Σ cross over the boundary pieces of both roles, taken
-      // about a.c so that large coordinates cancel before the product.
+      // 3φ − 1 inside T): the pieces of T's own edges, where φ_T = 0, add nothing.
       phi_moment += load.integral * dot(normal, load.point - t.c);
-      twice_area += cross(load.q0 - a.c, load.q1 - a.c);
     }
   }
   if (!(total_integral > Real(0))) {
@@ -379,6 +377,12 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   out.force_a += extra;
   out.torque_a += cross(r - a.c, extra);
   out.torque_b -= cross(r - b.c, extra);
+  // Both roles' integrals: (1/3)[Σ I·n·(point − c_T) over both + 2|Ω|]. |Ω| from the
+  // triangles themselves, not from the loaded pieces: a piece along the other's edge (the
+  // collinear sides of lattice neighbours) has no load, and a sum of the loaded pieces'
+  // cross products left it out, so that the area depended on the origin (a pair sharing a
+  // vertex stored -96 J/m where the same pair turned the other way stored 0.0004 J/m).
+  const Real twice_area = Real(2) * overlap_area(a.tri, b.tri, a.c);
   out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
   return out;
 }

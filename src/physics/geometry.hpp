@@ -145,6 +145,42 @@ TRIDEM_HD inline bool direct_area_overlap(const Triangle<Real>& a, const Triangl
   return false;
 }
 
+/// Area of the intersection of two counter-clockwise triangles (Sutherland-Hodgman: a
+/// clipped by b's three edges), computed about `origin` so that large coordinates cancel
+/// before the products. Continuous in the vertices, collinear and shared edges included.
+template <class Real>
+TRIDEM_HD inline Real overlap_area(const Triangle<Real>& a, const Triangle<Real>& b,
+                                   Vec2<Real> origin) {
+  // A triangle clipped by three half-planes has at most six vertices.
+  Vec2<Real> poly[2][6];
+  int count = 3;
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) poly[0][k] = a.v[k] - origin;
+  int from = 0;
+  TRIDEM_UNROLL
+  for (int e = 0; e < 3; ++e) {
+    const Vec2<Real> p0 = b.v[e] - origin, d = b.v[(e + 1) % 3] - b.v[e];
+    const Vec2<Real>* in = poly[from];
+    Vec2<Real>* out = poly[1 - from];
+    int kept = 0;
+    for (int k = 0; k < count; ++k) {
+      const Vec2<Real> p = in[k], q = in[(k + 1) % count];
+      const Real fp = cross(d, p - p0), fq = cross(d, q - p0);
+      if (fp >= Real(0) && kept < 6) out[kept++] = p;
+      if (((fp >= Real(0)) != (fq >= Real(0))) && kept < 6) {
+        const Real t = fp / (fp - fq);
+        out[kept++] = p + (q - p) * t;
+      }
+    }
+    count = kept;
+    from = 1 - from;
+    if (count < 3) return Real(0);
+  }
+  Real twice = 0;
+  for (int k = 0; k < count; ++k) twice += cross(poly[from][k], poly[from][(k + 1) % count]);
+  return twice > Real(0) ? Real(0.5) * twice : Real(0);
+}
+
 /// Narrows [t0, t1] to where f0 + t·fd >= 0 (a signed area along a segment, linear in t);
 /// false when nothing of positive length is left. Three of these clip a segment to a
 /// triangle.
