@@ -577,6 +577,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   fill_from_model(out, *this);
   fill_bodies(out, *this, n_bodies_);
   fill_bonds(out, bonds_);
+  out.periodic = cell_;
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
