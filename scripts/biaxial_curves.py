@@ -91,7 +91,7 @@ def plot(c, s, png, others=()):
     ax[2].plot(e, c["s1"] / s["s3_target"], label="σ1 (top, bottom)")
     ax[2].plot(e, c["s3"] / s["s3_target"], label="σ3 (sides): force / current height")
     ax[2].plot(e, c["s3"] * c["h"] / c["h"][0] / s["s3_target"], ls=":",
-               label="σ3 × H/H0: what the servo holds")
+               label="σ3 × H/H0: force / initial height")
     ax[2].set_xlabel("axial strain ε_a (%)")
     ax[2].set_ylabel(f"stress / confining target {s['s3_target']:g} Pa")
     ax[2].legend(fontsize=7)
@@ -114,7 +114,7 @@ def report(s):
           f"{s['late_dilatancy']:.3f} (0 at critical state; negative: still dilating)")
     print(f"confining stress sigma_3 (force / current height): mean {s['s3_mean']:.4g} Pa, "
           f"range {s['s3_min']:.4g}-{s['s3_max']:.4g} (target {s['s3_target']:g}); "
-          f"force / initial height (what the servos hold): mean {s['s3_force_mean']:.4g}")
+          f"force / initial height (a fixed-length servo would hold it): mean {s['s3_force_mean']:.4g}")
 
 
 def main():

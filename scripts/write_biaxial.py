@@ -7,8 +7,8 @@ grains at constant confining stress (docs/experiments.md, "A biaxial test").
    are servos at the confining stress, the bottom is fixed. The grains' friction is low
    while they pack (a denser sample, one that shows a peak), and local damping settles them.
 2. The test (the scene written): the packing read back by an [[import]] (final.csv's
-   grains), the walls put on its outline; the side walls hold the confining stress (servos),
-   the top wall moves down at a constant speed, the bottom stays; grains now at their test
+   grains), the walls put on its outline; the side walls hold the confining stress over the
+   sample's current height (servos with length_between = [bottom, top]), the top wall moves down at a constant speed, the bottom stays; grains now at their test
    friction. scripts/biaxial_curves.py turns its walls.csv into the curves.
 
 Deterministic (seeded). Rerun after editing the parameters below:
@@ -58,8 +58,12 @@ restitution = 1.0                # the contacts' dashpots against a servo (mean 
 
 
 def servo(direction, length, max_speed=MAX_SPEED, gain=GAIN_TEST):
+    """A servo holding the confining stress over `length`: a fixed length (m), or a pair of
+    wall ids whose gap it follows (length_between: the stress over the current length)."""
+    over = (f"length_between = [{length[0]}, {length[1]}]" if isinstance(length, tuple)
+            else f"length = {length:.9g}")
     return (f'motion = "prescribed"\nprogram = {{ kind = "servo", direction = {direction}, '
-            f"stress = {CONFINING:g}, length = {length:.9g}, gain = {gain:g}, "
+            f"stress = {CONFINING:g}, {over}, gain = {gain:g}, "
             f"max_speed = {max_speed:g} }}")
 
 
@@ -126,15 +130,19 @@ def main():
     speed = rate * h
     duration = AXIAL_STRAIN / rate
     walls = tx.box_walls(w, h, "wall", {
-        tx.LEFT: servo("[1, 0]", h), tx.RIGHT: servo("[-1, 0]", h),
+        # The side walls hold sigma_3 over the sample's current height, the gap between
+        # the bottom and top walls, as the top comes down.
+        tx.LEFT: servo("[1, 0]", (tx.BOTTOM, tx.TOP)),
+        tx.RIGHT: servo("[-1, 0]", (tx.BOTTOM, tx.TOP)),
         tx.TOP: f'motion = "prescribed"\nvelocity = [0.0, {-speed:.9g}]'})
     bodies = len({r["body"] for r in shifted})
     tx.write_grains_csv(os.path.join(a.dest, "biaxial_grains.csv"), shifted)
     scene = f"""# A biaxial test of angular grains at constant confining stress: {bodies} random convex
 # polygons (5 to 7 sides, rigid bodies of triangles), consolidated at {CONFINING:g} Pa in a box of
 # four frictionless walls (examples/biaxial_grains.csv), then compressed by the top wall at
-# a constant speed while the side walls hold the confining stress (servos) and the bottom
-# stays. No gravity. Written by scripts/write_biaxial.py (edit the parameters there).
+# a constant speed while the side walls hold the confining stress over the current height
+# (servos, length_between = [bottom, top]) and the bottom stays. No gravity. Written by
+# scripts/write_biaxial.py (edit the parameters there).
 #   tridem run examples/biaxial.toml --backend cpu
 #   scripts/biaxial_curves.py out/biaxial      (curves, friction angles: docs/experiments.md)
 # Box {w:.4f} m x {h:.4f} m; axial strain rate {rate:.3g} /s (inertial number {INERTIAL:g}:

@@ -35,6 +35,17 @@ struct MotionProgram {
   // Servo: velocity = clamp(gain·(target_force − F_n), −max_speed, max_speed)·direction,
   // F_n = −F·direction the normal force the grains push it back with (N per unit thickness).
   double target_force = 0, gain = 0, max_speed = 0;
+  // Servo with `length_between`: the target is stress × the current gap between walls
+  // length_walls[0] and [1] (body ids, the particle ids of a scene without bodies), measured
+  // along length_axis (the unit vector across `direction`, from the first wall to the
+  // second): the distance of their centroids along it less length_offset, the part of it
+  // the two walls themselves fill (their reach past their centroids toward each other, from
+  // the scene's poses: the walls only translate). target_force is unused then; -1: a fixed
+  // target. core/particle_model fills axis and offset.
+  double stress = 0;
+  std::int32_t length_walls[2] = {-1, -1};
+  Vec2d length_axis{};
+  double length_offset = 0;
   // Table: its entries are ProgramTable::knots[first_knot, first_knot + knot_count).
   std::int32_t first_knot = 0, knot_count = 0;
 };

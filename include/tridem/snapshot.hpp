@@ -48,6 +48,9 @@ struct Snapshot {
   std::vector<int> material;
   std::vector<Motion> motion;
   std::vector<ContactRecord> contacts;    ///< filled when contacts are requested
+  /// The run's periodic cell (none without periodic boundaries): a grain across its sides
+  /// is in the cell partly through its images, which the measurements count (measure/).
+  PeriodicCell periodic;
 
   // Bodies of several triangles (tridem/body_fields.hpp). All EMPTY when the scene has no
   // body of several triangles: every triangle is then its own body, of id its triangle id.

@@ -10,9 +10,101 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
 
 namespace tridem {
 namespace {
+
+// The walls a program moves and a servo's length_between names: the bodies when the scene
+// has bodies, else the triangles (the same ids the scene format gives them).
+struct Walls {
+  std::size_t count;
+  const std::vector<Motion>& motion;
+  const std::vector<Vec2d>& centroid;
+  const std::vector<double>& angular_velocity;
+  const std::vector<std::int32_t>& program;
+  const char* what;  // "body id" or "particle id"
+};
+
+// Why wall `id` cannot carry a servo's length (it must keep its angle: the gap is measured
+// from centroids), or nothing.
+std::optional<std::string> not_a_length_wall(const Walls& w, const Scene& scene, std::int32_t id) {
+  if (static_cast<std::size_t>(id) >= w.count)
+    return fmt::format("{} is no wall of this scene (it has {} {}s, 0 to {})", id, w.count, w.what,
+                       w.count - 1);
+  const auto i = static_cast<std::size_t>(id);
+  if (w.motion[i] == Motion::Free)
+    return fmt::format("{} {} is free: name walls (fixed or prescribed)", w.what, id);
+  bool turns = w.motion[i] == Motion::Prescribed && w.angular_velocity[i] != 0;
+  if (const std::int32_t k = w.program[i];
+      k >= 0 && static_cast<std::size_t>(k) < scene.programs.size()) {
+    const MotionProgram& p = scene.programs[static_cast<std::size_t>(k)];
+    turns = p.kind == ProgramKind::Rotation;
+    if (p.kind == ProgramKind::Table)
+      for (std::int32_t j = 0; j < p.knot_count; ++j)
+        if (static_cast<std::size_t>(p.first_knot + j) < scene.program_knots.size() &&
+            scene.program_knots[static_cast<std::size_t>(p.first_knot + j)].angular_velocity != 0)
+          turns = true;
+  }
+  if (turns)
+    return fmt::format("{} {} turns: the gap is measured from the walls' centroids, so name "
+                       "walls that only translate",
+                       w.what, id);
+  return std::nullopt;
+}
+
+// The extent along `axis` of wall `id`'s triangles at t = 0: [lo, hi] of its vertices.
+std::pair<double, double> extent_along(const ParticleModel& m, std::size_t id, Vec2d axis) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if ((m.bodies.empty() ? i : static_cast<std::size_t>(m.bodies.body[i])) != id) continue;
+    for (const Vec2d& o : m.offsets[i]) {
+      const double s = dot(m.centroid[i] + o, axis);
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+    }
+  }
+  return {lo, hi};
+}
+
+// Each servo with length_between gets the axis it measures along (across its direction,
+// from its first wall to its second) and the offset from the walls' centroids to the gap
+// between their facing sides; walls that are not walls of the scene, that turn, that are
+// free, the servo's own wall, or a gap <= 0 are refused. Returns each program's target
+// force at t = 0 (0 for the others).
+std::vector<double> resolve_servo_lengths(const Scene& scene, ParticleModel& m, const Walls& w) {
+  std::vector<double> targets(m.programs.size(), 0.0);
+  for (std::size_t k = 0; k < m.programs.size(); ++k) {
+    MotionProgram& p = m.programs[k];
+    if (!physics::follows_length(p)) continue;
+    const std::int32_t a = p.length_walls[0], b = p.length_walls[1];
+    const std::string where = fmt::format("{}: the servo of program {}: length_between = [{}, {}]",
+                                          scene_label(scene), k, a, b);
+    for (const std::int32_t id : {a, b}) {
+      if (auto why = not_a_length_wall(w, scene, id)) throw SceneError(where + ": " + *why);
+      if (w.program[static_cast<std::size_t>(id)] == static_cast<std::int32_t>(k))
+        throw SceneError(fmt::format("{}: {} {} is the servo's own wall: name the two walls "
+                                     "the length lies between",
+                                     where, w.what, id));
+    }
+    Vec2d axis{-p.direction.y, p.direction.x};
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+    if (dot(w.centroid[ub] - w.centroid[ua], axis) < 0) axis = Vec2d{} - axis;
+    const double gap = extent_along(m, ub, axis).first - extent_along(m, ua, axis).second;
+    if (!(gap > 0))
+      throw SceneError(fmt::format(
+          "{}: the walls' gap across the servo's direction ({}, {}) is {} m at t = 0, not > 0: "
+          "name two walls on either side of the sample, across the direction the servo moves",
+          where, axis.x, axis.y, gap));
+    p.length_axis = axis;
+    p.length_offset = dot(w.centroid[ub] - w.centroid[ua], axis) - gap;
+    targets[k] = physics::servo_target_of_length(p, gap);
+  }
+  return targets;
+}
 
 // Each programmed wall (a triangle, or a body when the scene has bodies) gets its origin,
 // the centroid it starts from, and the program's velocity at t = 0; a program of no wall,
@@ -21,6 +113,12 @@ namespace {
 void resolve_programs(const Scene& scene, ParticleModel& m) {
   m.programs = scene.programs;
   m.program_knots = scene.program_knots;
+  const bool bodies = !m.bodies.empty();
+  const Walls walls =
+      bodies ? Walls{m.bodies.size(),           m.bodies.motion,  m.bodies.centroid,
+                     m.bodies.angular_velocity, m.bodies.program, "body id"}
+             : Walls{m.size(), m.motion, m.centroid, m.angular_velocity, m.program, "particle id"};
+  const std::vector<double> targets = resolve_servo_lengths(scene, m, walls);
   std::vector<int> users(scene.programs.size(), 0);
   auto resolve = [&](std::int32_t k, Motion motion, Vec2d centroid, Vec2d& velocity,
                      double& angular_velocity, const std::string& wall) {
@@ -39,7 +137,7 @@ void resolve_programs(const Scene& scene, ParticleModel& m) {
       throw SceneError(fmt::format("{}: {}: program {} already moves another wall",
                                    scene_label(scene), wall, k));
     p.origin = centroid;
-    const physics::ProgramTable table{m.programs.data(), m.program_knots.data()};
+    const physics::ProgramTable table{m.programs.data(), m.program_knots.data(), targets.data()};
     physics::program_velocity(table, k, 0.0, Vec2d{}, velocity, angular_velocity);
   };
   if (m.bodies.empty()) {

@@ -2,10 +2,13 @@
 // (tridem/measurements.hpp; the formulas are in docs/experiments.md, "Measurements").
 #include "tridem/measurements.hpp"
 
+#include "broadphase/candidate_pairs.hpp"
 #include "measure/grain_network.hpp"
 #include "measure/region_clip.hpp"
+#include "physics/periodic_frame.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -62,6 +65,34 @@ MeasureRegion free_bounding_box(const Snapshot& s) {
 
 double ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
 
+/// The area of triangle i inside `region`, its periodic images' included: a grain wraps
+/// by its centroid (a body by its own), so a triangle across a side of the cell has the
+/// rest of its area in the cell through the image one period over (with Lees-Edwards, the
+/// images above and below shifted by the frame's offset). Images one and two periods away
+/// along x (two: the shifted rows), one along y: a triangle is under a quarter of a period
+/// (core/periodic_checks), so no farther image reaches the cell's neighbourhood.
+double area_inside_with_images(const Snapshot& s, std::size_t i, const MeasureRegion& region,
+                               const physics::PeriodicFrame& frame) {
+  const std::array<Vec2d, 3> t{Vec2d{s.x1[i], s.y1[i]}, Vec2d{s.x2[i], s.y2[i]},
+                               Vec2d{s.x3[i], s.y3[i]}};
+  const int ky = frame.py ? 1 : 0, kx = frame.px ? 2 : 0;
+  double area = 0;
+  for (int k = -ky; k <= ky; ++k)
+    for (int m = -kx; m <= kx; ++m) {
+      const Vec2d shift{m * frame.lx + k * frame.shift, k * frame.ly};
+      const std::array<Vec2d, 3> image{t[0] + shift, t[1] + shift, t[2] + shift};
+      // Most images are far from the region: their box does not meet it.
+      const double lo_x = std::min({image[0].x, image[1].x, image[2].x});
+      const double hi_x = std::max({image[0].x, image[1].x, image[2].x});
+      const double lo_y = std::min({image[0].y, image[1].y, image[2].y});
+      const double hi_y = std::max({image[0].y, image[1].y, image[2].y});
+      if (hi_x <= region.lo.x || lo_x >= region.hi.x || hi_y <= region.lo.y || lo_y >= region.hi.y)
+        continue;
+      area += measure::area_inside(image, region);
+    }
+  return area;
+}
+
 }  // namespace
 
 Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>& region) {
@@ -112,13 +143,12 @@ Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>
   out.pressure = 0.5 * (out.sxx + out.syy);
   out.deviatoric = std::hypot(0.5 * (out.sxx - out.syy), 0.5 * (out.sxy + out.syx));
 
+  // Without periodic boundaries the frame has no image but the triangle itself.
+  const physics::PeriodicFrame frame = periodic_frame_of(s.periodic, s.time);
   double solid = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s.motion[i] != Motion::Free) continue;
-    solid += region ? measure::area_inside({Vec2d{s.x1[i], s.y1[i]}, Vec2d{s.x2[i], s.y2[i]},
-                                            Vec2d{s.x3[i], s.y3[i]}},
-                                           *region)
-                    : measure::triangle_area(s, i);
+    solid += region ? area_inside_with_images(s, i, *region, frame) : measure::triangle_area(s, i);
   }
   out.packing_fraction = ratio(solid, out.area);
   out.coordination =

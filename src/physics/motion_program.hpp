@@ -1,7 +1,8 @@
 #pragma once
 // Motion programs of prescribed walls (triangles and bodies): the pose and velocity of a
 // wall as a function of time (a rotation about a point, a table of velocities, a sinusoidal
-// oscillation), or of the contact force on it (a servo holding a target normal force).
+// oscillation), or of the contact force on it (a servo holding a target normal force: a
+// fixed one, or stress × the current gap between two walls, computed once per step).
 // Every backend advances a programmed wall with program_step; a program is data uploaded
 // once (ProgramTable), evaluated from the time, so no backend sends anything per step.
 //
@@ -27,11 +28,47 @@ using tridem::MotionProgram;
 using tridem::ProgramKind;
 using tridem::ProgramKnot;
 
-/// What the integrators read: every program and the knots of the tables.
+/// What the integrators read: every program, the knots of the tables and, when some servo
+/// follows a length (length_between), each program's target force of the step, which the
+/// backend fills before its Check stage with servo_targets_at (read at [k] only for those
+/// servos; null when there are none).
 struct ProgramTable {
   const MotionProgram* programs = nullptr;
   const ProgramKnot* knots = nullptr;
+  const double* targets = nullptr;
 };
+
+/// Whether servo p's target force follows the gap between two walls (length_between).
+TRIDEM_HD inline bool follows_length(const MotionProgram& p) {
+  return p.kind == ProgramKind::Servo && p.length_walls[0] >= 0;
+}
+
+/// The gap between the two walls of p's length_between whose centroids are `first` and
+/// `second` now, measured across p's direction (exact while they translate).
+TRIDEM_HD inline double servo_length(const MotionProgram& p, Vec2d first, Vec2d second) {
+  return dot(second - first, p.length_axis) - p.length_offset;
+}
+
+/// stress × length: the force that holds the stress over that length; 0 once the walls
+/// have met (a contact only pushes).
+TRIDEM_HD inline double servo_target_of_length(const MotionProgram& p, double length) {
+  return length > 0 ? p.stress * length : 0.0;
+}
+
+/// The target force of program k, a servo that follows a length, for walls whose centroids
+/// are (x[id], y[id]) (the particles' fields, or the bodies' in a scene with bodies): the
+/// state at the start of the step, before anything is written, so that every thread of the
+/// step and both of its readings of the law (the pose, then the velocity) see one target.
+TRIDEM_HD inline double servo_target_at(const MotionProgram& p, const double* x, const double* y) {
+  const std::int32_t a = p.length_walls[0], b = p.length_walls[1];
+  return servo_target_of_length(p, servo_length(p, Vec2d{x[a], y[a]}, Vec2d{x[b], y[b]}));
+}
+
+/// The target force servo k holds at this step.
+TRIDEM_HD inline double servo_target(const ProgramTable& table, std::int32_t k) {
+  const MotionProgram& p = table.programs[k];
+  return follows_length(p) ? table.targets[k] : p.target_force;
+}
 
 namespace program_detail {
 
@@ -113,10 +150,10 @@ TRIDEM_HD inline ProgramPose program_pose_at(const ProgramTable& table, const Mo
 }
 
 /// The servo law: the velocity along the servo's direction for the contact force `force`
-/// on the wall.
-TRIDEM_HD inline Vec2d servo_velocity(const MotionProgram& p, Vec2d force) {
+/// on the wall and the target force `target` (servo_target).
+TRIDEM_HD inline Vec2d servo_velocity(const MotionProgram& p, double target, Vec2d force) {
   const double pushed_back = -dot(force, p.direction);
-  double speed = p.gain * (p.target_force - pushed_back);
+  double speed = p.gain * (target - pushed_back);
   if (speed > p.max_speed) speed = p.max_speed;
   if (speed < -p.max_speed) speed = -p.max_speed;
   return p.direction * speed;
@@ -128,7 +165,7 @@ TRIDEM_HD inline void program_velocity(const ProgramTable& table, std::int32_t k
                                        Vec2d force, Vec2d& v, double& w) {
   const MotionProgram& p = table.programs[k];
   if (p.kind == ProgramKind::Servo) {
-    v = servo_velocity(p, force);
+    v = servo_velocity(p, servo_target(table, k), force);
     w = 0;
     return;
   }
@@ -145,7 +182,7 @@ TRIDEM_HD inline Pose program_step(const ProgramTable& table, std::int32_t k, Po
                                    double dt, Vec2d force) {
   const MotionProgram& prog = table.programs[k];
   if (prog.kind == ProgramKind::Servo) {
-    p.v = servo_velocity(prog, force);
+    p.v = servo_velocity(prog, servo_target(table, k), force);
     p.w = 0;
     p.c += p.v * dt;
     return p;

@@ -3,7 +3,8 @@
 // body turned by a rotation program with grains inside. The programs are the same TRIDEM_HD
 // functions on both, and a servo reads the same summed force (the walls' gather runs every
 // step on the GPU when a servo is present), so they agree as the other GPU parity tests do
-// (support/gpu_compare.hpp). Skipped without a GPU; label gpu.
+// (support/gpu_compare.hpp); likewise a servo whose length follows a lid. Skipped without
+// a GPU; label gpu.
 #include "support/backend_test.hpp"
 #include "support/body_scenes.hpp"
 #include "support/gpu_compare.hpp"
@@ -71,6 +72,17 @@ TEST_P(GpuProgramParity, RotatingDrumBodyAgreesWithSerial) {
   if (GetParam().method == Method::Decomposition)
     s = test::with_decomposition(s, DecompositionLayout::Strips, 40);
   expect_programs_agree(GetParam(), s, 3000, 1000);
+}
+
+// A servo whose target follows the gap between the floor and a lid coming down
+// (length_between): the target is computed by servo_target_kernel on the GPU, by
+// update_servo_targets on the CPU, from the same poses with the same function.
+TEST_P(GpuProgramParity, ServoFollowingALengthAgreesWithSerial) {
+  for (Scene s : {test::servo_box(true), test::servo_box_of_bodies(true)}) {
+    if (GetParam().method == Method::Decomposition)
+      s = test::with_decomposition(s, DecompositionLayout::Strips, 40);
+    expect_programs_agree(GetParam(), s, 3000, 1000);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Gpu, GpuProgramParity,

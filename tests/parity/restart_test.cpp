@@ -164,6 +164,21 @@ TEST_P(ProgramRestart, ServoAndOscillatingWallsAreBitIdentical) {
   const test::SolverChoice& c = GetParam();
   expect_restart_exact(c.backend, c.precision, c.method, test::programmed_pile(12, 8));
 }
+// A servo whose length follows a lid (length_between): its target is a function of the
+// walls' poses, which the checkpoint holds.
+TEST_P(ProgramRestart, ServoFollowingALengthIsBitIdentical) {
+  const test::SolverChoice& c = GetParam();
+  for (const Scene& s : {test::servo_box(true), test::servo_box_of_bodies(true)}) {
+    const std::int64_t steps = 3000;  // the grains have landed and the servo touches them
+    auto straight = solver_for(s, c.backend, c.precision, c.method);
+    const SolverState expected = final_state(*straight, steps);
+    const SolverState half = halfway_state(s, c.backend, c.precision, c.method, steps);
+    ASSERT_GT(half.pairs(), 0u) << "the grains must carry contact history at the restart";
+    auto restarted = solver_for(s, c.backend, c.precision, c.method);
+    restarted->load_state(half);
+    expect_bit_identical(final_state(*restarted, steps), expected);
+  }
+}
 INSTANTIATE_TEST_SUITE_P(Cpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cpu)));
 INSTANTIATE_TEST_SUITE_P(Gpu, ProgramRestart, ::testing::Values(test::SolverChoice(Backend::Cuda)));
 

@@ -15,6 +15,7 @@
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -54,6 +55,8 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (periodic_ && cell_.shear_rate != 0) image_power_.assign(n_, 0.0);
   programs_ = model.programs;
   program_knots_ = model.program_knots;
+  if (std::any_of(programs_.begin(), programs_.end(), physics::follows_length))
+    servo_targets_.assign(programs_.size(), 0.0);
   if (!model.bodies.empty()) {
     const BodyModel& bm = model.bodies;
     n_bodies_ = bm.size();
@@ -129,6 +132,7 @@ void CpuSolver<Real>::run_stage(Stage stage) {
       accumulate();
       if (bonds() > 0) add_bond_loads();
       if (n_bodies_ > 0) gather_bodies();
+      if (!servo_targets_.empty()) update_servo_targets();
       return;
     case Stage::Check:
       if (n_bodies_ > 0)
@@ -412,6 +416,18 @@ void CpuSolver<Real>::write_program_velocities() {
   }
 }
 
+// The targets of the servos that follow a length, from the walls' poses at the step's
+// start (bodies' in a scene with bodies): before the Check and Integrate stages read them.
+// A handful of programs: serial.
+template <class Real>
+void CpuSolver<Real>::update_servo_targets() {
+  const double* x = n_bodies_ > 0 ? body_x_.data() : x_.data();
+  const double* y = n_bodies_ > 0 ? body_y_.data() : y_.data();
+  for (std::size_t k = 0; k < programs_.size(); ++k)
+    if (physics::follows_length(programs_[k]))
+      servo_targets_[k] = physics::servo_target_at(programs_[k], x, y);
+}
+
 // Called for every particle as its step is written: the pairs of its own row (each pair is
 // in one row) and, for a free particle, what local damping took from it.
 template <class Real>
@@ -561,6 +577,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   fill_from_model(out, *this);
   fill_bodies(out, *this, n_bodies_);
   fill_bonds(out, bonds_);
+  out.periodic = cell_;
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.

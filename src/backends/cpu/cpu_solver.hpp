@@ -154,8 +154,15 @@ class CpuSolver final : public Solver {
   // The walls' motion programs (physics/motion_program.hpp), as the model resolved them.
   std::vector<MotionProgram> programs_;
   std::vector<ProgramKnot> program_knots_;
-  physics::ProgramTable program_table() const { return {programs_.data(), program_knots_.data()}; }
+  // The step's target force of each program, when some servo follows a length
+  // (length_between; empty without): filled by update_servo_targets in the Gather stage.
+  std::vector<double> servo_targets_;
+  physics::ProgramTable program_table() const {
+    return {programs_.data(), program_knots_.data(),
+            servo_targets_.empty() ? nullptr : servo_targets_.data()};
+  }
   void write_program_velocities();
+  void update_servo_targets();
   // Pairs of this step and the last, with their contact history. The method picks the
   // finder: the cell grid and all-pairs list box-overlapping pairs, single-domain only
   // those that pass its contact test.

@@ -11,10 +11,12 @@
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace tridem::cuda {
 
@@ -100,7 +102,10 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     programs_.upload(model.programs);
     if (!model.program_knots.empty()) program_knots_.upload(model.program_knots);
   }
-  params_.programs = {programs_.data(), program_knots_.data()};
+  if (std::any_of(model.programs.begin(), model.programs.end(), physics::follows_length))
+    servo_targets_.upload(std::vector<double>(model.programs.size(), 0.0));
+  params_.programs = {programs_.data(), program_knots_.data(),
+                      servo_targets_.size() > 0 ? servo_targets_.data() : nullptr};
   params_.time_new = physics::time_after_step(0, params_.dt);
   d_.upload_initial(model);
   if (!model.bodies.empty()) {
@@ -188,6 +193,7 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       return;
     }
     case Stage::Gather:  // with the Check stage's runaway test of every particle (body)
+      if (servo_targets_.size() > 0) update_servo_targets(p);
       if (n_bodies_ > 0) return gather(p, status);
       gather_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
                                                               false, bond_arrays());
@@ -252,6 +258,19 @@ void CudaSolver<Real>::launch_pair_forces(const ParticleArrays<Real>& p, StepSta
   else
     pair_forces_kernel<Real><<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+}
+
+// The servos' targets from the walls' poses of the step's start, before the runaway test
+// (in the gathers) and the integration read them.
+template <class Real>
+void CudaSolver<Real>::update_servo_targets(const ParticleArrays<Real>& p) {
+  const auto n = static_cast<int>(servo_targets_.size());
+  const BodyArrays b = body_arrays();
+  const double* x = n_bodies_ > 0 ? b.body_x : p.x;
+  const double* y = n_bodies_ > 0 ? b.body_y : p.y;
+  servo_target_kernel<Real><<<blocks(servo_targets_.size()), kBlock, 0, stream_>>>(
+      params_, n, x, y, servo_targets_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("servo_target_kernel");
 }
 
 // Bodies: the members' sums (free ones), then each free body's, with its runaway test.

@@ -94,6 +94,10 @@ class CudaSolver final : public Solver {
   DeviceBuffer<ProgramKnot> program_knots_;
   bool has_programs_ = false;
   bool has_servos_ = false;
+  // The step's target of each program when some servo follows a length (length_between):
+  // servo_target_kernel fills it in the Gather stage; empty without.
+  DeviceBuffer<double> servo_targets_;
+  void update_servo_targets(const ParticleArrays<Real>& p);
   /// The per-particle fields (tridem/particle_fields.hpp), and the Model ones on the host
   /// for snapshots.
   ParticleBuffers<Real> d_;

@@ -202,6 +202,19 @@ __global__ void program_velocity_kernel(ParticleArrays<Real> p, StepParams<Real>
   p.w[i] = w;
 }
 
+/// The targets of the servos that follow a length (CpuSolver::update_servo_targets): thread
+/// per program, from the walls' centroids (x, y: the particles', or the bodies' in a scene
+/// with bodies) at the step's start, before the runaway test and the integration read them.
+/// Launched only when some servo follows a length.
+template <class Real>
+__global__ void servo_target_kernel(StepParams<Real> sp, int n_programs, const double* x,
+                                    const double* y, double* targets) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n_programs) return;
+  const MotionProgram& program = sp.programs.programs[k];
+  if (physics::follows_length(program)) targets[k] = physics::servo_target_at(program, x, y);
+}
+
 /// The elastic energy of particle i's own row of pairs (the last step's), for energy().
 template <class Real>
 __global__ void row_elastic_kernel(int n, PairArrays<Real> q, double* out) {

@@ -66,6 +66,12 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
         h.add(v);
       h.add(static_cast<std::uint64_t>(p.first_knot));
       h.add(static_cast<std::uint64_t>(p.knot_count));
+      // A servo that follows a length (only then, so other programs keep their prints).
+      if (p.length_walls[0] >= 0) {
+        h.add(p.stress);
+        h.add(static_cast<std::uint64_t>(p.length_walls[0]));
+        h.add(static_cast<std::uint64_t>(p.length_walls[1]));
+      }
     }
     for (const ProgramKnot& k : scene.program_knots)
       for (double v : {k.time, k.velocity.x, k.velocity.y, k.angular_velocity}) h.add(v);

@@ -4,6 +4,7 @@
 #include "io/scene/scene_sections.hpp"
 #include "tridem/setting_names.hpp"
 
+#include <climits>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -61,21 +62,49 @@ void read_oscillation(TableReader& r, MotionProgram& p) {
   p.phase = r.real("phase").value_or(0.0);
 }
 
+// length_between = [A, B]: two body ids (particle ids without bodies), distinct and >= 0;
+// whether they are walls of this scene, and their gap, is checked once the scene is whole
+// (core/particle_model).
+void read_length_between(TableReader& r, MotionProgram& p) {
+  const std::vector<std::int64_t> ids = r.required(r.integers("length_between"), "length_between");
+  if (ids.size() != 2)
+    r.fail("length_between",
+           fmt::format("expected two wall ids [A, B] (body ids; particle ids without bodies), "
+                       "got {} values",
+                       ids.size()));
+  for (const std::int64_t id : ids)
+    if (id < 0 || id > INT32_MAX)
+      r.fail("length_between", fmt::format("{} is not a body id (ids count from 0)", id));
+  if (ids[0] == ids[1])
+    r.fail("length_between",
+           fmt::format("names wall {} twice: give the two walls the length lies between", ids[0]));
+  p.length_walls[0] = static_cast<std::int32_t>(ids[0]);
+  p.length_walls[1] = static_cast<std::int32_t>(ids[1]);
+}
+
 void read_servo(TableReader& r, MotionProgram& p) {
   p.direction = unit_direction(r);
   const bool force = r.has("force");
   const bool stress = r.has("stress");
   if (force == stress)
     r.fail_table("a servo needs its target: give force = F (N per unit thickness) or stress = S "
-                 "with length = L (Pa and m: F = S·L), not both");
+                 "with length = L (Pa and m: F = S·L) or with length_between = [A, B] (the gap "
+                 "between two walls, followed as they move), not both");
   if (force) {
     p.target_force = r.required(r.real("force"), "force");
-    if (r.has("length")) r.fail("length", "length goes with stress, not with force");
+    for (const char* key : {"length", "length_between"})
+      if (r.has(key)) r.fail(key, fmt::format("{} goes with stress, not with force", key));
+  } else if (r.has("length_between")) {
+    if (r.has("length"))
+      r.fail("length", "give length = L (a fixed length) or length_between = [A, B] (the gap "
+                       "between two walls as they move), not both");
+    p.stress = r.required(r.real("stress"), "stress");
+    read_length_between(r, p);
   } else {
     p.target_force =
         r.required(r.real("stress"), "stress") * positive(r, "length", "the loaded length");
   }
-  if (p.target_force < 0)
+  if (p.target_force < 0 || p.stress < 0)
     r.fail(force ? "force" : "stress",
            "the target must be >= 0 (a contact only pushes): reverse direction instead");
   p.gain = positive(r, "gain", "the gain (m/s per N)");

@@ -45,6 +45,14 @@ TEST(ParseProgram, ReadsEachKind) {
                   "ok.toml");
   EXPECT_EQ(s.programs[0].kind, ProgramKind::Servo);
   EXPECT_EQ(s.programs[0].target_force, 5000);
+
+  s = parse_scene(wall("{ kind = \"servo\", direction = [0, -1], stress = 1e4, length_between = "
+                       "[3, 1], gain = 1e-4, max_speed = 0.1 }"),
+                  "ok.toml");
+  EXPECT_EQ(s.programs[0].stress, 1e4);
+  EXPECT_EQ(s.programs[0].length_walls[0], 3);
+  EXPECT_EQ(s.programs[0].length_walls[1], 1);
+  EXPECT_EQ(s.programs[0].target_force, 0);  // the model measures the length
 }
 
 TEST(ParseProgram, BodyTakesAProgramAsATableOfItsOwn) {
@@ -109,6 +117,24 @@ TEST(ParseProgram, RefusesBadPrograms) {
   test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = 10, gain = 1, "
                             "max_speed = 1 }"),
                        {"'length'"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = 10, length = 1, "
+                            "length_between = [0, 1], gain = 1, max_speed = 1 }"),
+                       {"'length'", "length = L (a fixed length) or length_between", "not both"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], force = 10, "
+                            "length_between = [0, 1], gain = 1, max_speed = 1 }"),
+                       {"'length_between'", "goes with stress, not with force"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = 10, "
+                            "length_between = [0, 1, 2], gain = 1, max_speed = 1 }"),
+                       {"'length_between'", "two wall ids", "got 3 values"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = 10, "
+                            "length_between = [2, 2], gain = 1, max_speed = 1 }"),
+                       {"'length_between'", "names wall 2 twice"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = 10, "
+                            "length_between = [-1, 2], gain = 1, max_speed = 1 }"),
+                       {"'length_between'", "-1 is not a body id"});
+  test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], stress = -10, "
+                            "length_between = [0, 2], gain = 1, max_speed = 1 }"),
+                       {"'stress'", "reverse direction"});
   test::expect_refused(wall("{ kind = \"servo\", direction = [0, -1], force = 10, gain = 0, "
                             "max_speed = 1 }"),
                        {"'gain'", "> 0"});
