@@ -45,8 +45,8 @@ std::optional<std::string> not_a_length_wall(const Walls& w, const Scene& scene,
     turns = p.kind == ProgramKind::Rotation;
     if (p.kind == ProgramKind::Table)
       for (std::int32_t j = 0; j < p.knot_count; ++j)
-        if (static_cast<std::size_t>(p.first_knot + j) < scene.program_knots.size() &&
-            scene.program_knots[static_cast<std::size_t>(p.first_knot + j)].angular_velocity != 0)
+        if (const auto knot = static_cast<std::size_t>(p.first_knot) + static_cast<std::size_t>(j);
+            knot < scene.program_knots.size() && scene.program_knots[knot].angular_velocity != 0)
           turns = true;
   }
   if (turns)
@@ -130,7 +130,8 @@ void resolve_programs(const Scene& scene, ParticleModel& m) {
     MotionProgram& p = m.programs[static_cast<std::size_t>(k)];
     if (p.kind == ProgramKind::Table &&
         (p.knot_count < 1 || p.first_knot < 0 ||
-         static_cast<std::size_t>(p.first_knot + p.knot_count) > scene.program_knots.size()))
+         static_cast<std::size_t>(p.first_knot) + static_cast<std::size_t>(p.knot_count) >
+             scene.program_knots.size()))
       throw SceneError(fmt::format("{}: {}: its velocity table's entries are out of range",
                                    scene_label(scene), wall));
     if (++users[static_cast<std::size_t>(k)] > 1)

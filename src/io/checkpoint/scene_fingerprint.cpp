@@ -57,8 +57,11 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
   // some, so every scene without programs keeps its fingerprint.
   if (!scene.programs.empty()) {
     h.add(std::uint64_t{scene.programs.size()});
-    for (const TriangleSpec& t : scene.triangles) h.add(static_cast<std::uint64_t>(t.program + 1));
-    for (const BodySpec& b : scene.bodies) h.add(static_cast<std::uint64_t>(b.program + 1));
+    // program + 1 in 64 bits: -1 (none) hashes as 0, as it always has.
+    for (const TriangleSpec& t : scene.triangles)
+      h.add(static_cast<std::uint64_t>(std::int64_t{t.program} + 1));
+    for (const BodySpec& b : scene.bodies)
+      h.add(static_cast<std::uint64_t>(std::int64_t{b.program} + 1));
     for (const MotionProgram& p : scene.programs) {
       h.add(static_cast<std::uint64_t>(p.kind));
       for (double v : {p.center.x, p.center.y, p.angular_velocity, p.direction.x, p.direction.y,
