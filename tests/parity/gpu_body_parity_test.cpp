@@ -122,13 +122,7 @@ TEST_P(GpuBodyParity, SettlingPileOfBodiesAgreesWithSerial) {
 
 // backend = auto takes the GPU for a scene with bodies (it fell back to the CPU before).
 TEST_P(GpuBodyParity, AutoBackendRunsBodiesOnTheGpu) {
-  Scene s = test::colliding_bodies();
-  s.simulation.backend = Backend::Auto;
-  s.simulation.method = GetParam().method;
-  s.simulation.precision = GetParam().precision;
-  auto solver = make_solver(s, {});
-  EXPECT_NE(solver->description().find(backend_name(Backend::Cuda)), std::string::npos)
-      << solver->description();
+  test::expect_auto_backend_takes_the_gpu(test::colliding_bodies(), GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Gpu, GpuBodyParity, TRIDEM_SOLVER_CHOICES(::tridem::Backend::Cuda));

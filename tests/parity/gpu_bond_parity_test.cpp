@@ -149,12 +149,7 @@ TEST_P(GpuBondParity, AutoBackendRunsBondsOnTheGpu) {
   } catch (const SceneError& e) {
     GTEST_SKIP() << e.what();
   }
-  s.simulation.backend = Backend::Auto;
-  s.simulation.method = GetParam().method;
-  s.simulation.precision = GetParam().precision;
-  auto solver = make_solver(s, {});
-  EXPECT_NE(solver->description().find(backend_name(Backend::Cuda)), std::string::npos)
-      << solver->description();
+  test::expect_auto_backend_takes_the_gpu(s, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Gpu, GpuBondParity, TRIDEM_SOLVER_CHOICES(::tridem::Backend::Cuda));

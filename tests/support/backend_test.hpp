@@ -61,6 +61,16 @@ inline std::unique_ptr<Solver> solver_for(const Scene& s, const SolverChoice& ch
   return make_solver(choice.applied_to(s), config);
 }
 
+/// backend = auto, with the choice's method and precision, takes the GPU for the scene.
+inline void expect_auto_backend_takes_the_gpu(Scene s, const SolverChoice& choice) {
+  s.simulation.backend = Backend::Auto;
+  s.simulation.method = choice.method;
+  s.simulation.precision = choice.precision;
+  auto solver = make_solver(s, {});
+  EXPECT_NE(solver->description().find(backend_name(Backend::Cuda)), std::string::npos)
+      << solver->description();
+}
+
 /// "cuda", "cpu-single-domain" for another method than the grid, "cpu-float" or
 /// "cuda-decomposition-float" in float (the CTest name's tail).
 inline void PrintTo(const SolverChoice& c, std::ostream* os) {
