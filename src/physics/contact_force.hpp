@@ -70,7 +70,6 @@ struct EdgeLoad {
   /// Σ ℓ·max(φ0, φ1) over the pieces: with the integral it gives the load exponent n_eff
   /// (a uniform load has 1, a triangular one 2).
   Real shape = 0;
-  Vec2<Real> q0{}, q1{};  ///< ends of the part inside T (equal when there is none)
 };
 
 /// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
@@ -182,8 +181,6 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
   }
   const Vec2<Real> d = p1 - p0;
   const Real edge_length = norm(d);
-  load.q0 = p0 + d * t_lo;
-  load.q1 = p0 + d * t_hi;
   // The active line at t_lo: the smallest value there; on a tie, the one that falls faster.
   int k = 0;
   Real gk = f0[0] + t_lo * fd[0];
