@@ -1,6 +1,7 @@
 // A WebSocket client of the live view without a browser (bench/live/run_live_bench.sh):
 // connects to tridem run --live, asks for frames as fast as the server gives them, and
-// prints what it received in `seconds` as one JSON line.
+// prints what it received in `seconds` (or until the run ends) as one JSON line: fps and
+// steps_per_s between its first and last frames.
 //   tridem_live_client HOST PORT SECONDS [FPS_LIMIT]
 #include <boost/asio/connect.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
     std::int64_t frames = 0, first_step = -1, last_step = -1;
-    double bytes = 0, first_frame_at = -1;
+    double bytes = 0, first_frame_at = -1, last_frame_at = -1;
     beast::flat_buffer buffer;
     while (std::chrono::duration<double>(clock::now() - start).count() < seconds) {
       buffer.clear();
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
         first_frame_at = std::chrono::duration<double>(clock::now() - start).count();
       }
       last_step = step;
+      last_frame_at = std::chrono::duration<double>(clock::now() - start).count();
       ++frames;
       bytes += static_cast<double>(buffer.size());
       ws.write(asio::buffer(std::string("next")), ec);
@@ -63,11 +65,15 @@ int main(int argc, char** argv) {
     }
     const double span = std::chrono::duration<double>(clock::now() - start).count() -
                         (first_frame_at < 0 ? 0 : first_frame_at);
+    // The run's stepping rate while watched: from the steps of the first and last frames.
+    const double watched = last_frame_at - first_frame_at;
     std::printf("{\"frames\": %lld, \"seconds\": %.3f, \"fps\": %.2f, \"mb_per_s\": %.2f, "
-                "\"first_step\": %lld, \"last_step\": %lld}\n",
+                "\"first_step\": %lld, \"last_step\": %lld, \"steps_per_s\": %.4g}\n",
                 static_cast<long long>(frames), span,
-                frames > 1 ? static_cast<double>(frames - 1) / span : 0.0, bytes / span / 1e6,
-                static_cast<long long>(first_step), static_cast<long long>(last_step));
+                frames > 1 && watched > 0 ? static_cast<double>(frames - 1) / watched : 0.0,
+                bytes / span / 1e6, static_cast<long long>(first_step),
+                static_cast<long long>(last_step),
+                watched > 0 ? static_cast<double>(last_step - first_step) / watched : 0.0);
     beast::error_code ec;
     ws.close(websocket::close_code::normal, ec);
   } catch (const std::exception& e) {

@@ -33,9 +33,10 @@ struct RunOptions {
   /// signal number, set by a signal handler), the run stops at the step boundary, writes
   /// its checkpoint and final.csv and returns with RunSummary::interrupted_by set.
   const std::atomic<int>* interrupt = nullptr;
-  /// Watches the run step by step (tridem run --live): the time loop then advances one
-  /// step at a time and calls it after each (it returns at once when no viewer wants a
-  /// frame). Not owned; null for none.
+  /// Watches the run (tridem run --live): the time loop asks it before each chunk of steps
+  /// how many it may run (its chunks are cut short only when the viewer needs the state
+  /// sooner) and calls it after each (it returns at once when no viewer wants a frame).
+  /// Not owned; null for none.
   StepObserver* observer = nullptr;
   /// Builds the run's solver in place of make_solver, from the scene, model and time step
   /// the run derived (MPI ranks: src/mpi/mpi_run.cpp); empty = make_solver.

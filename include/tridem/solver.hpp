@@ -5,6 +5,7 @@
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
 #include "tridem/solver_state.hpp"
+#include "tridem/state_copy.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -76,6 +77,10 @@ class Solver {
   virtual void advance(std::int64_t steps) = 0;
   /// Copies the state (and the contacts of the last step when asked) to the host.
   virtual void snapshot(Snapshot& out, bool with_contacts) const = 0;
+  /// A copy of the state for the live view (tridem/state_copy.hpp), made once per run: it
+  /// allocates its buffers here. The default takes snapshots (make_snapshot_copy); the CPU
+  /// solvers copy their arrays, the CUDA solver downloads on a stream of its own.
+  virtual std::unique_ptr<StateCopy> make_state_copy() const { return make_snapshot_copy(*this); }
   /// Copies what a restart needs (state, step, time, contact history) to the host, under
   /// the contract of solver_state.hpp. Allocates: call it between steps, not inside them.
   virtual void save_state(SolverState& out) const = 0;

@@ -121,6 +121,16 @@ HostBondColumns<Real> initial_bond_columns(const BondModel& m) {
   return c;
 }
 
+/// Bond k's damage as a snapshot shows it: the mean of its points' (`damage` bond-major,
+/// kBondPoints per bond, as BondColumns::damage).
+template <class Real>
+double mean_bond_damage(const Real* damage, std::size_t k) {
+  double mean = 0;
+  for (int p = 0; p < physics::kBondPoints; ++p)
+    mean += static_cast<double>(damage[k * physics::kBondPoints + p]) / physics::kBondPoints;
+  return mean;
+}
+
 /// The snapshot's bond columns from host columns and the triangles' poses already in `out`:
 /// each bond's mean damage, broken flag and the ends of its edge as carried by a (its two
 /// Gauss points on a, extrapolated to 0 and 1 along the edge).
@@ -134,10 +144,7 @@ void fill_bonds(Snapshot& out, const HostBondColumns<Real>& c) {
     v->resize(nb);
   const double xi0 = physics::bond_point_position(0), xi1 = physics::bond_point_position(1);
   for (std::size_t k = 0; k < nb; ++k) {
-    double mean = 0;
-    for (int p = 0; p < physics::kBondPoints; ++p)
-      mean += static_cast<double>(c.damage[k * physics::kBondPoints + p]) / physics::kBondPoints;
-    out.bond_damage[k] = mean;
+    out.bond_damage[k] = mean_bond_damage(c.damage.data(), k);
     const auto a = static_cast<std::size_t>(c.a[k]);
     const physics::BondGeometry<Real>& g = c.geometry[k];
     const Vec2d p0{static_cast<double>(g.on_a[0].x), static_cast<double>(g.on_a[0].y)};

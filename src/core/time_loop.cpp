@@ -79,14 +79,21 @@ int TimeLoop::advance_to(std::int64_t target) {
 }
 
 // Chunks of 0.05 to 0.2 s (chunk_size.hpp): the progress bar moves without a clock read
-// in every step, and an interruption is seen within a fraction of a second.
+// in every step, and an interruption is seen within a fraction of a second. A watched run
+// keeps them while its observer has nothing to do, and cuts one short where the observer
+// says (a frame due, a client watching, a pause: steps_before_look).
 void TimeLoop::advance_chunk(std::int64_t target) {
+  std::int64_t steps = std::min(chunk_, target - solver_.step());
+  if (observer_)
+    steps =
+        std::clamp<std::int64_t>(observer_->steps_before_look(steps, seconds_per_step_), 1, steps);
   const auto t0 = std::chrono::steady_clock::now();
-  // A watched run goes step by step: its viewer may pause it between any two steps.
-  const std::int64_t steps = observer_ ? 1 : std::min(chunk_, target - solver_.step());
+  double seconds = 0;
   try {
     solver_.advance(steps);
-    if (observer_) observer_->after_step(solver_, interrupt_);
+    // The solver's time only: a viewer's pause must not shrink the chunks.
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (observer_) observer_->after_advance(solver_, interrupt_);
   } catch (const RunError& e) {
     // A blow-up: the solver holds the last good state; keep it for diagnosis or a restart.
     bar_.finish();
@@ -96,8 +103,8 @@ void TimeLoop::advance_chunk(std::int64_t target) {
                                e.what(), solver_.step(), files_.last_good.string(),
                                (out_.dir() / "final.csv").string()));
   }
-  chunk_ = next_chunk(chunk_, steps,
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  seconds_per_step_ = seconds / static_cast<double>(steps);
+  chunk_ = next_chunk(chunk_, steps, seconds);
 }
 
 void TimeLoop::write_due(std::int64_t step) {

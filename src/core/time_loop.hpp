@@ -63,6 +63,7 @@ class TimeLoop {
   std::int64_t last_, every_, log_every_, checkpoint_every_;
   std::vector<std::int64_t> measure_every_;  ///< of each [[measure]]
   std::int64_t chunk_ = 1;
+  double seconds_per_step_ = 0;  ///< of the last chunk (the observer sizes its chunks by it)
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints
 };

@@ -69,6 +69,9 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     beast::get_lowest_layer(ws_).expires_never();
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(kMaxWebSocketMessage);
+    // A frame goes out as one WebSocket frame, in one write: Beast's default splits
+    // messages into frames of 4 KiB, some 5000 writes for a frame of 10^6 triangles.
+    ws_.auto_fragment(false);
     ws_.async_accept(upgrade_,
                      [self = shared_from_this()](beast::error_code ec) { self->on_accept(ec); });
   }

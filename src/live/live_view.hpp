@@ -1,16 +1,24 @@
 #pragma once
 // The live view of a running simulation (tridem run --live): the time loop's StepObserver
-// on one side, the server's Events on the other.
+// on one side, the server's Events on the other (docs/live-view.md, "How frames are
+// taken").
 //
-// Stepping thread (after_step): returns at once unless a client wants a frame and the
-// frame-rate limit allows one; then it takes a Snapshot, copies the poses and colour
-// fields into the back buffer and swaps it with the front one (try_lock: when the server
-// is still encoding the last frame, this one is dropped rather than waited for). While a
-// client has paused the run it waits here, between steps, for resume or single step.
-// Server thread: encodes the front buffer and sends it to each client that asked for a
-// frame and is not still receiving the last one (a slow browser drops frames).
+// Stepping thread: the loop advances in its usual chunks while nobody watches; with a
+// client connected, steps_before_look cuts them at the next frame's due time or every
+// kPollSeconds (a "next" or a control is seen that soon), and while paused to one step.
+// After an advance, when a frame is wanted, due by the frame-rate limit, and the server has
+// finished with the last copy, it starts a StateCopy (the solver's state into buffers of
+// the copy's own; on the GPU an asynchronous download) and posts the rest to the server:
+// that is all a frame costs the stepping. While a client has paused the run it waits here,
+// between steps, for resume or single step.
+// Server thread: finishes the copy (waits for the download), converts it to the frame's
+// floats, encodes it and sends the newest frame to each client that asked for one and is
+// not still receiving the last one (a slow browser gets fewer frames, never old ones).
+// Right after a client is sent a frame the next one is wanted, so that one is being copied
+// and encoded while that client receives.
 #include "live/frame_encoder.hpp"
 #include "live/live_server.hpp"
+#include "tridem/state_copy.hpp"
 #include "tridem/step_observer.hpp"
 #include "tridem/vec2.hpp"
 
@@ -34,6 +42,10 @@ struct LiveOptions {
   bool start_paused = false;
 };
 
+/// How often a watched run looks for a client's "next" or control at the most (the
+/// chunks' length while a client is connected, unless a frame falls due sooner).
+inline constexpr double kPollSeconds = 0.01;
+
 class LiveView final : public StepObserver, private LiveServer::Events {
  public:
   /// Starts the server (throws tridem::Error when it cannot listen) and says its address
@@ -45,40 +57,47 @@ class LiveView final : public StepObserver, private LiveServer::Events {
 
   unsigned short port() const { return server_->port(); }
 
-  void after_step(const Solver& solver, const std::atomic<int>* interrupt) override;
+  std::int64_t steps_before_look(std::int64_t steps, double seconds_per_step) override;
+  void after_advance(const Solver& solver, const std::atomic<int>* interrupt) override;
   /// Sends the last state and tells the clients the run has ended.
   void run_ended(const Solver& solver) override;
 
  private:
+  using Clock = std::chrono::steady_clock;
+
   void opened(int client) override;
   void received(int client, const ClientMessage& message) override;
   void closed(int client) override;
 
-  /// Stepping thread: a frame into the back buffer, swapped to the front (or dropped).
+  /// Stepping thread: the first look (geometry) and the copy of the state.
+  void prepare(const Solver& solver);
+  /// Stepping thread: starts a copy and hands it to the server, unless the server has
+  /// not finished the last one (then this frame is dropped).
   void take_frame(const Solver& solver);
-  bool frame_due() const;
-  /// Server thread: the front frame to every client that asked for one.
+  bool frame_due(Clock::time_point now) const;
+  bool frame_wanted() const;
+  /// Server thread: the copy finished, converted, encoded, delivered.
+  void convert();
+  /// Server thread: the newest frame to every client that asked and has not had it.
   void deliver();
+  /// Server thread: wanted_ again when some client has the newest frame (it will ask for
+  /// a newer one).
+  void update_wanted();
   void send_state(int client);
   void broadcast_state();
 
   Vec2d gravity_;
   std::FILE* log_;
 
-  // Stepping thread only.
-  Snapshot snap_;
-  FrameData back_;
-  std::chrono::steady_clock::time_point last_frame_{};
-  bool geometry_taken_ = false;
-
-  // Shared, under mutex_ (try_lock from the stepping thread).
-  std::mutex mutex_;
-  FrameData front_;
-  bool front_fresh_ = false;
-  LiveServer::Message geometry_;
+  // Stepping thread only (the copy is handed to the server by post, and back by copying_).
+  std::unique_ptr<StateCopy> copy_;
+  Clock::time_point last_frame_{};
+  bool prepared_ = false;
 
   // Set by the server thread, read between steps.
+  std::atomic<bool> copying_{false};  ///< a copy started and not yet finished by the server
   std::atomic<bool> wanted_{false};
+  std::atomic<int> watchers_{0};  ///< clients connected
   std::atomic<bool> paused_{false};
   std::atomic<int> step_credit_{0};
   std::atomic<int> fps_;
@@ -86,10 +105,15 @@ class LiveView final : public StepObserver, private LiveServer::Events {
   std::mutex wake_mutex_;
   std::condition_variable wake_;
 
-  // Server thread only.
+  // Server thread only (the first snapshot is handed over by post).
+  Snapshot frame_state_;  ///< the copies land here; its model columns from the first look
+  FrameData frame_;
+  LiveServer::Message geometry_, newest_frame_, newest_stats_;
+  std::int64_t newest_ = 0;  ///< frames converted so far: the newest one's number
   struct Client {
     bool wants = false;
     bool has_geometry = false;
+    std::int64_t sent = 0;  ///< the number of the last frame it was sent
   };
   std::map<int, Client> clients_;
 

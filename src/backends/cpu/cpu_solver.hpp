@@ -36,6 +36,7 @@ class CpuSolver final : public Solver {
 
   void advance(std::int64_t steps) override;
   void snapshot(Snapshot& out, bool with_contacts) const override;
+  std::unique_ptr<StateCopy> make_state_copy() const override;  // cpu_state_copy.cpp
   void save_state(SolverState& out) const override;     // cpu_solver_state.cpp
   void load_state(const SolverState& in) override;
   EnergyBudget energy() const override;
@@ -62,6 +63,7 @@ class CpuSolver final : public Solver {
   TRIDEM_MEMBER_FIELDS(TRIDEM_BODY_MEMBER_COLUMN_ACCESSOR)
   std::size_t bodies() const { return n_bodies_; }
   std::size_t bonds() const { return bonds_.size(); }
+  const HostBondColumns<Real>& bond_columns() const { return bonds_; }
 
   /// The pairs of the last completed step and their forces (between steps): MPI ranks
   /// (src/mpi/) sum the walls' loads, the elastic energy and the contacts across ranks
