@@ -18,7 +18,7 @@ BACKEND=${BACKEND:-cuda}
 if [ "$BACKEND" = cuda ]; then
   SIZES=${SIZES:-"100000 1000000"}; STEPS=${STEPS:-"60000 6000"}
 else
-  SIZES=${SIZES:-"10000 100000"}; STEPS=${STEPS:-"1500 150"}
+  SIZES=${SIZES:-"10000 100000"}; STEPS=${STEPS:-"4000 300"}
 fi
 PORT=${PORT:-18765}
 WORK=${WORK:-$(mktemp -d)}
@@ -86,7 +86,10 @@ for k in "${!SIZE_LIST[@]}"; do
   "$TRIDEM" run "$SCENE" --out "$WORK/idle_$N" --steps "$STEPS_N" --quiet --live "$PORT" > "$WORK/idle_$N.log"
   "$TRIDEM" run "$SCENE" --out "$WORK/watched_$N" --steps "$STEPS_N" --quiet --live "$PORT" > "$WORK/watched_$N.log" &
   RUN=$!
-  until grep -q "live view on" "$WORK/watched_$N.log" 2>/dev/null; do sleep 0.02; done
+  until grep -q "live view on" "$WORK/watched_$N.log" 2>/dev/null; do
+    kill -0 "$RUN" 2>/dev/null || { echo "the watched run did not start:"; cat "$WORK/watched_$N.log"; exit 1; }
+    sleep 0.02
+  done
   # The client watches until the run ends and the server closes.
   "$CLIENT" 127.0.0.1 "$PORT" 3600 120 > "$WORK/client_$N.json" || true
   wait $RUN

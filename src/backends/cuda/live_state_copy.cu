@@ -46,6 +46,7 @@ class CudaStateCopy final : public StateCopy {
     });
     bytes += (1 + kEnergyAccumulators) * aligned_bytes<double>(n_);  // rows' elastic, sums
     bytes += aligned_bytes<Real>(bonds_ * physics::kBondPoints) + 2 * aligned_bytes<double>(bonds_);
+    TRIDEM_CUDA_CHECK(cudaGetDevice(&device_));  // the solver's (set by its constructor)
     staging_.allocate(bytes);
     host_.allocate(bytes);
     TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
@@ -118,6 +119,8 @@ class CudaStateCopy final : public StateCopy {
   }
 
   EnergyBudget finish(Snapshot& out) override {
+    // Another thread: on the solver's GPU, so that it does not open a context on GPU 0.
+    TRIDEM_CUDA_CHECK(cudaSetDevice(device_));
     TRIDEM_CUDA_CHECK(cudaEventSynchronize(landed_));
     in_flight_ = false;
     out.step = step_;
@@ -166,6 +169,7 @@ class CudaStateCopy final : public StateCopy {
  private:
   const CudaSolver<Real>& solver_;  ///< read in start() only
   std::size_t n_, bonds_;
+  int device_ = 0;
   DeviceBuffer<unsigned char> staging_;
   PinnedBuffer<unsigned char> host_;
   cudaStream_t stream_ = nullptr;
