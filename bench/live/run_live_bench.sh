@@ -8,12 +8,14 @@
 #   bench/live/run_live_bench.sh [BUILD_DIR]
 # Environment: BACKEND (cuda), SIZES (the lattices' triangle counts; "100000 1000000" on
 # cuda, "10000 100000" otherwise), STEPS (steps of each size's runs, in SIZES' order),
-# TRIDEM, CLIENT (the binaries), PORT, WORK (the runs' folder), OUT (the table).
+# TRIDEM, CLIENT, COST (the binaries; without COST the frame cost columns say ?), PORT,
+# WORK (the runs' folder), OUT (the table).
 # On the H200, one call: bench/live/run_live_bench.sh build
 set -euo pipefail
 BUILD=${1:-build}
 TRIDEM=${TRIDEM:-$BUILD/app/tridem}
 CLIENT=${CLIENT:-$BUILD/bench/tridem_live_client}
+COST=${COST:-$BUILD/bench/tridem_live_frame_cost}  # optional: what a frame costs the stepping
 BACKEND=${BACKEND:-cuda}
 if [ "$BACKEND" = cuda ]; then
   SIZES=${SIZES:-"100000 1000000"}; STEPS=${STEPS:-"60000 6000"}
@@ -74,8 +76,8 @@ LOAD_BEFORE=$(uptime)
   echo
   echo "$TRIDEM; load before: $LOAD_BEFORE"
   echo
-  echo "| triangles | steps | steps/s without --live | with --live, no client | with a client | overhead with a client | steps/s while watched | frames/s delivered | MB/s |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  echo "| triangles | steps | steps/s without --live | with --live, no client | with a client | overhead with a client | steps/s while watched | frames/s delivered | MB/s | stepping thread per frame, old path / now (ms, min of 20) | server thread per frame (ms, min) |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$OUT"
 CHECKS=()
 for k in "${!SIZE_LIST[@]}"; do
@@ -98,7 +100,12 @@ for k in "${!SIZE_LIST[@]}"; do
   WINDOW=$(json "$WORK/client_$N.json" steps_per_s)
   OVER=$(python3 -c "print(f'{100*(1-$WATCHED/$PLAIN):.1f}')")
   TRI=$(sed -n 's/^tridem [^:]*: \([0-9]*\) triangles.*/\1/p' "$WORK/plain_$N.log")
-  echo "| $TRI | $STEPS_N | $PLAIN | $IDLE | $WATCHED | $OVER % | $WINDOW | $FPS | $MBS |" >> "$OUT"
+  OLD_MS="?"; NEW_MS="?"; SERVER_MS="?"
+  if [ -x "$COST" ] && "$COST" "$SCENE" 20 > "$WORK/cost_$N.json"; then
+    OLD_MS=$(json "$WORK/cost_$N.json" old_stepping_ms_min); NEW_MS=$(json "$WORK/cost_$N.json" new_stepping_ms_min)
+    SERVER_MS=$(json "$WORK/cost_$N.json" server_ms_min)
+  fi
+  echo "| $TRI | $STEPS_N | $PLAIN | $IDLE | $WATCHED | $OVER % | $WINDOW | $FPS | $MBS | $OLD_MS / $NEW_MS | $SERVER_MS |" >> "$OUT"
   cat "$WORK/client_$N.json"
   TARGET=$(case "$N" in 100000) echo 30;; 1000000) echo 5;; *) echo "";; esac)
   if [ -n "$TARGET" ]; then
