@@ -39,6 +39,9 @@ class TimeLoop {
   int run();
 
   const StateFiles& files() const { return files_; }
+  /// Wall time spent in outputs so far: snapshots, logs, checkpoints, final.csv, and the
+  /// wait for a frame written beside the stepping.
+  double output_seconds() const { return output_seconds_; }
 
  private:
   /// Advances to `target` unless interrupted; returns the interrupting signal or 0.
@@ -66,6 +69,7 @@ class TimeLoop {
   double seconds_per_step_ = 0;  ///< of the last chunk (the observer sizes its chunks by it)
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints
+  double output_seconds_ = 0;
 };
 
 }  // namespace tridem
