@@ -10,7 +10,10 @@
 # cuda, "10000 100000" otherwise), STEPS (steps of each size's runs, in SIZES' order),
 # TRIDEM, CLIENT, COST (the binaries; without COST the frame cost columns say ?), PORT,
 # WORK (the runs' folder), OUT (the table).
-# On the H200, one call: bench/live/run_live_bench.sh build
+# On the H200, one call (the device bundle's binaries, the runs' logs kept beside the table):
+#   COST=.devbin/bench/tridem_live_frame_cost TRIDEM=.devbin/app/tridem \
+#   CLIENT=.devbin/bench/tridem_live_client WORK=/tmp/lw OUT=$OUT/live_bench.md \
+#   bench/live/run_live_bench.sh; cp /tmp/lw/*.log /tmp/lw/*.json $OUT/
 set -euo pipefail
 BUILD=${1:-build}
 TRIDEM=${TRIDEM:-$BUILD/app/tridem}
@@ -24,6 +27,7 @@ else
 fi
 PORT=${PORT:-18765}
 WORK=${WORK:-$(mktemp -d)}
+mkdir -p "$WORK"
 HOST=$(hostname -s 2>/dev/null || echo host)
 OUT=${OUT:-bench/results/live_$(date +%F)_${BACKEND}_${HOST}.md}
 [ -x "$TRIDEM" ] || { echo "no $TRIDEM (build it first)"; exit 1; }

@@ -281,7 +281,10 @@ LiveServer::LiveServer(const std::string& host, unsigned short port, Events& eve
                           host, port, ec.message()));
 }
 
-LiveServer::~LiveServer() {
+LiveServer::~LiveServer() { stop(); }
+
+void LiveServer::stop() {
+  if (!impl_->thread.joinable()) return;
   asio::post(impl_->ioc, [impl = impl_.get()] {
     impl->stopping = true;
     beast::error_code ignored;
@@ -294,7 +297,7 @@ LiveServer::~LiveServer() {
   // Up to a second for the last messages and the close handshakes, then stop.
   asio::steady_timer limit(impl_->ioc, std::chrono::seconds(1));
   limit.async_wait([impl = impl_.get()](beast::error_code) { impl->ioc.stop(); });
-  if (impl_->thread.joinable()) impl_->thread.join();
+  impl_->thread.join();
 }
 
 unsigned short LiveServer::port() const { return impl_->acceptor.local_endpoint().port(); }

@@ -29,9 +29,12 @@ class LiveServer {
   /// Listens on host:port (port 0: one the system picks) and starts the server's thread.
   /// Throws tridem::Error when the address cannot be used (a port taken, a bad host).
   LiveServer(const std::string& host, unsigned short port, Events& events, std::FILE* log);
-  /// Closes every connection (waiting up to a second for messages in flight) and joins
-  /// the thread.
+  /// stop().
   ~LiveServer();
+  /// Closes every connection (waiting up to a second for messages in flight) and joins
+  /// the thread; the tasks posted before run first. Once; later calls do nothing. The
+  /// owner of Events calls it while they can still be called (they may use the server).
+  void stop();
   LiveServer(const LiveServer&) = delete;
   LiveServer& operator=(const LiveServer&) = delete;
 

@@ -36,7 +36,9 @@ LiveView::LiveView(const LiveOptions& options, Vec2d gravity, std::FILE* log)
   }
 }
 
-LiveView::~LiveView() { server_.reset(); }
+// The server's thread stopped first, while server_ and the frames its last tasks use are
+// still there (unique_ptr::reset would null server_ before the thread has stopped).
+LiveView::~LiveView() { server_->stop(); }
 
 bool LiveView::frame_due(Clock::time_point now) const {
   return now - last_frame_ >= std::chrono::microseconds(1'000'000 / fps_.load());

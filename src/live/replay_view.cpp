@@ -43,7 +43,8 @@ ReplayView::ReplayView(const fs::path& dir, const LiveOptions& options, std::FIL
   }
 }
 
-ReplayView::~ReplayView() { server_.reset(); }
+// As LiveView: the thread stopped while server_ is still there for its last tasks.
+ReplayView::~ReplayView() { server_->stop(); }
 
 void ReplayView::opened(int client) {
   clients_[client] = Client{};
