@@ -1,6 +1,6 @@
-// [[mesh]] blocks: a disc, rectangle or polygon meshed by Gmsh, or a 2D Gmsh .msh file, into free
-// triangles (one body each); bonded = true joins every two of them that share an edge by a
-// cohesive bond (docs/fracture.md).
+// [[mesh]] blocks: a disc, rectangle or polygon meshed by Gmsh, or a 2D Gmsh .msh file,
+// into free triangles (one body each); bonded = true joins every two of them that share an
+// edge by a cohesive bond (docs/fracture.md).
 #include "io/scene/imported_particles.hpp"
 #include "io/scene/polygon_triangulation.hpp"
 #include "io/scene/scene_sections.hpp"
@@ -47,6 +47,8 @@ MeshRegion read_region(TableReader& r, Kind kind) {
   MeshRegion m;
   m.size = r.required(r.real("size"), "size");
   if (!(m.size > 0)) r.fail("size", fmt::format("must be > 0 (m), got {}", m.size));
+  if (kind != Kind::Disc && r.real("flat_angle"))
+    r.fail("flat_angle", "is for kind = \"disc\" only");
   if (kind == Kind::Disc) {
     m.kind = MeshRegion::Kind::Disc;
     m.center = r.required(r.vec2("center"), "center");
@@ -60,7 +62,6 @@ MeshRegion read_region(TableReader& r, Kind kind) {
       r.fail("size", fmt::format("must be below the radius {} m, got {}", m.radius, m.size));
     check_expected_count(r, M_PI * m.radius * m.radius, m.size);
   } else if (kind == Kind::Polygon) {
-    if (r.real("flat_angle")) r.fail("flat_angle", "is for kind = \"disc\" only");
     m.kind = MeshRegion::Kind::Polygon;
     m.polygon = r.required(r.point_list("polygon", "an array of at least 3 points [[x, y], ...]"),
                            "polygon");
@@ -81,7 +82,6 @@ MeshRegion read_region(TableReader& r, Kind kind) {
                                  m.size));
     check_expected_count(r, area, m.size);
   } else {
-    if (r.real("flat_angle")) r.fail("flat_angle", "is for kind = \"disc\" only");
     m.kind = MeshRegion::Kind::Rectangle;
     const auto region = r.required(r.points<2>("region"), "region");
     m.lo = region[0];
