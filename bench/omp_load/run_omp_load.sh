@@ -5,22 +5,23 @@
 # policies. Every run prints the load average (uptime) beside its time; rounds repeat the
 # whole set, and bench/omp_load/medians.py takes the medians.
 #
-# Usage: bench/omp_load/run_omp_load.sh TIMER OUT.tsv [ROUNDS]
-#   TIMER   a tridem_step_timer binary (build/bench/tridem_step_timer)
-#   env: CASES   "scene:steps ..." (default: the bundled example, 1000 steps, and
+# Usage: bench/omp_load/run_omp_load.sh OUT.tsv [ROUNDS]
+#   env: TIMERS  "label=path ..." of tridem_step_timer binaries, e.g. builds before and after
+#                a change: each round runs them in turn, under the same load (default
+#                build=build/bench/tridem_step_timer)
+#        CASES   "scene:steps ..." (default: the bundled example, 1000 steps, and
 #                dense_pile:100000, 6 steps)
 #        THREADS OpenMP threads (default 2)  BUSY competing loops (default 2)
 #        POLICIES wait policies of the OpenMP runs: default passive active, or
 #                spin=N for GOMP_SPINCOUNT=N (default "default passive")
 set -euo pipefail
-timer=$1
-out=$2
-rounds=${3:-3}
+out=$1
+rounds=${2:-3}
+timers=${TIMERS:-build=build/bench/tridem_step_timer}
 threads=${THREADS:-2}
 busy=${BUSY:-2}
 cases=${CASES:-"examples/settling_pile.toml:1000 dense_pile:100000:6"}
 policies=${POLICIES:-"default passive"}
-label=${LABEL:-$(basename "$(dirname "$(dirname "$timer")")")}
 
 printf 'round\tlabel\tload\tscene\tbackend\tpolicy\tsteps\tseconds\ts_per_step\tload1\n' > "$out"
 loops=()
@@ -38,8 +39,8 @@ stop_load() {
 }
 trap stop_load EXIT
 
-run_one() {  # round load scene steps backend policy
-  local round=$1 load=$2 scene=$3 steps=$4 backend=$5 policy=$6
+run_one() {  # round load label timer scene steps backend policy
+  local round=$1 load=$2 label=$3 timer=$4 scene=$5 steps=$6 backend=$7 policy=$8
   local -a env_set=(env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT)
   case $policy in
     default) ;;
@@ -64,8 +65,14 @@ for ((r = 1; r <= rounds; ++r)); do
     for c in $cases; do
       scene=${c%:*}
       steps=${c##*:}
-      run_one "$r" "$load" "$scene" "$steps" cpu default
-      for policy in $policies; do run_one "$r" "$load" "$scene" "$steps" openmp "$policy"; done
+      for t in $timers; do
+        label=${t%%=*}
+        timer=${t#*=}
+        run_one "$r" "$load" "$label" "$timer" "$scene" "$steps" cpu default
+        for policy in $policies; do
+          run_one "$r" "$load" "$label" "$timer" "$scene" "$steps" openmp "$policy"
+        done
+      done
     done
     [[ $load == busy ]] && stop_load
   done
