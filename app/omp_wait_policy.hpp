@@ -3,8 +3,8 @@
 // barrier early sleeps instead of spinning. libgomp's default spins some 300 000 times
 // first (milliseconds), and when other programs share the cores that spinning takes the
 // core from the very thread it waits for: on 2 busy cores the bundled example's OpenMP
-// steps took 28-41 times the serial solver's with the default, 0.4-0.6 times with
-// OMP_WAIT_POLICY=passive (docs/performance.md, "OpenMP on shared cores").
+// steps took 24-40 times the serial solver's with the default, 0.5-1.5 times with
+// OMP_WAIT_POLICY=passive (medians; docs/performance.md, "OpenMP on shared cores").
 //
 // The runtime reads its settings once, as it is loaded, before main() (a setting made in
 // main() is too late, and one made by an ELF pre-initialiser is undone by the C library's

@@ -94,5 +94,7 @@ for v in $variants; do
   printf '%-11s %9s %6s %14s %14s %9s %10s %8s %8s %8s %10s\n' "$v" "$n" "$steps" "$bench_rate_v" \
     "$run_rate" "$(awk -v a="$run_rate" -v b="$bench_rate_v" 'BEGIN { if (b > 0) printf "%.3f", a / b }')" \
     "$run_wall" "$(per "$vtu")" "$(per "$vtp")" "$(per "$csv")" "$(per $((vtu + vtp)))" | tee -a "$out/summary.txt"
+  # Where tridem run says its wall time went (set-up, stepping, outputs), where it says so.
+  grep -E '^(wall time|done):' "$dir/run.log" | sed "s/^/  $v: /" | tee -a "$out/summary.txt" || true
 done
 echo "frames_B/tri: one frame's .vtu and its contact network's .vtp per triangle (frames after step 0: $every steps apart); csv_B/tri the contacts' CSV beside them, where written" | tee -a "$out/summary.txt"
