@@ -6,6 +6,10 @@
 // through on_team: inside a team it runs on that team's threads (no region of its own), and
 // outside one it makes one region for the call. The same code then serves a step that is one
 // region, a caller that wants one function in parallel, and the serial solver (a team of one).
+// A step still has about 18 barriers; how a thread waits at them matters more than their
+// number: with the runtime's default spinning the OpenMP step collapses on busy cores,
+// region or not, and with passive waiting it does not (docs/performance.md, "OpenMP on
+// shared cores"; the tridem program waits passively: app/omp_wait_policy.hpp).
 #include <exception>
 #include <omp.h>
 
