@@ -449,9 +449,7 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
 template <class Real>
 void CpuSolver<Real>::wrap(const physics::PeriodicFrame& frame, physics::Pose<double>& p,
                            double inv_mass, std::size_t booked) {
-  const physics::Pose<double> before = p;
-  physics::wrap_into_cell(frame, p);
-  energy_[kWallWork][booked] += physics::wrap_energy(before, p, 1.0 / inv_mass, gravity_);
+  energy_[kWallWork][booked] += physics::wrap_with_work(frame, p, inv_mass, gravity_);
 }
 
 // Each body sums its members' loads in ascending member order: OpenMP equals serial.
