@@ -4,6 +4,7 @@
 // the oblique collision through a boundary and how its runs are compared, a periodic gas,
 // a sheared gas, a periodic pile.
 #include "support/scene_builder.hpp"
+#include "support/snapshot_compare.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/scene_io.hpp"
 #include "tridem/snapshot.hpp"
@@ -239,6 +240,22 @@ inline SolverState warmed_up_state(const PeriodicParityCase& c, Method method) {
   SolverState state;
   serial->save_state(state);
   return state;
+}
+
+/// Single-domain with the exact test reproduces the grid on `backend` bit for bit in a
+/// periodic pile and a sheared gas (600 steps, pre-filter on and off), which touch through
+/// their boundaries.
+inline void expect_periodic_single_domain_exact_is_the_grid(Backend backend) {
+  for (const Scene& base : {periodic_pile(12, 6), dense_sheared_gas(10)}) {
+    const Snapshot grid = run_to(base, backend, 600);
+    for (bool prefilter : {true, false}) {
+      SCOPED_TRACE(prefilter ? "bbox pre-filter on" : "bbox pre-filter off");
+      Scene s = base;
+      s.simulation.bbox_prefilter = prefilter;
+      expect_identical(grid, run_to(s, backend, 600, Precision::Double, Method::SingleDomain));
+    }
+    EXPECT_GT(through_boundary(grid), 0u);
+  }
 }
 
 /// Advances two solvers of the case chunk by chunk, calling compare(a, b) on their

@@ -146,8 +146,8 @@ TEST(PeriodicFloat, CpuFloatStaysCloseToSerialDouble) {
 // them as the serial solver does, bit for bit, from the same warmed-up state.
 TEST(PeriodicScenes, GpuParityCasesTouchThroughTheBoundaries) {
   for (const test::PeriodicParityCase& c : test::periodic_parity_cases())
-    for (Method m : {Method::Grid, Method::AllPairs}) {
-      if (m == Method::AllPairs && c.scene.triangles.size() > 200) continue;
+    for (Method m : {Method::Grid, Method::AllPairs, Method::SingleDomain}) {
+      if (m != Method::Grid && c.scene.triangles.size() > 200) continue;
       const SolverState start = test::warmed_up_state(c, m);
       auto serial = test::solver_from(c, Backend::Cpu, m, start);
       auto threads = test::solver_from(c, Backend::OpenMP, m, start);
@@ -218,11 +218,17 @@ TEST(PeriodicRefusal, CellNotLongerThanFourReaches) {
 }
 
 TEST(PeriodicRefusal, MethodsThatDoNotSeeAcrossTheBoundary) {
-  for (Method m : {Method::SingleDomain, Method::Decomposition}) {
-    Scene s = periodic_gas(4, 0.1);
-    s.simulation.method = m;
-    EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
-  }
+  Scene s = periodic_gas(4, 0.1);
+  s.simulation.method = Method::Decomposition;
+  EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
+}
+
+// Single-domain in a periodic cell tests each partner at its nearest image
+// (passes_periodic_contact_test): with the exact test it drops only pairs whose force
+// pair_force would find zero, so it reproduces the grid bit for bit, pre-filter on or
+// off, as it does without a cell (CpuParity.SingleDomainExactReproducesGridBitForBit).
+TEST(PeriodicSingleDomain, ExactReproducesTheGridBitForBit) {
+  test::expect_periodic_single_domain_exact_is_the_grid(Backend::Cpu);
 }
 
 TEST(PeriodicRefusal, SceneKeys) {

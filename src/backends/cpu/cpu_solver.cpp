@@ -175,9 +175,12 @@ void CpuSolver<Real>::find_pairs() {
                                       {rel_y_[0].data(), rel_y_[1].data(), rel_y_[2].data()},
                                       lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data(),
                                       x_.data(), y_.data()};
-  if (method_ == Method::SingleDomain)
+  if (method_ == Method::SingleDomain && periodic_) {
+    const physics::PeriodicFrame frame = frame_at(static_cast<double>(step_) * dt_);
+    single_domain_.find(geometry, parallel_, pairs_, &frame);
+  } else if (method_ == Method::SingleDomain) {
     single_domain_.find(geometry, parallel_, pairs_);
-  else if (decomposed_)
+  } else if (decomposed_)
     decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
   else if (periodic_) {
     const PeriodicView view{frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data()};

@@ -146,7 +146,8 @@ SingleDomainSearch<Real> PairListBuilder<Real>::single_domain_search(
            p.y},
           large_.data(),
           n_large_,
-          filter_};
+          filter_,
+          physics::PeriodicFrame{}};
 }
 
 template <class Real>
@@ -161,14 +162,12 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin,
                                     const physics::PeriodicFrame& frame) {
   if (method_ == Method::SingleDomain) {
     // The paper's kernel: blocks of 64 threads, one per particle.
-    const SingleDomainSearch<Real> c = single_domain_search(p);
-    const int tiles = (n_ + kSingleDomainBlock - 1) / kSingleDomainBlock;
-    single_domain_count_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(
-        c, row_count_.data());
-    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_count_kernel");
-    size_rows();
-    single_domain_fill_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(c, history());
-    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_fill_kernel");
+    SingleDomainSearch<Real> c = single_domain_search(p);
+    c.frame = frame;
+    if (periodic_)
+      single_domain_rows<true>(c);
+    else
+      single_domain_rows<false>(c);
   } else {
     const CandidateSearch<Real> c = search(p);
     grow_boxes_kernel<Real>
@@ -187,6 +186,19 @@ void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin,
   }
   index_rows();
   ++builds_;
+}
+
+template <class Real>
+template <bool kPeriodic>
+void PairListBuilder<Real>::single_domain_rows(const SingleDomainSearch<Real>& c) {
+  const int tiles = (n_ + kSingleDomainBlock - 1) / kSingleDomainBlock;
+  single_domain_count_kernel<Real, kPeriodic>
+      <<<tiles, kSingleDomainBlock, 0, stream_>>>(c, row_count_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("single_domain_count_kernel");
+  size_rows();
+  single_domain_fill_kernel<Real, kPeriodic>
+      <<<tiles, kSingleDomainBlock, 0, stream_>>>(c, history());
+  TRIDEM_CUDA_CHECK_LAUNCH("single_domain_fill_kernel");
 }
 
 template <class Real>

@@ -80,6 +80,9 @@ class PairListBuilder {
   void size_temp_storage();
   CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
   SingleDomainSearch<Real> single_domain_search(const ParticleArrays<Real>& p) const;
+  /// Single-domain: the paper's count and fill kernels, plain or periodic.
+  template <bool kPeriodic>
+  void single_domain_rows(const SingleDomainSearch<Real>& c);
   /// Grid: the small particles sorted by their cell, plain or periodic.
   void bin(const CandidateSearch<Real>& c);
   void bin_periodic(const PeriodicFinder<Real>& find);
