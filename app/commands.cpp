@@ -51,6 +51,7 @@ SceneOverrides overrides(const RunArgs& args) {
 }  // namespace
 
 int run(const RunArgs& args) {
+  const auto started = std::chrono::steady_clock::now();
   auto read = [&] { return apply_overrides(read_scene(args.scene), overrides(args)); };
   RunOptions options;
   options.force = args.force;
@@ -58,6 +59,7 @@ int run(const RunArgs& args) {
   options.device = args.device;
   options.progress = !args.quiet;
   options.restart = args.restart;
+  options.started = started;
   options.interrupt = &install_interrupt_handlers();
   auto report = [&](const RunSummary& summary) {
     if (!summary.interrupted_by) return 0;

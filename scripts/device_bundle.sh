@@ -18,6 +18,8 @@ cp "$build/bench/tridem_bench" "$build/bench/tridem_paper_bench" "$dest/bench/"
 if [ -x "$build/bench/tridem_live_client" ]; then cp "$build/bench/tridem_live_client" "$dest/bench/"; fi
 # The frame output benchmark (bench/frame_bench.cpp), where the build has it.
 if [ -x "$build/bench/tridem_frame_bench" ]; then cp "$build/bench/tridem_frame_bench" "$dest/bench/"; fi
+# The pile as a scene file for tridem run (bench/run_cli_vs_bench_on_device.sh), where the build has it.
+if [ -x "$build/bench/tridem_write_pile_scene" ]; then cp "$build/bench/tridem_write_pile_scene" "$dest/bench/"; fi
 cp "$build/tests/tridem_tests" "$dest/tests/"
 # The Gmsh module, which the programs dlopen from lib/tridem/ beside their directory.
 gmsh_module="$build/lib/tridem/libtridem_gmsh.so"

@@ -6,6 +6,7 @@
 #include "tridem/step_observer.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -42,6 +43,9 @@ struct RunOptions {
   std::function<std::unique_ptr<Solver>(const Scene&, const ParticleModel&, const TimeStep&,
                                         const SolverConfig&)>
       make_solver;
+  /// When the run's set-up began, for the set-up time it reports (tridem run sets it
+  /// before reading the scene); unset: when run_scene was called.
+  std::optional<std::chrono::steady_clock::time_point> started;
 };
 
 struct RunSummary {
@@ -55,6 +59,8 @@ struct RunSummary {
   double triangle_steps_per_second = 0;
   std::string solver;
   StageTimes stages;  ///< the time loop's steps, stage by stage (outputs not included)
+  double setup_seconds = 0;   ///< from RunOptions::started to the first step
+  double output_seconds = 0;  ///< of `seconds`, spent writing outputs (frames: only the wait)
 };
 
 /// Runs the scene `input` to the end (or to an interruption): its settings are the run's

@@ -45,51 +45,59 @@ CandidatePairs<Real>::CandidatePairs(const std::vector<double>& longest_edge,
 }
 
 // The small particles' box corners' extent and widest box, which size the grid; zeros when
-// none is small. Double, whatever Real: a float corner converts exactly.
+// none is small. Double, whatever Real: a float corner converts exactly. Min and max give
+// the same sum in any order, so the team's extent is the serial one.
 template <class Real>
-typename CandidatePairs<Real>::SmallExtent CandidatePairs<Real>::small_extent(
-    const BoxArrays<Real>& b, bool parallel) const {
+void CandidatePairs<Real>::fold_small_extent(const BoxArrays<Real>& b) {
   const auto n = static_cast<std::int64_t>(n_);
-  double min_x = std::numeric_limits<double>::max(), min_y = min_x;
-  double max_x = std::numeric_limits<double>::lowest(), max_y = max_x;
-  double widest = 0;
-  // clang-format off
-#pragma omp parallel for schedule(static) if (parallel) \
-    reduction(min : min_x, min_y) reduction(max : max_x, max_y, widest)
-  // clang-format on
+  SmallExtent mine = empty_extent();
+#pragma omp for schedule(static) nowait
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
-    min_x = std::min(min_x, static_cast<double>(b.lo_x[i]));
-    min_y = std::min(min_y, static_cast<double>(b.lo_y[i]));
-    max_x = std::max(max_x, static_cast<double>(b.lo_x[i]));
-    max_y = std::max(max_y, static_cast<double>(b.lo_y[i]));
-    widest = std::max(widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
+    mine.min_x = std::min(mine.min_x, static_cast<double>(b.lo_x[i]));
+    mine.min_y = std::min(mine.min_y, static_cast<double>(b.lo_y[i]));
+    mine.max_x = std::max(mine.max_x, static_cast<double>(b.lo_x[i]));
+    mine.max_y = std::max(mine.max_y, static_cast<double>(b.lo_y[i]));
+    mine.widest = std::max(mine.widest, box_width(b.lo_x[i], b.lo_y[i], b.hi_x[i], b.hi_y[i]));
   }
-  if (min_x > max_x) return {};
-  return {min_x, min_y, max_x, max_y, widest};
+  team_fold(extent_sum_, mine, [](SmallExtent s, const SmallExtent& m) {
+    return SmallExtent{std::min(s.min_x, m.min_x), std::min(s.min_y, m.min_y),
+                       std::max(s.max_x, m.max_x), std::max(s.max_y, m.max_y),
+                       std::max(s.widest, m.widest)};
+  });
 }
 
 template <class Real>
-void CandidatePairs<Real>::bin(const BoxArrays<Real>& b, bool parallel) {
+typename CandidatePairs<Real>::SmallExtent CandidatePairs<Real>::take_small_extent() {
+  const SmallExtent e = extent_sum_;
+  extent_sum_ = empty_extent();
+  if (e.min_x > e.max_x) return {};
+  return e;
+}
+
+template <class Real>
+void CandidatePairs<Real>::bin(const BoxArrays<Real>& b) {
   const auto n = static_cast<std::int64_t>(n_);
-  const SmallExtent e = small_extent(b, parallel);
-  origin_x_ = static_cast<Real>(e.min_x);
-  origin_y_ = static_cast<Real>(e.min_y);
-  // At most 4 cells per particle.
-  const GridFit fit = fit_grid(e.max_x - e.min_x, e.max_y - e.min_y,
-                               grid_cell_for(static_cast<double>(cell_size_), e.widest),
-                               static_cast<double>(4 * n_ + 16));
-  nx_ = fit.nx;
-  ny_ = fit.ny;
-  grid_cell_ = static_cast<Real>(fit.cell);
-  const std::int64_t cells = nx_ * ny_;
-#pragma omp parallel for schedule(static) if (parallel)
+  fold_small_extent(b);
+  team_single([&] {
+    const SmallExtent e = take_small_extent();
+    origin_x_ = static_cast<Real>(e.min_x);
+    origin_y_ = static_cast<Real>(e.min_y);
+    // At most 4 cells per particle.
+    const GridFit fit = fit_grid(e.max_x - e.min_x, e.max_y - e.min_y,
+                                 grid_cell_for(static_cast<double>(cell_size_), e.widest),
+                                 static_cast<double>(4 * n_ + 16));
+    nx_ = fit.nx;
+    ny_ = fit.ny;
+    grid_cell_ = static_cast<Real>(fit.cell);
+  });
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
     cell_of_[i] = cell_coordinate(b.lo_x[i], origin_x_, grid_cell_, nx_) +
                   cell_coordinate(b.lo_y[i], origin_y_, grid_cell_, ny_) * nx_;
   }
-  sort_into_cells(cells);
+  team_single([&] { sort_into_cells(nx_ * ny_); });
 }
 
 // Counting sort by cell; serial, and in index order within a cell.
@@ -108,24 +116,26 @@ void CandidatePairs<Real>::sort_into_cells(std::int64_t cells) {
 
 // The periodic grid (broadphase/periodic_grid.hpp: the GPU's builder bins by the same rules).
 template <class Real>
-void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const PeriodicView& p,
-                                        bool parallel) {
+void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const PeriodicView& p) {
   const auto n = static_cast<std::int64_t>(n_);
-  const SmallExtent e = small_extent(b, parallel);
-  periodic_grid_ = fit_periodic_grid(p.frame, e.min_x, e.min_y, e.max_x, e.max_y,
-                                     grid_cell_for(static_cast<double>(cell_size_), e.widest),
-                                     static_cast<double>(4 * n_ + 16));
-  nx_ = periodic_grid_.nx;
-  ny_ = periodic_grid_.ny;
-  origin_x_ = static_cast<Real>(0);
-  origin_y_ = static_cast<Real>(0);
-#pragma omp parallel for schedule(static) if (parallel)
+  fold_small_extent(b);
+  team_single([&] {
+    const SmallExtent e = take_small_extent();
+    periodic_grid_ = fit_periodic_grid(p.frame, e.min_x, e.min_y, e.max_x, e.max_y,
+                                       grid_cell_for(static_cast<double>(cell_size_), e.widest),
+                                       static_cast<double>(4 * n_ + 16));
+    nx_ = periodic_grid_.nx;
+    ny_ = periodic_grid_.ny;
+    origin_x_ = static_cast<Real>(0);
+    origin_y_ = static_cast<Real>(0);
+  });
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
     cell_of_[i] = periodic_grid_cell(periodic_grid_, static_cast<double>(b.lo_x[i]),
                                      static_cast<double>(b.lo_y[i]));
   }
-  sort_into_cells(nx_ * ny_);
+  team_single([&] { sort_into_cells(nx_ * ny_); });
 }
 
 // What both scans share: who emits, all-pairs, the large particles. `overlaps(j)` is the
@@ -188,15 +198,17 @@ void CandidatePairs<Real>::visit_candidates(std::int32_t i, const BoxArrays<Real
 template <class Real>
 void CandidatePairs<Real>::find(const BoxArrays<Real>& b, Method method, bool parallel,
                                 PairList& pairs, const PeriodicView* periodic) {
-  if (periodic) {
-    if (method == Method::Grid) bin_periodic(b, *periodic, parallel);
+  on_team(parallel, [&] {
+    if (periodic) {
+      if (method == Method::Grid) bin_periodic(b, *periodic);
+      fill_rows(n_, parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
+        visit_periodic(i, b, *periodic, method, emit);
+      });
+      return;
+    }
+    if (method == Method::Grid) bin(b);
     fill_rows(n_, parallel, row_count_, pairs,
-              [&](std::int32_t i, auto&& emit) { visit_periodic(i, b, *periodic, method, emit); });
-    return;
-  }
-  if (method == Method::Grid) bin(b, parallel);
-  fill_rows(n_, parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
-    visit_candidates(i, b, method, emit);
+              [&](std::int32_t i, auto&& emit) { visit_candidates(i, b, method, emit); });
   });
 }
 

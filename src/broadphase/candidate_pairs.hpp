@@ -13,6 +13,7 @@
 #include "tridem/scene.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace tridem {
@@ -60,7 +61,8 @@ class CandidatePairs {
   /// `longest_edge` and `motion` are per particle; they fix which particles are small.
   CandidatePairs(const std::vector<double>& longest_edge, const std::vector<Motion>& motion);
 
-  /// Fills `pairs` (rows by emitter, partners ascending). `parallel` runs it with OpenMP.
+  /// Fills `pairs` (rows by emitter, partners ascending). Team code (core/omp_team.hpp):
+  /// on the caller's team inside one, else on a region of its own when `parallel`.
   /// With `periodic`, pairs are also found through the periodic boundaries, each with its
   /// partner's nearest image (grid and all-pairs).
   void find(const BoxArrays<Real>& boxes, Method method, bool parallel, PairList& pairs,
@@ -73,8 +75,11 @@ class CandidatePairs {
   struct SmallExtent {
     double min_x = 0, min_y = 0, max_x = 0, max_y = 0, widest = 0;
   };
-  SmallExtent small_extent(const BoxArrays<Real>& boxes, bool parallel) const;
-  void bin(const BoxArrays<Real>& boxes, bool parallel);
+  /// Team code: every thread's share of the small particles' extent folded into
+  /// extent_sum_; then take_small_extent, on one thread, reads it and starts the next sum.
+  void fold_small_extent(const BoxArrays<Real>& boxes);
+  SmallExtent take_small_extent();
+  void bin(const BoxArrays<Real>& boxes);
   template <class Overlaps, class ScanCells, class Visit>
   void visit_with(std::int32_t i, Method method, Overlaps&& overlaps, ScanCells&& scan_cells,
                   Visit&& visit) const;
@@ -83,7 +88,7 @@ class CandidatePairs {
                         Visit&& visit) const;
   // The periodic grid (broadphase/periodic_grid.hpp): cells that tile each periodic
   // direction, the other direction binned as in bin().
-  void bin_periodic(const BoxArrays<Real>& boxes, const PeriodicView& p, bool parallel);
+  void bin_periodic(const BoxArrays<Real>& boxes, const PeriodicView& p);
   template <class Visit>
   void visit_periodic(std::int32_t i, const BoxArrays<Real>& boxes, const PeriodicView& p,
                       Method method, Visit&& visit) const;
@@ -100,6 +105,14 @@ class CandidatePairs {
   std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
   std::vector<std::int32_t> sorted_;
   std::vector<std::int64_t> row_count_;
+  // The small particles' corners' extent and widest box, summed by the team's threads
+  // (fold_small_extent); the empty sum between steps.
+  SmallExtent extent_sum_ = empty_extent();
+  static SmallExtent empty_extent() {
+    const double big = std::numeric_limits<double>::max();
+    return {big, big, std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest(),
+            0};
+  }
 };
 
 }  // namespace tridem

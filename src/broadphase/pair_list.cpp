@@ -13,30 +13,35 @@ void exclusive_scan(const std::vector<std::int64_t>& counts, std::size_t n,
 
 void build_reverse_index(const PairList& pairs, std::size_t n, bool parallel,
                          ReverseIndex& out) {
-  const auto n_emitters = static_cast<std::int64_t>(pairs.offset.size()) - 1;
-  out.cursor.assign(n, 0);
-  // Count how often each particle is a partner.
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::int64_t s = 0; s < pairs.count(); ++s) {
+  on_team(parallel, [&] {
+    const auto n_emitters = static_cast<std::int64_t>(pairs.offset.size()) - 1;
+    const std::int64_t count = pairs.count();
+    team_single([&] { out.cursor.assign(n, 0); });
+    // Count how often each particle is a partner.
+#pragma omp for schedule(static)
+    for (std::int64_t s = 0; s < count; ++s) {
 #pragma omp atomic
-    ++out.cursor[pairs.partner[s]];
-  }
-  exclusive_scan(out.cursor, n, out.offset);
-  grow_to(out.slot, pairs.count());
-  std::copy(out.offset.begin(), out.offset.end() - 1, out.cursor.begin());
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::int64_t e = 0; e < n_emitters; ++e) {
-    for (std::int64_t s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s) {
-      std::int64_t at;
-#pragma omp atomic capture
-      at = out.cursor[pairs.partner[s]]++;
-      out.slot[at] = s;
+      ++out.cursor[pairs.partner[s]];
     }
-  }
-  // The atomic fill order depends on scheduling; sorting makes it deterministic.
-#pragma omp parallel for schedule(dynamic, 1024) if (parallel)
-  for (std::int64_t p = 0; p < static_cast<std::int64_t>(n); ++p)
-    sort_row(out.slot.data(), out.offset[p], out.offset[p + 1]);
+    team_single([&] {
+      exclusive_scan(out.cursor, n, out.offset);
+      grow_to(out.slot, count);
+      std::copy(out.offset.begin(), out.offset.end() - 1, out.cursor.begin());
+    });
+#pragma omp for schedule(static)
+    for (std::int64_t e = 0; e < n_emitters; ++e) {
+      for (std::int64_t s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s) {
+        std::int64_t at;
+#pragma omp atomic capture
+        at = out.cursor[pairs.partner[s]]++;
+        out.slot[at] = s;
+      }
+    }
+    // The atomic fill order depends on scheduling; sorting makes it deterministic.
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t p = 0; p < static_cast<std::int64_t>(n); ++p)
+      sort_row(out.slot.data(), out.offset[p], out.offset[p + 1]);
+  });
 }
 
 }  // namespace tridem

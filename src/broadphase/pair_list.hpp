@@ -4,6 +4,7 @@
 // appears once. Grouping by emitter lets each pair find its contact history of the
 // previous step in the emitter's old row, and keeps the order deterministic.
 #include "broadphase/row_sort.hpp"
+#include "core/omp_team.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -26,7 +27,8 @@ struct ReverseIndex {
   std::vector<std::int64_t> cursor;  ///< scratch for filling
 };
 
-/// Builds the reverse index of `pairs` over n particles.
+/// Builds the reverse index of `pairs` over n particles. Team code (core/omp_team.hpp):
+/// on the caller's team inside one, else on a region of its own when `parallel`.
 void build_reverse_index(const PairList& pairs, std::size_t n, bool parallel,
                          ReverseIndex& out);
 
@@ -56,25 +58,31 @@ void exclusive_scan(const std::vector<std::int64_t>& counts, std::size_t n,
 /// Fills `pairs` with the rows of n emitters: visit_row(i, emit) calls emit(j) for every
 /// partner j of emitter i, the same ones each time. It runs twice, to count each row
 /// (into `row_count`, n entries) and then to fill it, so that every row has its own place
-/// whatever the thread that computes it; rows are then sorted by partner.
+/// whatever the thread that computes it; rows are then sorted by partner. Team code
+/// (core/omp_team.hpp): on the caller's team inside one, else on a region of its own when
+/// `parallel`.
 template <class VisitRow>
 void fill_rows(std::size_t n, bool parallel, std::vector<std::int64_t>& row_count,
                PairList& pairs, VisitRow&& visit_row) {
-  const auto rows = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(dynamic, 256) if (parallel)
-  for (std::int64_t i = 0; i < rows; ++i) {
-    std::int64_t count = 0;
-    visit_row(static_cast<std::int32_t>(i), [&count](std::int32_t) { ++count; });
-    row_count[i] = count;
-  }
-  exclusive_scan(row_count, n, pairs.offset);
-  grow_to(pairs.partner, pairs.count());
-#pragma omp parallel for schedule(dynamic, 256) if (parallel)
-  for (std::int64_t i = 0; i < rows; ++i) {
-    std::int64_t at = pairs.offset[i];
-    visit_row(static_cast<std::int32_t>(i), [&](std::int32_t j) { pairs.partner[at++] = j; });
-    sort_row(pairs.partner.data(), pairs.offset[i], pairs.offset[i + 1]);
-  }
+  on_team(parallel, [&] {
+    const auto rows = static_cast<std::int64_t>(n);
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t i = 0; i < rows; ++i) {
+      std::int64_t count = 0;
+      visit_row(static_cast<std::int32_t>(i), [&count](std::int32_t) { ++count; });
+      row_count[i] = count;
+    }
+    team_single([&] {
+      exclusive_scan(row_count, n, pairs.offset);
+      grow_to(pairs.partner, pairs.count());
+    });
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t i = 0; i < rows; ++i) {
+      std::int64_t at = pairs.offset[i];
+      visit_row(static_cast<std::int32_t>(i), [&](std::int32_t j) { pairs.partner[at++] = j; });
+      sort_row(pairs.partner.data(), pairs.offset[i], pairs.offset[i + 1]);
+    }
+  });
 }
 
 }  // namespace tridem

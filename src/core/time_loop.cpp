@@ -20,6 +20,21 @@ std::int64_t next_multiple(std::int64_t step, std::int64_t every, std::int64_t l
 
 bool is_due(std::int64_t step, std::int64_t every) { return every > 0 && step % every == 0; }
 
+/// Adds the wall time of its scope to `total`.
+class OutputClock {
+ public:
+  explicit OutputClock(double& total) : total_(total), t0_(std::chrono::steady_clock::now()) {}
+  ~OutputClock() {
+    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+  OutputClock(const OutputClock&) = delete;
+  OutputClock& operator=(const OutputClock&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
 }  // namespace
 
 TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, CheckpointMeta meta,
@@ -41,6 +56,7 @@ TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, Checkpoin
 }
 
 void TimeLoop::start(bool resumed) {
+  const OutputClock clock(output_seconds_);
   if (!resumed) {
     const std::int64_t step = solver_.step();
     emit(step, every_ > 0 && (is_due(step, every_) || step == last_), true, measure_due_at(step));
@@ -63,6 +79,7 @@ int TimeLoop::run() {
     if (signal == 0) write_due(solver_.step());
   }
   bar_.finish();
+  const OutputClock clock(output_seconds_);
   if (signal != 0) keep_state(files_.checkpoint);
   // The run is done when its last frame is on disk (or has failed, which throws here).
   out_.finish_frames();
@@ -101,6 +118,7 @@ void TimeLoop::advance_chunk(std::int64_t target) {
 }
 
 void TimeLoop::write_due(std::int64_t step) {
+  const OutputClock clock(output_seconds_);
   const bool frame = every_ > 0 && (is_due(step, every_) || step == last_);
   const bool log = is_due(step, log_every_) || step == last_;
   const bool measure = measure_due_at(step);

@@ -39,6 +39,9 @@ class TimeLoop {
   int run();
 
   const StateFiles& files() const { return files_; }
+  /// Wall time spent in outputs so far: snapshots, logs, checkpoints, final.csv, and the
+  /// wait for a frame written beside the stepping.
+  double output_seconds() const { return output_seconds_; }
 
  private:
   /// Advances to `target` unless interrupted; returns the interrupting signal or 0.
@@ -65,6 +68,7 @@ class TimeLoop {
   std::int64_t chunk_ = 1;
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints
+  double output_seconds_ = 0;
 };
 
 }  // namespace tridem

@@ -8,14 +8,23 @@
 // support/float_compare.hpp), which a single missing bond force exceeds by far: a
 // triangle's load in this disc (median 1.5e4 N/m, up to 1e6 N/m, measured on the CPU at
 // steps 100 to 600) moves it by 2e-9 m (up to 2e-7 m) in one step of 6.9e-8 s, and a force
-// left out for the 100 steps between comparisons by 1e4 times that. The damage states must be the
-// same: which bonds are broken, which damaged (but for a point within the damage tolerance of the
-// threshold: expect_same_damage), and each point's damage to rounding. The measured differences are
-// printed.
+// left out for the 100 steps between comparisons by 1e4 times that.
+// The impacts and the softening bonds make the run unstable: the serial run against itself
+// with one rounding kicked into each step's velocity changes (support/rounding_twin.hpp)
+// parts by 1e-17 m and 3e-9 m/s at step 100, then about tenfold per 100 steps, 1e-12 m and
+// 8e-5 m/s at step 600 (RoundingTwin.*); on the H200 the GPU parted from the serial run by
+// 1.1e-8 m/s at step 100 and 3.4e-4 m/s at step 600 (7e-12 m), 4-12 times a twin's spread.
+// So each tolerance grows to kEnvelope times the twin's spread where that is larger: the
+// serial run's own sensitivity to rounding, not a looser constant. A missing force still
+// fails at the first comparisons, whose bounds stay within 1.6 times the fixed ones.
+// The damage states must be the same: which bonds are broken, which damaged (but for a point
+// within the damage tolerance of the threshold: expect_same_damage), and each point's damage
+// to rounding. The measured differences are printed.
 #include "support/backend_test.hpp"
 #include "support/bonded_disc.hpp"
 #include "support/float_compare.hpp"
 #include "support/gpu_compare.hpp"
+#include "support/rounding_twin.hpp"
 #include "tridem/error.hpp"
 #include "tridem/solver_state.hpp"
 
@@ -65,6 +74,10 @@ double expect_same_damage(const SolverState& cpu, const SolverState& gpu, double
   return largest;
 }
 
+/// How many times the rounding twin's spread a backend may part from the reference: the
+/// measured GPU/twin ratio is 4-12 in double (bench/results/gpu_suite_2026-12-02b_nvidia-h200).
+constexpr double kEnvelope = 50;
+
 void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, std::int64_t steps,
                         std::int64_t every) {
   auto cpu =
@@ -72,20 +85,24 @@ void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, st
   auto gpu = test::solver_for(scene, choice);
   ASSERT_NE(gpu->description().find(backend_name(Backend::Cuda)), std::string::npos);
   const bool in_float = choice.precision == Precision::Float;
-  const double dx = in_float ? test::kFloatPositionTolerance : test::kPositionTolerance;
-  const double da = in_float ? test::kFloatAngleTolerance : test::kAngleTolerance;
-  const double dv = in_float ? test::kFloatVelocityTolerance : test::kVelocityTolerance;
+  const double fixed_dx = in_float ? test::kFloatPositionTolerance : test::kPositionTolerance;
+  const double fixed_da = in_float ? test::kFloatAngleTolerance : test::kAngleTolerance;
+  const double fixed_dv = in_float ? test::kFloatVelocityTolerance : test::kVelocityTolerance;
+  test::RoundingTwin twin(
+      test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method, choice.precision)),
+      in_float ? 0x1p-24 : 0x1p-53);
   // A point's damage is a smooth function of its opening while it softens, of slope about
   // 1/delta_0 with delta_0 = f_t / k the elastic limit's opening (k = E/h, h = 2.9 mm
   // across a 5 mm element: delta_0 = 5.8e-7 m): the position tolerance, as a difference of
   // opening, allows 1e-9 m / delta_0 = 2e-3 of damage in double and 3e-8 m / delta_0 = 5e-2
   // in float.
-  const double dd = in_float ? 5e-2 : 2e-3;
+  const double fixed_dd = in_float ? 5e-2 : 2e-3;
   Snapshot a, b;
   SolverState sa, sb;
   for (std::int64_t s = every; s <= steps; s += every) {
     cpu->advance(every);
     gpu->advance(every);
+    twin.advance(every);
     cpu->snapshot(a, true);
     gpu->snapshot(b, true);
     cpu->save_state(sa);
@@ -93,16 +110,24 @@ void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, st
     const std::string what = scene.source + ", step " + std::to_string(s);
     ASSERT_EQ(a.size(), b.size());
     const test::Difference d = test::max_difference(a, b);
+    const test::Difference spread = twin.spread_from(a);
+    const double dx = std::max(fixed_dx, kEnvelope * spread.position);
+    const double da = std::max(fixed_da, kEnvelope * spread.angle);
+    const double dv = std::max(fixed_dv, kEnvelope * spread.velocity);
+    // Damage follows the opening, so its tolerance grows with the position's.
+    const double dd = fixed_dd * dx / fixed_dx;
     std::size_t near = 0;
     const double damage = expect_same_damage(sa, sb, dd, near, what);
     const test::BondCount count = test::count_bonds(sa), gpu_count = test::count_bonds(sb);
     const EnergyBudget ea = cpu->energy(), eb = gpu->energy();
-    std::printf("%s: max |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s, |d damage| %.3g; "
-                "damaged %zu/%zu, broken %zu/%zu of %zu bonds; fracture %.6g/%.6g J/m, elastic "
-                "%.6g/%.6g J/m; %zu near misses at a threshold\n",
-                what.c_str(), d.position, d.angle, d.velocity, damage, count.damaged,
-                gpu_count.damaged, count.broken, gpu_count.broken, sa.bonds(),
-                ea.dissipated_fracture, eb.dissipated_fracture, ea.elastic, eb.elastic, near);
+    std::printf(
+        "%s: max |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s, |d damage| %.3g; "
+        "damaged %zu/%zu, broken %zu/%zu of %zu bonds; fracture %.6g/%.6g J/m, elastic "
+        "%.6g/%.6g J/m; %zu near misses at a threshold; rounding twin |dx| %.3g m, |dv| %.3g "
+        "m/s\n",
+        what.c_str(), d.position, d.angle, d.velocity, damage, count.damaged, gpu_count.damaged,
+        count.broken, gpu_count.broken, sa.bonds(), ea.dissipated_fracture, eb.dissipated_fracture,
+        ea.elastic, eb.elastic, near, spread.position, spread.velocity);
     EXPECT_LE(d.position, dx) << what;
     EXPECT_LE(d.angle, da) << what;
     EXPECT_LE(d.velocity, dv) << what;

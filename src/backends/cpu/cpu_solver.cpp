@@ -4,6 +4,7 @@
 #include "broadphase/pair_sums.hpp"
 #include "broadphase/row_energy.hpp"
 #include "core/memory_estimate.hpp"
+#include "core/omp_team.hpp"
 #include "core/omp_threads.hpp"
 #include "core/particle_columns.hpp"
 #include "core/runaway_message.hpp"
@@ -63,7 +64,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     for_each_body_field(
         [&](auto field) { column(field) = initial_body_column(field, bm, n_bodies_); });
     for_each_member_field([&](auto field) { column(field) = initial_body_column(field, bm, n_); });
-    place_members();
+    on_team(false, [&] { place_members(); });
   }
   for (const auto& law : contact_law_table(scene.materials))
     laws_.push_back(physics::SceneContactLaw::cast<Real>(law));
@@ -110,13 +111,55 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     parallel_ = choice_.parallel();
     const auto start = std::chrono::steady_clock::now();
-    run_step(*this, kPipeline, stopwatch_);
+    run_step_on_team();
     choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
     ++step_;
     time_ += dt_;
   }
+}
+
+// One step, one parallel region (issue 12): every stage is team code (core/omp_team.hpp),
+// its loops shared out to the threads of one team that lives for the whole step, instead
+// of a region per loop (a dozen forks and joins a step). The clock works as run_step's
+// (core/stage_pipeline.hpp): read by the first thread once each stage's last loop has
+// ended on every thread; a stage that throws ends the step before the clock counts it.
+template <class Real>
+void CpuSolver<Real>::run_step_on_team() {
+  StageStopwatch& clock = stopwatch_;
+  const bool timed = clock.on && clock.sample_this_step();
+  const auto start = std::chrono::steady_clock::now();
+  if (timed) clock.begin_step();
+  too_deep_ = kNoIndex;
+  first_runaway_ = kNoIndex;
+  // From the poses at the step's start, which only Integrate changes; read by Check and
+  // Integrate.
+  if (!servo_targets_.empty()) update_servo_targets();
+  auto run = [&](std::size_t first, std::size_t last) {
+    on_team(parallel_, [&] {
+      for (std::size_t k = first; k < last; ++k) {
+        run_stage(kPipeline[k]);
+        if (timed && omp_get_thread_num() == 0) clock.end_stage(kPipeline[k]);
+      }
+    });
+  };
+  constexpr std::size_t pair_list = 1;
+  static_assert(kPipeline[pair_list] == Stage::PairList);
+  if (decomposed_) {
+    // The decomposition's finder makes its own regions: its stage runs between two.
+    run(0, pair_list);
+    run_stage(Stage::PairList);
+    if (timed) clock.end_stage(Stage::PairList);
+    run(pair_list + 1, kPipeline.size());
+  } else {
+    run(0, kPipeline.size());
+  }
+  if (timed)
+    clock.end_step();
+  else if (clock.on)
+    clock.count_untimed_step();
+  if (clock.on) clock.add_step_wall(std::chrono::steady_clock::now() - start);
 }
 
 template <class Real>
@@ -132,14 +175,13 @@ void CpuSolver<Real>::run_stage(Stage stage) {
       accumulate();
       if (bonds() > 0) add_bond_loads();
       if (n_bodies_ > 0) gather_bodies();
-      if (!servo_targets_.empty()) update_servo_targets();
       return;
     case Stage::Check:
       if (n_bodies_ > 0)
         check_body_runaway();
       else
         check_runaway();
-      if (check_hook_) check_hook_();
+      if (check_hook_) team_master(check_hook_);
       return;
     case Stage::Integrate:
       if (bonds() > 0) commit_bonds();
@@ -155,7 +197,7 @@ StageTimes CpuSolver<Real>::stage_times() const {
 template <class Real>
 void CpuSolver<Real>::update_geometry() {
   const auto n = static_cast<std::int64_t>(n_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     Vec2<Real> body_frame[3];
     physics::load_vertices(offset_x_, offset_y_, i, body_frame);
@@ -190,8 +232,10 @@ void CpuSolver<Real>::find_pairs() {
     finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                  pairs_);
   }
-  grow_to(slip_, pairs_.count());
-  grow_to(result_, pairs_.count());
+  team_single([&] {
+    grow_to(slip_, pairs_.count());
+    grow_to(result_, pairs_.count());
+  });
   build_reverse_index(pairs_, n_, parallel_, reverse_);
 }
 
@@ -221,12 +265,12 @@ physics::PeriodicFrame CpuSolver<Real>::frame_at(double t) const {
 template <class Real>
 void CpuSolver<Real>::compute_pair_forces() {
   const auto n = static_cast<std::int64_t>(n_);
-  // The lowest emitter with a pair deeper than the limit: a min-reduction, so the same
-  // pair is reported whatever the threads.
-  std::int64_t too_deep = n;
+  // The lowest emitter with a pair deeper than the limit: a min over the threads, so the
+  // same pair is reported whatever the threads.
+  std::int64_t too_deep = kNoIndex;
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
-#pragma omp parallel for schedule(dynamic, 256) if (parallel_) reduction(min : too_deep)
+#pragma omp for schedule(dynamic, 256) nowait
   for (std::int64_t e = 0; e < n; ++e) {
     const auto emitter = static_cast<std::int32_t>(e);
     OldRow<std::int64_t, physics::PairSlip<Real>> old{old_pairs_.partner.data(), old_slip_.data(),
@@ -260,7 +304,8 @@ void CpuSolver<Real>::compute_pair_forces() {
     }
     if (!image_power_.empty()) image_power_[e] = image_power;
   }
-  if (too_deep < n) report_penetration(static_cast<std::int32_t>(too_deep));
+  team_fold(too_deep_, too_deep, [](std::int64_t a, std::int64_t b) { return std::min(a, b); });
+  if (too_deep_ < n) team_single([&] { report_penetration(static_cast<std::int32_t>(too_deep_)); });
 }
 
 // One thread per bond, each writing its own slot: OpenMP equals serial. The bond's frame:
@@ -271,7 +316,7 @@ void CpuSolver<Real>::compute_bond_forces() {
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
   const physics::BondArrays<Real> v = bond_view_;
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t k = 0; k < nb; ++k) {
     const std::int32_t a = v.a[k], b = v.b[k];
     const Vec2d origin{x_[a], y_[a]}, cb{x_[b], y_[b]};
@@ -285,7 +330,7 @@ void CpuSolver<Real>::compute_bond_forces() {
 template <class Real>
 void CpuSolver<Real>::add_bond_loads() {
   const auto n = static_cast<std::int64_t>(n_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t p = 0; p < n; ++p) {
     Vec2<Real> f{fx_[p], fy_[p]};
     Real t = torque_[p];
@@ -299,7 +344,7 @@ void CpuSolver<Real>::add_bond_loads() {
 template <class Real>
 void CpuSolver<Real>::commit_bonds() {
   const auto nb = static_cast<std::int64_t>(bonds());
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t k = 0; k < nb; ++k) physics::commit_bond(bond_view_, k);
 }
 
@@ -322,7 +367,7 @@ void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
 template <class Real>
 void CpuSolver<Real>::accumulate() {
   const auto n = static_cast<std::int64_t>(n_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t p = 0; p < n; ++p) {
     Vec2<Real> f;
     Real t;
@@ -349,14 +394,15 @@ template <class Real>
 template <class IsFree, class Advanced, class HalfSize>
 std::int64_t CpuSolver<Real>::first_runaway(std::int64_t n, IsFree is_free, Advanced advanced,
                                             HalfSize half_size) const {
-  std::int64_t bad = n;
-#pragma omp parallel for schedule(static) if (parallel_) reduction(min : bad)
+  std::int64_t bad = kNoIndex;
+#pragma omp for schedule(static) nowait
   for (std::int64_t i = 0; i < n; ++i) {
     if (!is_free(i)) continue;
     const physics::Pose<double> p = advanced(static_cast<std::size_t>(i));
     if (physics::runaway_step(p, half_size(i), dt_)) bad = std::min(bad, i);
   }
-  return bad;
+  team_fold(first_runaway_, bad, [](std::int64_t a, std::int64_t b) { return std::min(a, b); });
+  return std::min(first_runaway_, n);
 }
 
 template <class Real>
@@ -366,11 +412,12 @@ void CpuSolver<Real>::check_runaway() const {
       n, [this](std::int64_t i) { return motion_[i] == Motion::Free; },
       [this](std::size_t i) { return advanced_pose(i); },
       [this](std::int64_t i) { return static_cast<double>(half_size_[i]); });
-  if (bad < n) {
-    const auto i = static_cast<std::size_t>(bad);
-    const physics::Pose<double> p = advanced_pose(i);
-    throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
-  }
+  if (bad < n)
+    team_single([&] {
+      const auto i = static_cast<std::size_t>(bad);
+      const physics::Pose<double> p = advanced_pose(i);
+      throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
+    });
 }
 
 template <class Real>
@@ -378,7 +425,7 @@ void CpuSolver<Real>::integrate() {
   const auto n = static_cast<std::int64_t>(n_);
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(physics::time_after_step(step_, dt_)) : physics::PeriodicFrame{};
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     physics::Pose<double> p = advanced_pose(static_cast<std::size_t>(i));
     add_step_energy(static_cast<std::size_t>(i), pose(static_cast<std::size_t>(i)), p,
@@ -405,7 +452,7 @@ void CpuSolver<Real>::write_program_velocities() {
   const auto n = static_cast<std::int64_t>(n_);
   const physics::ProgramTable table = program_table();
   const double t_new = physics::time_after_step(step_, dt_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (program_[i] < 0) continue;
     Vec2d v;
@@ -459,7 +506,7 @@ void CpuSolver<Real>::wrap(const physics::PeriodicFrame& frame, physics::Pose<do
 template <class Real>
 void CpuSolver<Real>::gather_bodies() {
   const auto nb = static_cast<std::int64_t>(n_bodies_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t b = 0; b < nb; ++b) {
     Vec2d f{};
     double t = 0;
@@ -487,13 +534,14 @@ void CpuSolver<Real>::check_body_runaway() const {
       nb, [this](std::int64_t b) { return body_motion_[b] == Motion::Free; },
       [this](std::size_t b) { return advanced_body_pose(b); },
       [this](std::int64_t b) { return body_half_size_[b]; });
-  if (bad < nb) {
-    const auto b = static_cast<std::size_t>(bad);
-    const physics::Pose<double> p = advanced_body_pose(b);
-    throw RunError(
-        "body id " + std::to_string(bad) + ": " +
-        runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b], norm(p.v), dt_, limit_));
-  }
+  if (bad < nb)
+    team_single([&] {
+      const auto b = static_cast<std::size_t>(bad);
+      const physics::Pose<double> p = advanced_body_pose(b);
+      throw RunError("body id " + std::to_string(bad) + ": " +
+                     runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b], norm(p.v),
+                                     dt_, limit_));
+    });
 }
 
 // Two loops: every body's step (its members' rows of energy read the walls' member
@@ -503,7 +551,7 @@ void CpuSolver<Real>::integrate_bodies() {
   const auto nb = static_cast<std::int64_t>(n_bodies_);
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(physics::time_after_step(step_, dt_)) : physics::PeriodicFrame{};
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t b = 0; b < nb; ++b) {
     const auto ub = static_cast<std::size_t>(b);
     const physics::Pose<double> before = body_pose(ub);
@@ -535,7 +583,7 @@ void CpuSolver<Real>::integrate_bodies() {
 template <class Real>
 void CpuSolver<Real>::place_members() {
   const auto n = static_cast<std::int64_t>(n_);
-#pragma omp parallel for schedule(static) if (parallel_)
+#pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     const auto b = static_cast<std::size_t>(member_body_[i]);
     const physics::Pose<double> p =

@@ -23,6 +23,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -49,7 +50,8 @@ class CpuSolver final : public Solver {
   void set_stage_timing(bool on) override { stopwatch_.on = on; }
 
   /// The stages in the order advance() runs them (core/stage_pipeline.hpp): each its own
-  /// loop over particles or pairs, none fused.
+  /// loops over particles or pairs, none fused; all of them on one OpenMP team per step
+  /// (run_step_on_team).
   static constexpr std::array<Stage, kStageCount> kPipeline = {
       Stage::Geometry, Stage::PairList, Stage::PairForces,
       Stage::Gather,   Stage::Check,    Stage::Integrate};
@@ -74,6 +76,9 @@ class CpuSolver final : public Solver {
   void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
 
  private:
+  void run_step_on_team();
+  // The stages' functions are team code (core/omp_team.hpp): every thread of the step's
+  // team calls them, their loops are worksharing loops, their serial parts team_single.
   void update_geometry();
   void find_pairs();
   void compute_pair_forces();
@@ -175,6 +180,11 @@ class CpuSolver final : public Solver {
   std::vector<physics::PairForce<Real>> result_;
   ReverseIndex reverse_;
   StageStopwatch stopwatch_;
+  // The lowest index the team's threads found too deep (a pair's emitter) or running away
+  // (a particle or body) in this step: folded by the threads, kNoIndex when none.
+  static constexpr std::int64_t kNoIndex = std::numeric_limits<std::int64_t>::max();
+  std::int64_t too_deep_ = kNoIndex;
+  mutable std::int64_t first_runaway_ = kNoIndex;
   std::function<void()> check_hook_;
   // Periodic boundaries (physics/periodic_frame.hpp): pairs see their partners' nearest
   // images, free particles (bodies) are put back into the cell as they step.

@@ -12,18 +12,27 @@ void write_bodies_csv(const std::filesystem::path& file, const Snapshot& s) {
   io::OutFile out(file);
   // Users' scripts index these columns by name; never reorder or rename them.
   out.write("id,x,y,theta,vx,vy,omega,mass,inertia,members\n");
-  const auto row = [&](std::size_t b, double x, double y, double theta, double vx, double vy,
-                       double omega, double mass, double inertia, std::int64_t members) {
-    out.print("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", b, x, y,
-              theta, vx, vy, omega, mass, inertia, members);
+  const auto row = [](fmt::memory_buffer& text, std::size_t b, double x, double y, double theta,
+                      double vx, double vy, double omega, double mass, double inertia,
+                      std::int64_t members) {
+    fmt::format_to(fmt::appender(text),
+                   "{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", b, x,
+                   y, theta, vx, vy, omega, mass, inertia, members);
   };
   if (s.member_body.empty()) {
-    for (std::size_t k = 0; k < s.size(); ++k)
-      row(k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.mass[k], s.inertia[k], 1);
+    out.print_rows(s.size(), [&](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k)
+        row(text, k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.mass[k],
+            s.inertia[k], 1);
+    });
   } else {
-    for (std::size_t b = 0; b < s.body_count(); ++b)
-      row(b, s.body_x[b], s.body_y[b], s.body_theta[b], s.body_vx[b], s.body_vy[b], s.body_omega[b],
-          s.body_mass[b], s.body_inertia[b], s.body_first[b + 1] - s.body_first[b]);
+    out.print_rows(s.body_count(),
+                   [&](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
+                     for (std::size_t b = first; b < last; ++b)
+                       row(text, b, s.body_x[b], s.body_y[b], s.body_theta[b], s.body_vx[b],
+                           s.body_vy[b], s.body_omega[b], s.body_mass[b], s.body_inertia[b],
+                           s.body_first[b + 1] - s.body_first[b]);
+                   });
   }
   out.close();
 }

@@ -12,11 +12,14 @@ void write_final_csv(const std::filesystem::path& file, const Snapshot& s) {
   // Users' scripts index these columns by name; never reorder or rename them (`body` came
   // with bodies of several triangles, issue 13: new columns go at the end).
   out.write("id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3,body\n");
-  for (std::size_t k = 0; k < s.size(); ++k)
-    out.print("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-              "{:.17g},{:.17g},{:.17g},{}\n",
-              k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.x1[k], s.y1[k],
-              s.x2[k], s.y2[k], s.x3[k], s.y3[k], s.body_of(k));
+  out.print_rows(s.size(), [&s](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k)
+      fmt::format_to(fmt::appender(text),
+                     "{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+                     "{:.17g},{:.17g},{:.17g},{}\n",
+                     k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.x1[k], s.y1[k],
+                     s.x2[k], s.y2[k], s.x3[k], s.y3[k], s.body_of(k));
+  });
   out.close();
 }
 

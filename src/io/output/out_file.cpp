@@ -2,8 +2,13 @@
 
 #include "tridem/error.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <exception>
+#include <vector>
 
 namespace tridem::io {
 
@@ -34,6 +39,43 @@ OutFile& OutFile::operator=(OutFile&& other) noexcept {
 void OutFile::write(std::string_view text) {
   buffer_.append(text.data(), text.data() + text.size());
   if (buffer_.size() >= kChunk) drain();
+}
+
+void OutFile::print_rows(std::size_t count, const RowBlock& rows) {
+  constexpr std::size_t kBlockRows = 4096;
+  const std::size_t blocks = (count + kBlockRows - 1) / kBlockRows;
+  const int threads = blocks > 1 ? std::max(1, omp_get_max_threads()) : 1;
+  if (threads == 1) {
+    for (std::size_t first = 0; first < count; first += kBlockRows) {
+      rows(buffer_, first, std::min(count, first + kBlockRows));
+      if (buffer_.size() >= kChunk) drain();
+    }
+    return;
+  }
+  // A window of blocks at a time keeps the text in memory to a few per thread.
+  const std::size_t window = 4 * static_cast<std::size_t>(threads);
+  std::vector<fmt::memory_buffer> text(window);
+  for (std::size_t start = 0; start < blocks; start += window) {
+    const std::size_t end = std::min(blocks, start + window);
+    std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (std::size_t b = start; b < end; ++b) {
+      fmt::memory_buffer& out = text[b - start];
+      out.clear();
+      try {
+        rows(out, b * kBlockRows, std::min(count, (b + 1) * kBlockRows));
+      } catch (...) {
+#pragma omp critical(tridem_print_rows_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+    if (error) std::rethrow_exception(error);
+    for (std::size_t b = start; b < end; ++b) {
+      const fmt::memory_buffer& block = text[b - start];
+      buffer_.append(block.data(), block.data() + block.size());
+      if (buffer_.size() >= kChunk) drain();
+    }
+  }
 }
 
 void OutFile::drain() {

@@ -159,11 +159,16 @@ ImportedParticles mesh(const MeshRegion& region, const std::string& what) {
       for (int k = 0; k < 4; ++k) arcs.push_back(geo::addCircleArc(p[k], c, p[(k + 1) % 4]));
       geo::addPlaneSurface({geo::addCurveLoop(arcs)});
     } else {
+      // A rectangle is the polygon of its four corners; every outline is meshed alike.
       const double x0 = region.lo.x, y0 = region.lo.y, x1 = region.hi.x, y1 = region.hi.y;
-      const int p[4] = {geo::addPoint(x0, y0, 0), geo::addPoint(x1, y0, 0),
-                        geo::addPoint(x1, y1, 0), geo::addPoint(x0, y1, 0)};
-      std::vector<int> sides;
-      for (int k = 0; k < 4; ++k) sides.push_back(geo::addLine(p[k], p[(k + 1) % 4]));
+      const std::vector<Vec2d> outline =
+          region.kind == MeshRegion::Kind::Polygon
+              ? region.polygon
+              : std::vector<Vec2d>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+      std::vector<int> points, sides;
+      for (const Vec2d& v : outline) points.push_back(geo::addPoint(v.x, v.y, 0));
+      for (std::size_t k = 0; k < points.size(); ++k)
+        sides.push_back(geo::addLine(points[k], points[(k + 1) % points.size()]));
       geo::addPlaneSurface({geo::addCurveLoop(sides)});
     }
     geo::synchronize();

@@ -13,7 +13,7 @@ namespace tridem::scene_detail {
 
 /// Bumped whenever the table or the types it passes change, so that a module of another
 /// build of tridem is refused instead of called.
-inline constexpr int kGmshModuleAbi = 1;
+inline constexpr int kGmshModuleAbi = 2;  // 2: MeshRegion::polygon
 inline constexpr const char* kGmshModuleEntry = "tridem_gmsh_module";
 inline constexpr const char* kGmshModuleFile = "libtridem_gmsh.so";
 

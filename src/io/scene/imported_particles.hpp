@@ -33,15 +33,18 @@ ImportedParticles read_particle_csv(const std::filesystem::path& file);
 ImportedParticles read_gmsh_mesh(const std::filesystem::path& file,
                                  const std::vector<std::string>& body_groups);
 
-/// A region for Gmsh to mesh ([[mesh]] kind = "disc" or "rectangle").
+/// A region for Gmsh to mesh ([[mesh]] kind = "disc", "rectangle" or "polygon").
 struct MeshRegion {
-  enum class Kind { Disc, Rectangle } kind = Kind::Disc;
+  enum class Kind { Disc, Rectangle, Polygon } kind = Kind::Disc;
   Vec2d center{};     ///< disc
   double radius = 0;  ///< disc
   /// disc: the angle (rad) each of two flats at its top and bottom subtends at the centre
   /// (a flattened Brazilian disc, loaded over the flats); 0 = a full disc.
   double flat_angle = 0;
   Vec2d lo{}, hi{};   ///< rectangle's corners
+  /// polygon: its outline, a simple polygon in either orientation (a notched beam's
+  /// outline with its notch, for one)
+  std::vector<Vec2d> polygon;
   double size = 0;    ///< target element size, m
 };
 

@@ -1,7 +1,8 @@
-// [[mesh]] blocks: a disc or rectangle meshed by Gmsh, or a 2D Gmsh .msh file, into free
-// triangles (one body each); bonded = true joins every two of them that share an edge by a
-// cohesive bond (docs/fracture.md).
+// [[mesh]] blocks: a disc, rectangle or polygon meshed by Gmsh, or a 2D Gmsh .msh file,
+// into free triangles (one body each); bonded = true joins every two of them that share an
+// edge by a cohesive bond (docs/fracture.md).
 #include "io/scene/imported_particles.hpp"
+#include "io/scene/polygon_triangulation.hpp"
 #include "io/scene/scene_sections.hpp"
 #include "io/scene/triangle_shape.hpp"
 #include "tridem/error.hpp"
@@ -19,9 +20,12 @@
 namespace tridem::scene_detail {
 namespace {
 
-enum class Kind { Disc, Rectangle, File };
-constexpr std::array<std::pair<std::string_view, Kind>, 3> kKindNames{
-    {{"disc", Kind::Disc}, {"rectangle", Kind::Rectangle}, {"file", Kind::File}}};
+enum class Kind { Disc, Rectangle, Polygon, File };
+constexpr std::array<std::pair<std::string_view, Kind>, 4> kKindNames{
+    {{"disc", Kind::Disc},
+     {"rectangle", Kind::Rectangle},
+     {"polygon", Kind::Polygon},
+     {"file", Kind::File}}};
 
 std::filesystem::path resolve(const std::string& scene_source, const std::string& file) {
   std::filesystem::path p(file);
@@ -43,6 +47,8 @@ MeshRegion read_region(TableReader& r, Kind kind) {
   MeshRegion m;
   m.size = r.required(r.real("size"), "size");
   if (!(m.size > 0)) r.fail("size", fmt::format("must be > 0 (m), got {}", m.size));
+  if (kind != Kind::Disc && r.real("flat_angle"))
+    r.fail("flat_angle", "is for kind = \"disc\" only");
   if (kind == Kind::Disc) {
     m.kind = MeshRegion::Kind::Disc;
     m.center = r.required(r.vec2("center"), "center");
@@ -55,8 +61,27 @@ MeshRegion read_region(TableReader& r, Kind kind) {
     if (!(m.size < m.radius))
       r.fail("size", fmt::format("must be below the radius {} m, got {}", m.radius, m.size));
     check_expected_count(r, M_PI * m.radius * m.radius, m.size);
+  } else if (kind == Kind::Polygon) {
+    m.kind = MeshRegion::Kind::Polygon;
+    m.polygon = r.required(r.point_list("polygon", "an array of at least 3 points [[x, y], ...]"),
+                           "polygon");
+    // The checks of a [[body]]'s polygon (at least 3 distinct finite points, simple, not
+    // flat); its triangulation also gives the area that the count's estimate needs.
+    const PolygonTriangulation cut = triangulate_polygon(m.polygon);
+    if (cut.problem) r.fail("polygon", *cut.problem);
+    double area = 0;
+    for (const auto& t : cut.triangles) area += 0.5 * cross(t[1] - t[0], t[2] - t[0]);
+    Vec2d lo = m.polygon[0], hi = m.polygon[0];
+    for (const Vec2d& v : m.polygon) {
+      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+    }
+    if (!(m.size < std::min(hi.x - lo.x, hi.y - lo.y)))
+      r.fail("size", fmt::format("must be below the smaller side of the polygon's bounding box, "
+                                 "got {}",
+                                 m.size));
+    check_expected_count(r, area, m.size);
   } else {
-    if (r.real("flat_angle")) r.fail("flat_angle", "is for kind = \"disc\" only");
     m.kind = MeshRegion::Kind::Rectangle;
     const auto region = r.required(r.points<2>("region"), "region");
     m.lo = region[0];

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <omp.h>
+#include <sstream>
+#include <stdexcept>
 
 namespace tridem {
 namespace {
@@ -101,6 +104,50 @@ TEST(OutFile, FailedWriteIsReportedWithTheSystemReason) {
     EXPECT_NE(std::string(e.what()).find("/dev/full"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
   }
+}
+
+// Rows formatted on several threads come out in row order, byte for byte what one loop
+// writes, for row counts below, at and across the 4096-row blocks.
+TEST(OutFile, RowsFormattedInParallelAreWrittenInOrder) {
+  test::TempDir tmp;
+  const auto row = [](fmt::memory_buffer& text, std::size_t k) {
+    fmt::format_to(fmt::appender(text), "{},{:.17g}\n", k, 1.0 / static_cast<double>(k + 1));
+  };
+  const int threads = omp_get_max_threads();
+  for (int t : {1, 3}) {
+    omp_set_num_threads(t);
+    for (std::size_t n : {0, 1, 4095, 4096, 4097, 100000}) {
+      const auto file = tmp.path() / "rows.csv";
+      io::OutFile out(file);
+      out.write("head\n");
+      out.print_rows(n, [&](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) row(text, k);
+      });
+      out.close();
+      fmt::memory_buffer expected;
+      fmt::format_to(fmt::appender(expected), "head\n");
+      for (std::size_t k = 0; k < n; ++k) row(expected, k);
+      std::ifstream in(file, std::ios::binary);
+      std::stringstream got;
+      got << in.rdbuf();
+      EXPECT_EQ(got.str(), fmt::to_string(expected)) << n << " rows on " << t << " threads";
+    }
+  }
+  omp_set_num_threads(threads);
+}
+
+// An exception in one thread's block reaches the caller (never escapes an OpenMP region).
+TEST(OutFile, ErrorWhileFormattingRowsReachesTheCaller) {
+  test::TempDir tmp;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(3);
+  io::OutFile out(tmp.path() / "rows.csv");
+  EXPECT_THROW(out.print_rows(50000,
+                              [](fmt::memory_buffer&, std::size_t first, std::size_t) {
+                                if (first >= 20000) throw std::runtime_error("bad row");
+                              }),
+               std::runtime_error);
+  omp_set_num_threads(threads);
 }
 
 }  // namespace

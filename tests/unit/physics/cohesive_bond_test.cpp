@@ -166,6 +166,61 @@ TEST(CohesiveBond, BondOfTwoTrianglesPullsThemTogether) {
   EXPECT_LT(std::abs(r.force_a.x), 1e-3 * std::abs(r.torque_b));
 }
 
+// Two triangles bonded along an edge of length `length` (x = 0, from y = 0 to y = length,
+// normal +x from a to b); b is moved away from its bonded place along `direction` in
+// `steps` equal steps to `end`, both unrotated: the energy the bond released on the way.
+double energy_released(Vec2d direction, double length, double end, int steps) {
+  const double ca = -length / 3, cb = length / 3;
+  BondGeometry<double> g{};
+  for (int k = 0; k < kBondPoints; ++k) {
+    const double y = bond_point_position(k) * length;
+    g.on_a[k] = Vec2d{0 - ca, y - 0.5 * length};
+    g.on_b[k] = Vec2d{0 - cb, y - 0.5 * length};
+  }
+  g.normal = {1, 0};
+  g.length = length;
+  g.stiffness = kStiffness;
+  double damage[kBondPoints] = {0, 0}, released = 0;
+  for (int i = 1; i <= steps; ++i) {
+    const Vec2d gap = direction * (end * i / steps);
+    const BondForce<double> f =
+        bond_force(BondSide<double>{{0, 0}, 0.0}, BondSide<double>{Vec2d{cb - ca, 0} + gap, 0.0}, g,
+                   kGranite, damage);
+    for (int k = 0; k < kBondPoints; ++k) damage[k] = f.damage[k];
+    released += f.dissipated;
+    if (f.broken) break;
+  }
+  EXPECT_EQ(damage[0], 1.0);
+  EXPECT_EQ(damage[1], 1.0);
+  return released;
+}
+
+// The definition of G per bond edge (issue 14): a bond across an edge of length L releases
+// G_I L when pulled apart in pure mode I and G_II L when slid apart in pure mode II, to
+// rounding, in small steps or in a few large ones. Opened at an angle theta to its normal
+// (a bond inclined to a mode I crack's path: the crack's faces part along the crack's
+// normal, not the bond's), the linear mixed-mode criterion gives
+//   G(theta) = 1 / (cos^2 theta / G_I + sin^2 theta / G_II)
+// per unit length (whatever the strengths: docs/fracture.md, "The notched beam").
+TEST(CohesiveBond, BondReleasesGTimesItsLengthInEachMode) {
+  const double length = 1.3e-3;
+  const double end = 3 * 2 * kGranite.mode2_energy / kGranite.cohesion;  // past both ends
+  const double gi = kGranite.mode1_energy * length, gii = kGranite.mode2_energy * length;
+  for (int steps : {100000, 1000, 7}) {
+    EXPECT_NEAR(energy_released({1, 0}, length, end, steps), gi, 1e-9 * gi) << steps;
+    EXPECT_NEAR(energy_released({0, 1}, length, end, steps), gii, 1e-9 * gii) << steps;
+    EXPECT_NEAR(energy_released({0, -1}, length, end, steps), gii, 1e-9 * gii) << steps;
+  }
+  for (double degrees : {10.0, 30.0, 45.0, -60.0}) {
+    const double t = degrees * M_PI / 180;
+    const double per_length = 1 / (std::cos(t) * std::cos(t) / kGranite.mode1_energy +
+                                   std::sin(t) * std::sin(t) / kGranite.mode2_energy);
+    EXPECT_NEAR(energy_released({std::cos(t), std::sin(t)}, length, end, 10000),
+                per_length * length, 1e-9 * per_length * length)
+        << degrees << " degrees";
+  }
+}
+
 TEST(CohesiveBond, IntactBondSuppressesTheContact) {
   // Particle 0 bonded to 1 (bond 0, intact) and 2 (bond 1, broken).
   const std::int32_t first[] = {0, 2, 3, 4};

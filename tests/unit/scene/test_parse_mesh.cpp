@@ -1,5 +1,5 @@
-// [[mesh]] and the bond keys of [[material]] (issue 14): a disc and a rectangle meshed by
-// Gmsh, a .msh file, the bonds of shared edges, and the refusals with their messages.
+// [[mesh]] and the bond keys of [[material]] (issue 14): a disc, a rectangle and a polygon
+// meshed by Gmsh, a .msh file, the bonds of shared edges, and the refusals with their messages.
 #include "io/scene/scene_sections.hpp"
 #include "scene_refusal.hpp"
 
@@ -117,6 +117,48 @@ TEST(SceneMesh, RectangleWithoutBondsIsLooseTriangles) {
                               "s.toml");
   EXPECT_EQ(b.triangles.size(), s.triangles.size());
   EXPECT_GT(b.bonds.size(), b.triangles.size());
+}
+
+// A notched beam's outline (the notched beam of docs/fracture.md): the mesh fills the
+// polygon and leaves its notch empty, the notch's tip is a node, and no bond crosses the
+// notch (its two flanks are free faces).
+TEST(SceneMesh, PolygonIsMeshedWithItsNotch) {
+  if (!kHasGmsh) GTEST_SKIP() << "built with -DTRIDEM_WITH_GMSH=OFF";
+  const Scene s = parse_scene(
+      with_mesh("kind = \"polygon\"\npolygon = [[-0.03, 0], [-0.001, 0], [-0.001, 0.006], "
+                "[0, 0.007], [0.001, 0.006], [0.001, 0], [0.03, 0], [0.03, 0.015], "
+                "[-0.03, 0.015]]\nsize = 0.002\nmaterial = \"granite\"\nbonded = true\n"),
+      "s.toml");
+  // The beam less the notch: a 2 mm slot 6 mm deep and its tip's triangle, 1 mm high.
+  const double expected = 0.06 * 0.015 - 0.002 * 0.006 - 0.5 * 0.002 * 0.001;
+  double area = 0;
+  bool tip = false;
+  for (const TriangleSpec& t : s.triangles) {
+    EXPECT_GT(area_of(t), 0);
+    area += area_of(t);
+    const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
+    EXPECT_FALSE(std::abs(c.x) < 0.001 && c.y < 0.006) << "a triangle in the notch";
+    for (const Vec2d& v : t.vertices) tip = tip || (v.x == 0 && v.y == 0.007);
+  }
+  EXPECT_NEAR(area, expected, 1e-12);
+  EXPECT_TRUE(tip);
+  for (const BondSpec& b : s.bonds)
+    EXPECT_FALSE(std::abs(0.5 * (b.p.x + b.q.x)) < 1e-12 && std::max(b.p.y, b.q.y) <= 0.006)
+        << "a bond across the notch";
+  expect_refused(with_mesh("kind = \"polygon\"\npolygon = [[0, 0], [1, 1], [1, 0], [0, 1]]\n"
+                           "size = 0.1\nmaterial = \"granite\"\n"),
+                 {"[[mesh]] #1", "polygon", "intersects itself"});
+  expect_refused(with_mesh("kind = \"polygon\"\npolygon = [[0, 0], [1, 0]]\n"
+                           "size = 0.1\nmaterial = \"granite\"\n"),
+                 {"polygon", "at least 3 points"});
+  expect_refused(with_mesh("kind = \"polygon\"\npolygon = [[0, 0], [1, 0], [1, 0.1]]\n"
+                           "size = 0.2\nmaterial = \"granite\"\n"),
+                 {"size", "bounding box"});
+  expect_refused(with_mesh("kind = \"polygon\"\nsize = 0.1\nmaterial = \"granite\"\n"),
+                 {"polygon"});
+  expect_refused(with_mesh("kind = \"polygon\"\npolygon = [[0, 0], [1, 0], [1, 1]]\n"
+                           "region = [[0, 0], [1, 1]]\nsize = 0.1\nmaterial = \"granite\"\n"),
+                 {"region"});
 }
 
 TEST(SceneMesh, MeshFileIsBonded) {
