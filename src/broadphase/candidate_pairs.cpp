@@ -2,6 +2,7 @@
 
 #include "broadphase/emitter_rule.hpp"
 #include "broadphase/grid_rules.hpp"
+#include "broadphase/periodic_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,75 +114,28 @@ void CandidatePairs<Real>::sort_into_cells(std::int64_t cells) {
     if (small_[i]) sorted_[cell_count_[cell_of_[i]]++] = static_cast<std::int32_t>(i);
 }
 
-// The periodic grid: along a periodic direction the cells tile the period exactly (n cells
-// of period/n, no smaller than the grid's cell), and a corner's cell is taken modulo n.
-// Across a Lees-Edwards y boundary, a particle whose corner lies past the cell is binned
-// as the image that brings it back, shifted along x with it.
+// The periodic grid (broadphase/periodic_grid.hpp: the GPU's builder bins by the same rules).
 template <class Real>
 void CandidatePairs<Real>::bin_periodic(const BoxArrays<Real>& b, const PeriodicView& p) {
   const auto n = static_cast<std::int64_t>(n_);
-  const physics::PeriodicFrame& f = p.frame;
   fold_small_extent(b);
   team_single([&] {
     const SmallExtent e = take_small_extent();
-    double cell = grid_cell_for(static_cast<double>(cell_size_), e.widest);
-    const double max_cells = static_cast<double>(4 * n_ + 16);
-    for (;;) {
-      nx_ = f.px ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.lx / cell))
-                 : static_cast<std::int64_t>((e.max_x - e.min_x) / cell) + 1;
-      ny_ = f.py ? std::max<std::int64_t>(1, static_cast<std::int64_t>(f.ly / cell))
-                 : static_cast<std::int64_t>((e.max_y - e.min_y) / cell) + 1;
-      if (static_cast<double>(nx_) * static_cast<double>(ny_) <= max_cells) break;
-      cell *= 1.5;
-    }
-    cell_x_ = f.px ? f.lx / static_cast<double>(nx_) : cell;
-    cell_y_ = f.py ? f.ly / static_cast<double>(ny_) : cell;
+    periodic_grid_ = fit_periodic_grid(p.frame, e.min_x, e.min_y, e.max_x, e.max_y,
+                                       grid_cell_for(static_cast<double>(cell_size_), e.widest),
+                                       static_cast<double>(4 * n_ + 16));
+    nx_ = periodic_grid_.nx;
+    ny_ = periodic_grid_.ny;
     origin_x_ = static_cast<Real>(0);
     origin_y_ = static_cast<Real>(0);
-    px_origin_ = f.px ? f.x0 : e.min_x;
-    py_origin_ = f.py ? f.y0 : e.min_y;
   });
-  const double ox = px_origin_, oy = py_origin_;
 #pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!small_[i]) continue;
-    long long wraps = 0;
-    const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
-    std::int64_t row = 0;
-    double x = lo_x;
-    if (f.py) {
-      row = physics::periodic_cell_of(lo_y, oy, cell_y_, ny_, wraps);
-      x -= static_cast<double>(wraps) * f.shift;  // the image at −wraps periods
-    } else {
-      row = std::clamp<std::int64_t>(static_cast<std::int64_t>((lo_y - oy) / cell_y_), 0, ny_ - 1);
-    }
-    std::int64_t column = 0;
-    if (f.px)
-      column = physics::periodic_cell_of(x, ox, cell_x_, nx_, wraps);
-    else
-      column = std::clamp<std::int64_t>(static_cast<std::int64_t>((x - ox) / cell_x_), 0, nx_ - 1);
-    cell_of_[i] = column + row * nx_;
+    cell_of_[i] = periodic_grid_cell(periodic_grid_, static_cast<double>(b.lo_x[i]),
+                                     static_cast<double>(b.lo_y[i]));
   }
   team_single([&] { sort_into_cells(nx_ * ny_); });
-}
-
-// Whether i's box overlaps the box of j's nearest image; in double, with a margin of a few
-// roundings of the period, since the image's box is i's box moved by a period.
-template <class Real>
-bool CandidatePairs<Real>::overlaps_periodic(std::int32_t i, std::int32_t j,
-                                             const BoxArrays<Real>& b,
-                                             const PeriodicView& p) const {
-  const physics::PeriodicImage im =
-      physics::nearest_image(p.frame, Vec2d{p.x[i], p.y[i]}, Vec2d{p.x[j], p.y[j]});
-  if (im.shift.x == 0 && im.shift.y == 0) return physics::boxes_overlap(b.box(i), b.box(j));
-  const double tol =
-      8 * std::numeric_limits<double>::epsilon() *
-      (std::abs(p.frame.lx) + std::abs(p.frame.ly) + std::abs(p.x[i]) + std::abs(p.y[i]));
-  const auto d = [](Real v) { return static_cast<double>(v); };
-  return d(b.lo_x[i]) <= d(b.hi_x[j]) + im.shift.x + tol &&
-         d(b.lo_x[j]) + im.shift.x <= d(b.hi_x[i]) + tol &&
-         d(b.lo_y[i]) <= d(b.hi_y[j]) + im.shift.y + tol &&
-         d(b.lo_y[j]) + im.shift.y <= d(b.hi_y[i]) + tol;
 }
 
 // What both scans share: who emits, all-pairs, the large particles. `overlaps(j)` is the
@@ -207,51 +161,21 @@ void CandidatePairs<Real>::visit_with(std::int32_t i, Method method, Overlaps&& 
   for (const std::int32_t j : large_) consider(j, false);
 }
 
-// The 3 × 3 cells about i's corner, taken modulo the grid along the periodic directions;
-// a row reached across a Lees-Edwards boundary holds images shifted along x, so its three
-// columns are centred on i's corner shifted back. A periodic direction of fewer than 3
-// cells is scanned whole (each cell once).
+// The 3 × 3 cells about i's corner, modulo the grid (for_each_periodic_neighbour_cell), and
+// the box test against the partner's nearest image (periodic_boxes_overlap).
 template <class Real>
 template <class Visit>
 void CandidatePairs<Real>::visit_periodic(std::int32_t i, const BoxArrays<Real>& b,
                                           const PeriodicView& p, Method method,
                                           Visit&& visit) const {
-  const physics::PeriodicFrame& f = p.frame;
-  auto overlaps = [&](std::int32_t j) { return overlaps_periodic(i, j, b, p); };
+  const Vec2d ci{p.x[i], p.y[i]};
+  const physics::Aabb<Real> box_i = b.box(i);
+  auto overlaps = [&](std::int32_t j) {
+    return periodic_boxes_overlap(p.frame, ci, Vec2d{p.x[j], p.y[j]}, box_i, b.box(j));
+  };
   auto scan_cells = [&](auto&& cell) {
-    const double lo_x = static_cast<double>(b.lo_x[i]), lo_y = static_cast<double>(b.lo_y[i]);
-    const bool all_rows = f.py && ny_ < 3;
-    const bool all_columns = f.px && (nx_ < 3 || all_rows);
-    const std::int64_t own_row = cell_of_[i] / nx_, own_column = cell_of_[i] % nx_;
-    const auto raw_row =
-        f.py ? static_cast<std::int64_t>(std::floor((lo_y - py_origin_) / cell_y_)) : own_row;
-    const std::int64_t row_first = all_rows ? 0 : raw_row - 1;
-    const std::int64_t row_last = all_rows ? ny_ - 1 : raw_row + 1;
-    for (std::int64_t r_raw = row_first; r_raw <= row_last; ++r_raw) {
-      std::int64_t row = r_raw, wraps = 0;
-      if (f.py && !all_rows) {
-        wraps = r_raw >= 0 ? r_raw / ny_ : -((-r_raw + ny_ - 1) / ny_);
-        row = r_raw - wraps * ny_;
-      } else if (!f.py && (row < 0 || row >= ny_)) {
-        continue;
-      }
-      std::int64_t col_first = 0, col_last = nx_ - 1;
-      if (!all_columns) {
-        const double x = lo_x - static_cast<double>(wraps) * f.shift;
-        const auto centre =
-            f.px ? static_cast<std::int64_t>(std::floor((x - px_origin_) / cell_x_)) : own_column;
-        col_first = centre - 1;
-        col_last = centre + 1;
-      }
-      for (std::int64_t c_raw = col_first; c_raw <= col_last; ++c_raw) {
-        std::int64_t column = c_raw;
-        if (f.px)
-          column = ((c_raw % nx_) + nx_) % nx_;
-        else if (column < 0 || column >= nx_)
-          continue;
-        cell(column + row * nx_);
-      }
-    }
+    for_each_periodic_neighbour_cell(periodic_grid_, static_cast<double>(b.lo_x[i]),
+                                     static_cast<double>(b.lo_y[i]), cell_of_[i], cell);
   };
   visit_with(i, method, overlaps, scan_cells, visit);
 }

@@ -7,6 +7,7 @@
 // them. Boundary triangles larger than L (walls, hopper sides) are kept in a short list
 // that every small particle checks directly. Who emits a pair is broadphase/emitter_rule.hpp.
 #include "broadphase/pair_list.hpp"
+#include "broadphase/periodic_grid.hpp"
 #include "physics/geometry.hpp"
 #include "physics/periodic_frame.hpp"
 #include "tridem/scene.hpp"
@@ -85,14 +86,12 @@ class CandidatePairs {
   template <class Visit>
   void visit_candidates(std::int32_t i, const BoxArrays<Real>& boxes, Method method,
                         Visit&& visit) const;
-  // The periodic grid: cells of cell_x_ × cell_y_ that tile each periodic direction, the
-  // other direction binned as in bin().
+  // The periodic grid (broadphase/periodic_grid.hpp): cells that tile each periodic
+  // direction, the other direction binned as in bin().
   void bin_periodic(const BoxArrays<Real>& boxes, const PeriodicView& p);
   template <class Visit>
   void visit_periodic(std::int32_t i, const BoxArrays<Real>& boxes, const PeriodicView& p,
                       Method method, Visit&& visit) const;
-  bool overlaps_periodic(std::int32_t i, std::int32_t j, const BoxArrays<Real>& boxes,
-                         const PeriodicView& p) const;
   void sort_into_cells(std::int64_t cells);
 
   std::size_t n_;
@@ -102,8 +101,7 @@ class CandidatePairs {
   // The grid of the current step: particles sorted by cell.
   Real origin_x_ = 0, origin_y_ = 0, grid_cell_ = 0;
   std::int64_t nx_ = 0, ny_ = 0;
-  double cell_x_ = 0, cell_y_ = 0;        ///< the periodic grid's cells
-  double px_origin_ = 0, py_origin_ = 0;  ///< and its origin
+  PeriodicGrid periodic_grid_;  ///< the periodic grid of the current step
   std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
   std::vector<std::int32_t> sorted_;
   std::vector<std::int64_t> row_count_;

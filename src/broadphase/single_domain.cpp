@@ -18,12 +18,12 @@ SingleDomainPairs<Real>::SingleDomainPairs(const std::vector<double>& longest_ed
 }
 
 template <class Real>
-void SingleDomainPairs<Real>::find(const TriangleArrays<Real>& g, bool parallel,
-                                   PairList& pairs) {
+void SingleDomainPairs<Real>::find(const TriangleArrays<Real>& g, bool parallel, PairList& pairs,
+                                   const physics::PeriodicFrame* periodic) {
   const auto n = static_cast<std::int32_t>(free_.size());
   fill_rows(free_.size(), parallel, row_count_, pairs, [&](std::int32_t i, auto&& emit) {
     if (!small_[i]) return;  // large particles are reached from the small ones
-    const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_);
+    const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_, periodic);
     auto consider = [&](std::int32_t j) {
       if (passes(j)) emit(j);
     };

@@ -19,15 +19,26 @@ namespace tridem {
 template <class Real>
 class EmitterTest {
  public:
+  /// With `periodic`, j is tested at its nearest image (passes_periodic_contact_test).
   EmitterTest(const TriangleArrays<Real>& g, std::int32_t i, const std::uint8_t* small,
-              const std::uint8_t* free, ContactFilter filter)
-      : g_(g), i_(i), origin_(g.centroid(i)), a_(g.triangle(i, origin_)), box_a_(g.box(i)),
-        small_(small), free_(free),
-        filter_(filter) {}
+              const std::uint8_t* free, ContactFilter filter,
+              const physics::PeriodicFrame* periodic = nullptr)
+      : g_(g),
+        i_(i),
+        origin_(g.centroid(i)),
+        a_(g.triangle(i, origin_)),
+        box_a_(g.box(i)),
+        small_(small),
+        free_(free),
+        filter_(filter),
+        periodic_(periodic) {}
 
   bool operator()(std::int32_t j) const {
-    return emits_pair(i_, j, small_[i_] != 0, small_[j] != 0, free_[i_] != 0, free_[j] != 0) &&
-           passes_contact_test(a_, box_a_, g_.triangle(j, origin_), g_.box(j), filter_);
+    if (!emits_pair(i_, j, small_[i_] != 0, small_[j] != 0, free_[i_] != 0, free_[j] != 0))
+      return false;
+    if (periodic_)
+      return passes_periodic_contact_test(*periodic_, origin_, a_, box_a_, g_, j, filter_);
+    return passes_contact_test(a_, box_a_, g_.triangle(j, origin_), g_.box(j), filter_);
   }
 
  private:
@@ -39,6 +50,7 @@ class EmitterTest {
   const std::uint8_t* small_;
   const std::uint8_t* free_;
   ContactFilter filter_;
+  const physics::PeriodicFrame* periodic_;
 };
 
 template <class Real>
@@ -49,7 +61,9 @@ class SingleDomainPairs {
                     ContactFilter filter);
 
   /// Fills `pairs` with the pairs that pass the test. `parallel` runs it with OpenMP.
-  void find(const TriangleArrays<Real>& geometry, bool parallel, PairList& pairs);
+  /// With `periodic`, each partner is tested at its nearest image in that cell.
+  void find(const TriangleArrays<Real>& geometry, bool parallel, PairList& pairs,
+            const physics::PeriodicFrame* periodic = nullptr);
 
  private:
   std::vector<std::uint8_t> small_, free_;

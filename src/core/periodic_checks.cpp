@@ -12,22 +12,17 @@
 
 namespace tridem {
 
-void check_periodic_cell(const Scene& scene, const ParticleModel& model, Backend backend) {
+void check_periodic_cell(const Scene& scene, const ParticleModel& model) {
   const PeriodicCell& cell = scene.simulation.periodic;
   if (!cell.any()) return;
   const std::string label = scene_label(scene);
   const Method method = scene.simulation.method;
-  if (method != Method::Grid && method != Method::AllPairs)
+  if (method == Method::Decomposition)
     throw SceneError(fmt::format(
         "{}: [simulation] method = \"{}\" does not find pairs across periodic boundaries yet; "
-        "use method = \"{}\" or \"{}\" with periodic_x / periodic_y",
-        label, method_name(method), method_name(Method::Grid), method_name(Method::AllPairs)));
-  if (backend == Backend::Cuda)
-    throw SceneError(fmt::format(
-        "{}: backend '{}' does not run periodic boundaries yet; use backend = \"{}\", \"{}\" "
-        "or \"{}\" (auto runs periodic scenes on the CPU)",
-        label, backend_name(Backend::Cuda), backend_name(Backend::OpenMP),
-        backend_name(Backend::Cpu), backend_name(Backend::Auto)));
+        "use method = \"{}\", \"{}\" or \"{}\" with periodic_x / periodic_y",
+        label, method_name(method), method_name(Method::Grid), method_name(Method::AllPairs),
+        method_name(Method::SingleDomain)));
   // The farthest vertex of any triangle from its centroid: two touching triangles are at
   // most twice that apart, and the nearest image is the only one they can touch through
   // when that is under half a period.

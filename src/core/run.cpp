@@ -150,7 +150,8 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   summary.stages = solver->stage_times();
   summary.output_seconds = loop.output_seconds();
   if (log) {
-    fmt::print(log, "{}: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
+    fmt::print(log,
+               "{}: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
                "outputs in {}\n",
                summary.interrupted_by ? "interrupted" : "done", summary.steps, seconds,
                summary.steps_per_second, summary.triangle_steps_per_second, scene.output.dir);

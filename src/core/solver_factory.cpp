@@ -88,16 +88,9 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   check_method(scene);
   check_time_step(scene, ts, config.force);
   const Backend requested = scene.simulation.backend;
-  Backend backend = resolve_backend(requested);  // bonded scenes too: the GPU computes bonds
-  // Periodic boundaries run on the CPU only for now: auto picks it.
-  if (scene.simulation.periodic.any() && backend == Backend::Cuda && requested == Backend::Auto) {
-    backend = fastest_cpu_backend();
-    fmt::print(stderr,
-               "note: backend = auto runs this periodic scene on {}: the GPU does not run "
-               "periodic boundaries yet\n",
-               backend_name(backend));
-  }
-  check_periodic_cell(scene, model, backend);
+  // Bonded and periodic scenes too: the GPU computes bonds and periodic cells.
+  const Backend backend = resolve_backend(requested);
+  check_periodic_cell(scene, model);
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(
         "--threads {} sets the OpenMP threads, but the backend is {}{}, which does not use "

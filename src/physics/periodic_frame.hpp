@@ -106,6 +106,15 @@ TRIDEM_HD inline double wrap_energy(const Pose<double>& before, const Pose<doubl
          mass * dot(g, after.c - before.c);
 }
 
+/// Puts a free body of inverse mass `inv_mass` back into the cell (wrap_into_cell) and
+/// returns what that gave it (wrap_energy), which the caller books as the boundary's work.
+TRIDEM_HD inline double wrap_with_work(const PeriodicFrame& f, Pose<double>& p, double inv_mass,
+                                       Vec2d g) {
+  const Pose<double> before = p;
+  wrap_into_cell(f, p);
+  return wrap_energy(before, p, 1.0 / inv_mass, g);
+}
+
 /// The cell coordinate of `v` along a periodic direction of n cells of size `cell` from
 /// `origin`: its column (or row) modulo n, and how many periods it lies past the cell
 /// (`wraps`, negative below it).

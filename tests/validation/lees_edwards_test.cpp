@@ -2,6 +2,7 @@
 // keeps the imposed linear velocity profile vx = γ̇·(y − y_c), which its collisions would
 // wipe out through plain periodic boundaries; and a particle crossing the top re-enters at
 // the bottom shifted back along x and slowed by γ̇·Ly.
+#include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/output.hpp"
 
@@ -14,34 +15,8 @@
 namespace tridem {
 namespace {
 
-constexpr double kShearRate = 4.0;  // 1/s
-
-/// A gas of side × side triangles in a sheared periodic cell, its velocities the shear
-/// profile (`profile`, else none) plus a random agitation of 0.3 m/s.
-Scene sheared_gas(int side, double pitch, double reach, unsigned seed, bool profile = true) {
-  Scene s = test::empty_scene(1e6, 1000, 0.3, 0.05);
-  s.simulation.safety = 0.5;
-  const double length = side * pitch;
-  s.simulation.periodic.x = PeriodicRange{0, length};
-  s.simulation.periodic.y = PeriodicRange{0, length};
-  s.simulation.periodic.shear_rate = kShearRate;
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      TriangleSpec t;
-      const Vec2d c{(i + 0.5) * pitch, (j + 0.5) * pitch};
-      const double a0 = 3.14159 * u(rng);
-      for (int k = 0; k < 3; ++k) {
-        const double a = a0 + k * 2.0943951023931953;
-        t.vertices[k] = {c.x + reach * std::cos(a), c.y + reach * std::sin(a)};
-      }
-      t.velocity = {0.3 * u(rng) + (profile ? kShearRate * (c.y - 0.5 * length) : 0.0),
-                    0.3 * u(rng)};
-      s.triangles.push_back(t);
-    }
-  return s;
-}
+constexpr double kShearRate = test::kGasShearRate;
+using test::sheared_gas;
 
 struct Profile {
   double slope = 0, worst = 0;  ///< the least-squares slope, the worst layer off the line

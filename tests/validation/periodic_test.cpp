@@ -1,10 +1,13 @@
 // Periodic boundaries (physics/periodic_frame.hpp): a collision through the boundary is
 // the collision away from it, a contact survives its particles' wraps with its friction
 // history, a periodic gas conserves momentum, and cells the rules cannot serve are refused.
+#include "support/float_compare.hpp"
+#include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 #include "tridem/scene_io.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <array>
 #include <cmath>
@@ -15,89 +18,13 @@
 namespace tridem {
 namespace {
 
-/// An equilateral triangle of circumradius r about c, turned by `angle`.
-TriangleSpec grain(Vec2d c, double r, double angle, Vec2d v, double w = 0) {
-  TriangleSpec t;
-  for (int k = 0; k < 3; ++k) {
-    const double a = angle + k * 2.0943951023931953;
-    t.vertices[k] = {c.x + r * std::cos(a), c.y + r * std::sin(a)};
-  }
-  t.velocity = v;
-  t.angular_velocity = w;
-  return t;
-}
-
-/// An oblique, frictional collision of two grains along `axis` (0 = x, 1 = y), with a
-/// common drift `drift` along it, its contact near `at` (the pair's midpoint).
-Scene oblique_collision(int axis, double at, double drift) {
-  Scene s = test::empty_scene(1e6, 1000, 0.8, 0.2);
-  s.simulation.safety = 0.5;
-  auto along = [&](double u, double v) { return axis == 0 ? Vec2d{u, v} : Vec2d{v, u}; };
-  s.triangles.push_back(grain(along(at - 0.1, 2.50), 0.05, 0.3, along(1 + drift, 0.2), 3));
-  s.triangles.push_back(grain(along(at + 0.1, 2.53), 0.05, 1.1, along(-1 + drift, -0.2), -2));
-  return s;
-}
-
-// The cell [2.75, 3.75) along the axis. Every coordinate of these runs, the vertices'
-// pairwise and triple sums of the centroids, and the wraps by 1 stay each on one grid of
-// doubles ([2, 4), [4, 8), [8, 16)), so a pair through the boundary sees the very offsets
-// it sees away from it (2.85 − 3.65 + 1 = 3.35 − 3.15 exactly), and the runs agree bit
-// for bit.
-constexpr double kLo = 2.75, kHi = 3.75;
-
-/// The scene periodic along `axis` in [kLo, kHi), particle k moved by shift[k] along it.
-Scene in_cell(Scene s, int axis, std::array<double, 2> shift) {
-  (axis == 0 ? s.simulation.periodic.x : s.simulation.periodic.y) = PeriodicRange{kLo, kHi};
-  for (std::size_t k = 0; k < 2; ++k)
-    for (Vec2d& v : s.triangles[k].vertices) (axis == 0 ? v.x : v.y) += shift[k];
-  return s;
-}
-
-struct Trajectory {
-  std::vector<Snapshot> frames;
-};
-
-Trajectory run(const Scene& s, Backend backend, int chunks, int steps_per_chunk) {
-  Scene scene = s;
-  scene.simulation.backend = backend;
-  auto solver = make_solver(scene, SolverConfig{});
-  Trajectory t;
-  for (int k = 0; k < chunks; ++k) {
-    solver->advance(steps_per_chunk);
-    Snapshot snap;
-    solver->snapshot(snap, true);
-    t.frames.push_back(snap);
-  }
-  return t;
-}
-
-/// The periodic run against the run away from the boundary, bit for bit: the same
-/// velocities, and positions along the axis one of `shifts` (exact) from the others.
-void expect_same_collision(const Trajectory& away, const Trajectory& through, int axis,
-                           std::array<double, 2> shifts) {
-  ASSERT_EQ(away.frames.size(), through.frames.size());
-  for (std::size_t f = 0; f < away.frames.size(); ++f) {
-    const Snapshot &a = away.frames[f], &b = through.frames[f];
-    for (std::size_t i = 0; i < 2; ++i) {
-      EXPECT_EQ(a.vx[i], b.vx[i]) << "frame " << f << " particle " << i;
-      EXPECT_EQ(a.vy[i], b.vy[i]) << "frame " << f << " particle " << i;
-      EXPECT_EQ(a.omega[i], b.omega[i]) << "frame " << f << " particle " << i;
-      EXPECT_EQ(a.theta[i], b.theta[i]) << "frame " << f << " particle " << i;
-      const double along_a = axis == 0 ? a.x[i] : a.y[i], along_b = axis == 0 ? b.x[i] : b.y[i];
-      const double across_a = axis == 0 ? a.y[i] : a.x[i], across_b = axis == 0 ? b.y[i] : b.x[i];
-      EXPECT_TRUE(along_b == along_a + shifts[0] || along_b == along_a + shifts[1])
-          << "frame " << f << " particle " << i << ": " << along_a << " and " << along_b;
-      EXPECT_EQ(across_a, across_b) << "frame " << f;
-      EXPECT_GE(along_b, kLo);
-      EXPECT_LT(along_b, kHi);
-    }
-  }
-}
-
-/// Steps of the scene's dt that make `seconds`.
-int steps_for(const Scene& s, double seconds) {
-  return static_cast<int>(std::ceil(seconds / make_solver(s, SolverConfig{})->dt()));
-}
+using test::expect_same_collision;
+using test::grain;
+using test::in_cell;
+using test::oblique_collision;
+using test::periodic_gas;
+using test::steps_for;
+using test::Trajectory;
 
 class PeriodicCollision : public ::testing::TestWithParam<int> {};
 
@@ -108,8 +35,8 @@ TEST_P(PeriodicCollision, OnTheBoundaryEqualsAwayFromIt) {
   const Scene away = oblique_collision(axis, 3.25, 0);
   const Scene through = in_cell(away, axis, {0.5, -0.5});
   const int steps = steps_for(away, 0.0025);
-  const Trajectory a = run(away, Backend::Cpu, 40, steps);
-  const Trajectory b = run(through, Backend::Cpu, 40, steps);
+  const Trajectory a = test::run_frames(away, Backend::Cpu, 40, steps);
+  const Trajectory b = test::run_frames(through, Backend::Cpu, 40, steps);
   expect_same_collision(a, b, axis, {0.5, -0.5});
   std::size_t touching = 0;
   for (const Snapshot& s : b.frames) touching += s.contacts.size();
@@ -125,8 +52,8 @@ TEST_P(PeriodicCollision, ContactKeepsItsFrictionHistoryAcrossAWrap) {
   const Scene away = oblique_collision(axis, 3.52, 4);
   const Scene through = in_cell(away, axis, {0, 0});
   const int steps = steps_for(away, 0.0025);
-  const Trajectory a = run(away, Backend::Cpu, 40, steps);
-  const Trajectory b = run(through, Backend::Cpu, 40, steps);
+  const Trajectory a = test::run_frames(away, Backend::Cpu, 40, steps);
+  const Trajectory b = test::run_frames(through, Backend::Cpu, 40, steps);
   expect_same_collision(a, b, axis, {0, -1});
   // Some frame has the contact with a sticking (not sliding) tangential force while its
   // grains lie on the two sides of the boundary: the history crossed with them.
@@ -140,22 +67,6 @@ TEST_P(PeriodicCollision, ContactKeepsItsFrictionHistoryAcrossAWrap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Axis, PeriodicCollision, ::testing::Values(0, 1));
-
-/// A dense frictional gas filling a cell periodic in x and y: no walls, so momentum is
-/// conserved to rounding, and contacts through the boundaries are many.
-Scene periodic_gas(int side, double pitch) {
-  Scene s = test::empty_scene(1e7, 1000, 0.5, 0.1);
-  s.simulation.safety = 0.3;
-  s.simulation.periodic.x = PeriodicRange{0, side * pitch};
-  s.simulation.periodic.y = PeriodicRange{0, side * pitch};
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j)
-      s.triangles.push_back(grain({(i + 0.5) * pitch, (j + 0.5) * pitch}, 0.42 * pitch,
-                                  3.14159 * u(rng), {2 * u(rng), 2 * u(rng)}, 20 * u(rng)));
-  return s;
-}
 
 TEST(PeriodicGas, ConservesMomentumThroughTheBoundaries) {
   Scene s = periodic_gas(10, 0.1);
@@ -218,6 +129,38 @@ TEST(PeriodicGas, GridAllPairsAndOpenMPAgreeBitForBit) {
   EXPECT_GT(contacts, 0u);
 }
 
+// The mixed mode (float pairs, double state) in periodic cells, against the serial double
+// run with the float tolerances the GPU's float tests use (gpu_periodic_parity_test.cpp
+// runs the CUDA float solver on the same scenes).
+TEST(PeriodicFloat, CpuFloatStaysCloseToSerialDouble) {
+  for (const Scene& s : test::periodic_float_scenes()) {
+    const std::int64_t steps = steps_for(s, test::kPeriodicFloatSeconds);
+    const Snapshot tried = test::run_to(s, Backend::Cpu, steps, Precision::Float);
+    EXPECT_GT(tried.contacts.size(), 0u) << "the float pairs must carry forces";
+    test::expect_float_follows_double(s, steps, tried);
+  }
+}
+
+// The cases of the GPU's periodic parity tests (support/periodic_scenes.hpp,
+// gpu_periodic_parity_test.cpp) touch through their boundaries on the way, and OpenMP runs
+// them as the serial solver does, bit for bit, from the same warmed-up state.
+TEST(PeriodicScenes, GpuParityCasesTouchThroughTheBoundaries) {
+  for (const test::PeriodicParityCase& c : test::periodic_parity_cases())
+    for (Method m : {Method::Grid, Method::AllPairs, Method::SingleDomain}) {
+      if (m != Method::Grid && c.scene.triangles.size() > 200) continue;
+      const SolverState start = test::warmed_up_state(c, m);
+      auto serial = test::solver_from(c, Backend::Cpu, m, start);
+      auto threads = test::solver_from(c, Backend::OpenMP, m, start);
+      const std::size_t through =
+          test::run_side_by_side(c, *serial, *threads, [&](const Snapshot& a, const Snapshot& b) {
+            EXPECT_EQ(a.x, b.x) << c.name;
+            EXPECT_EQ(a.vx, b.vx) << c.name;
+            EXPECT_EQ(a.omega, b.omega) << c.name;
+          });
+      EXPECT_GT(through, 0u) << c.name << ", " << method_name(m);
+    }
+}
+
 std::string refusal(const Scene& s) {
   try {
     make_solver(s, SolverConfig{});
@@ -275,17 +218,17 @@ TEST(PeriodicRefusal, CellNotLongerThanFourReaches) {
 }
 
 TEST(PeriodicRefusal, MethodsThatDoNotSeeAcrossTheBoundary) {
-  for (Method m : {Method::SingleDomain, Method::Decomposition}) {
-    Scene s = periodic_gas(4, 0.1);
-    s.simulation.method = m;
-    EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
-  }
+  Scene s = periodic_gas(4, 0.1);
+  s.simulation.method = Method::Decomposition;
+  EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
 }
 
-TEST(PeriodicRefusal, TheGpuBackend) {
-  Scene s = periodic_gas(4, 0.1);
-  s.simulation.backend = Backend::Cuda;
-  EXPECT_NE(refusal(s).find("does not run periodic boundaries yet"), std::string::npos);
+// Single-domain in a periodic cell tests each partner at its nearest image
+// (passes_periodic_contact_test): with the exact test it drops only pairs whose force
+// pair_force would find zero, so it reproduces the grid bit for bit, pre-filter on or
+// off, as it does without a cell (CpuParity.SingleDomainExactReproducesGridBitForBit).
+TEST(PeriodicSingleDomain, ExactReproducesTheGridBitForBit) {
+  test::expect_periodic_single_domain_exact_is_the_grid(Backend::Cpu);
 }
 
 TEST(PeriodicRefusal, SceneKeys) {

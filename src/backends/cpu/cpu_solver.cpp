@@ -217,9 +217,12 @@ void CpuSolver<Real>::find_pairs() {
                                       {rel_y_[0].data(), rel_y_[1].data(), rel_y_[2].data()},
                                       lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data(),
                                       x_.data(), y_.data()};
-  if (method_ == Method::SingleDomain)
+  if (method_ == Method::SingleDomain && periodic_) {
+    const physics::PeriodicFrame frame = frame_at(static_cast<double>(step_) * dt_);
+    single_domain_.find(geometry, parallel_, pairs_, &frame);
+  } else if (method_ == Method::SingleDomain) {
     single_domain_.find(geometry, parallel_, pairs_);
-  else if (decomposed_)
+  } else if (decomposed_)
     decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
   else if (periodic_) {
     const PeriodicView view{frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data()};
@@ -496,9 +499,7 @@ void CpuSolver<Real>::add_step_energy(std::size_t i, const physics::Pose<double>
 template <class Real>
 void CpuSolver<Real>::wrap(const physics::PeriodicFrame& frame, physics::Pose<double>& p,
                            double inv_mass, std::size_t booked) {
-  const physics::Pose<double> before = p;
-  physics::wrap_into_cell(frame, p);
-  energy_[kWallWork][booked] += physics::wrap_energy(before, p, 1.0 / inv_mass, gravity_);
+  energy_[kWallWork][booked] += physics::wrap_with_work(frame, p, inv_mass, gravity_);
 }
 
 // Each body sums its members' loads in ascending member order: OpenMP equals serial.

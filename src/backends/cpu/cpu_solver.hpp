@@ -193,7 +193,7 @@ class CpuSolver final : public Solver {
   bool periodic_ = false;
   PeriodicCell cell_;
   // Lees-Edwards only (empty otherwise): each emitter row's image_power of this step, booked
-  // as wall work when the step is written. CPU only: the GPU does not run periodic cells.
+  // as wall work when the step is written (the GPU's StepParams::image_power).
   std::vector<double> image_power_;
 };
 

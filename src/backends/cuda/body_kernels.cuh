@@ -53,7 +53,8 @@ __global__ void body_gather_kernel(ParticleArrays<Real> p, BodyArrays b, StepPar
 /// CpuSolver::integrate_bodies adds them (free = false: a member's row only; its body's
 /// local damping goes to another sum, in body_integrate_kernel), before any member moves,
 /// so the walls' member velocities read are those of the step.
-template <class Real>
+/// kPeriodic: with the boundary's work through the member's row (Lees-Edwards).
+template <class Real, bool kPeriodic = false>
 __global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
                                      StepParams<Real> sp, const StepStatus* status) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -61,24 +62,32 @@ __global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
   if (status->bad != INT_MAX || status->deep != INT_MAX) return;
   const physics::Pose<double> unused{};  // read only for a free particle's local damping
   add_step_energy(p, q, sp, i, false, unused, unused);
+  if constexpr (kPeriodic) add_image_work(p, sp, i);
 }
 
 /// The step of each body (unless some body ran away or some pair overlaps too deep: then
 /// the last good state stays, as on the CPU), with the body's local damping, booked on its
-/// first member.
-template <class Real>
+/// first member. kPeriodic: a free body is put back into the cell (StepParams::frame_new)
+/// after its step's energy, what that gave it booked on its first member, as
+/// CpuSolver::integrate_bodies does; its members follow it (place_members_kernel).
+template <class Real, bool kPeriodic = false>
 __global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, StepParams<Real> sp,
                                       const StepStatus* status) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= b.n) return;
   if (status->bad != INT_MAX || status->deep != INT_MAX) return;
   const physics::Pose<double> before = body_pose(b, k);
-  const physics::Pose<double> after = advanced_body_pose(b, sp, k);
+  physics::Pose<double> after = advanced_body_pose(b, sp, k);
   const bool free = b.body_motion[k] == Motion::Free;
   if (free && sp.local_damping > 0)
     p.energy[kDissipatedLocal][b.body_first[k]] += physics::local_damping_dissipation(
         before, after, Vec2d{b.body_fx[k], b.body_fy[k]}, b.body_torque[k], b.body_inv_mass[k],
         b.body_inv_inertia[k], sp.gravity, sp.local_damping, sp.dt);
+  if constexpr (kPeriodic) {
+    if (free)
+      p.energy[kWallWork][b.body_first[k]] +=
+          physics::wrap_with_work(sp.frame_new, after, b.body_inv_mass[k], sp.gravity);
+  }
   b.body_x[k] = after.c.x;
   b.body_y[k] = after.c.y;
   b.body_theta[k] = after.theta;

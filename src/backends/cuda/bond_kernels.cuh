@@ -14,15 +14,21 @@
 namespace tridem::cuda {
 
 /// Bond k's force of this step, in the frame of a's centroid as for a pair (CpuSolver's
-/// compute_bond_forces; the GPU runs no periodic cell, so b is at its own offset).
-template <class Real>
-__global__ void bond_forces_kernel(ParticleArrays<Real> p, physics::BondArrays<Real> v) {
+/// compute_bond_forces); kPeriodic: b at its nearest image in `frame`.
+template <class Real, bool kPeriodic = false>
+__global__ void bond_forces_kernel(ParticleArrays<Real> p, physics::BondArrays<Real> v,
+                                   physics::PeriodicFrame frame) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= v.count) return;
   const int a = v.a[k], b = v.b[k];
-  const Vec2d origin{p.x[a], p.y[a]};
-  v.result[k] = physics::step_bond(v, k, physics::offset_from<Real>(origin, Vec2d{p.x[b], p.y[b]}),
-                                   p.theta[a], p.theta[b]);
+  const Vec2d origin{p.x[a], p.y[a]}, cb{p.x[b], p.y[b]};
+  if constexpr (kPeriodic)
+    v.result[k] = physics::step_bond(
+        v, k, physics::image_offset<Real>(origin, cb, physics::nearest_image(frame, origin, cb)),
+        p.theta[a], p.theta[b]);
+  else
+    v.result[k] =
+        physics::step_bond(v, k, physics::offset_from<Real>(origin, cb), p.theta[a], p.theta[b]);
 }
 
 /// The step's damage, broken flags and released energy, unless the step was refused (a

@@ -146,23 +146,34 @@ __device__ inline void visit_candidates(const CandidateSearch<Real>& c, int i, V
   for (int k = 0; k < c.n_large; ++k) consider(c.large[k], false);
 }
 
+/// The partners of each emitter by the grid (or all-pairs): visit_candidates.
 template <class Real>
-__global__ void count_rows_kernel(CandidateSearch<Real> c, int* count) {
+struct GridFinder {
+  CandidateSearch<Real> c;
+  template <class Visit>
+  __device__ void operator()(int i, Visit&& visit) const {
+    visit_candidates(c, i, visit);
+  }
+};
+
+/// The length of every emitter's row, by a finder (GridFinder, PeriodicFinder).
+template <class Finder>
+__global__ void count_rows_kernel(Finder find, int n, int* count) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= c.n) return;
+  if (i >= n) return;
   int k = 0;
-  visit_candidates(c, i, [&k](int) { ++k; });
+  find(i, [&k](int) { ++k; });
   count[i] = k;
 }
 
 /// The rows of the new list, partners ascending, each pair with its contact history.
-template <class Real>
-__global__ void fill_rows_kernel(CandidateSearch<Real> c, RowHistory<Real> h) {
+template <class Real, class Finder>
+__global__ void fill_rows_kernel(Finder find, int n, RowHistory<Real> h) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= c.n) return;
+  if (i >= n) return;
   const int begin = h.offset[i], end = h.offset[i + 1];
   int at = begin;
-  visit_candidates(c, i, [&](int j) { h.partner[at++] = j; });
+  find(i, [&](int j) { h.partner[at++] = j; });
   insertion_sort(h.partner, begin, end);
   carry_history(i, h);
 }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -121,6 +122,19 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   pairs_ = std::make_unique<PairListBuilder<Real>>(
       classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, reserve,
       stream_);
+  cell_ = scene.simulation.periodic;
+  periodic_ = cell_.any();
+  if (periodic_) {
+    // Lees-Edwards: the images above and below slide by γ̇·Ly·dt a step; the list keeps
+    // them while they have slid less than the skin (images_slid), so the build lists them
+    // within a skin's slack.
+    sheared_slack_ = cell_.shear_rate != 0 ? static_cast<double>(margin_) : 0.0;
+    pairs_->set_periodic(sheared_slack_);
+    if (cell_.shear_rate != 0) {
+      image_power_.upload(std::vector<double>(n_, 0.0));
+      params_.image_power = image_power_.data();
+    }
+  }
   if (method_ == Method::Decomposition)
     decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(1);
@@ -157,6 +171,10 @@ template <class Real>
 void CudaSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     params_.time_new = physics::time_after_step(step_, params_.dt);
+    if (periodic_) {  // CpuSolver's frames: the pairs' at the step's start, the wrap's at its end
+      params_.frame = periodic_frame_of(cell_, static_cast<double>(step_) * params_.dt);
+      params_.frame_new = periodic_frame_of(cell_, params_.time_new);
+    }
     params_.details = s + 1 == steps;  // only then are this step's pair results read
     run_step(*this, kPipeline, *events_);
     ++step_;
@@ -173,11 +191,12 @@ void CudaSolver<Real>::run_stage(Stage stage) {
     case Stage::PairList:
       if (decomposed_) {
         decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
-      } else if (rebuild_ || pairs_->single_step()) {
+      } else if (rebuild_ || pairs_->single_step() || images_slid()) {
         // A single-domain list holds the pairs that pass the contact test at this step's
         // positions only: no skin can keep it valid, so it is rebuilt every step.
-        pairs_->rebuild(p, margin_);
+        pairs_->rebuild(p, margin_, params_.frame);
         rebuild_ = false;
+        built_at_ = static_cast<double>(step_) * params_.dt;
       }
       step_pairs_ = pairs_->arrays();
       return;
@@ -187,8 +206,17 @@ void CudaSolver<Real>::run_stage(Stage stage) {
           cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
       launch_pair_forces(p, status);
       if (bonds_.size() > 0) {  // each bond's force, in the same step as the contacts
-        bond_forces_kernel<Real><<<blocks(bonds_.size()), kBlock, 0, stream_>>>(p, bond_arrays());
+        if (periodic_)
+          bond_forces_kernel<Real, true>
+              <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(p, bond_arrays(), params_.frame);
+        else
+          bond_forces_kernel<Real>
+              <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(p, bond_arrays(), params_.frame);
         TRIDEM_CUDA_CHECK_LAUNCH("bond_forces_kernel");
+      }
+      if (params_.image_power) {  // Lees-Edwards: the boundary's work through each row
+        row_image_power_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_);
+        TRIDEM_CUDA_CHECK_LAUNCH("row_image_power_kernel");
       }
       return;
     }
@@ -211,8 +239,12 @@ void CudaSolver<Real>::run_stage(Stage stage) {
         TRIDEM_CUDA_CHECK_LAUNCH("commit_bonds_kernel");
       }
       if (n_bodies_ > 0) return integrate(p, status);
-      integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status,
-                                                                 true);
+      if (periodic_)
+        integrate_kernel<Real, true>
+            <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
+      else
+        integrate_kernel<Real>
+            <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status, true);
       TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
       if (has_programs_) {  // after every row's energy has read the walls' old velocities
         program_velocity_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, params_, status);
@@ -239,25 +271,42 @@ void CudaSolver<Real>::run_stage(Stage stage) {
 
 template <class Real>
 void CudaSolver<Real>::launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status) {
+  if (step_pairs_.count == 0) return;
+  if (periodic_)
+    launch_pair_forces_with<true>(p, status);
+  else
+    launch_pair_forces_with<false>(p, status);
+}
+
+template <class Real>
+template <bool kPeriodic>
+void CudaSolver<Real>::launch_pair_forces_with(const ParticleArrays<Real>& p, StepStatus* status) {
   const PairArrays<Real>& q = step_pairs_;
-  if (q.count == 0) return;
   constexpr int threads = PairKernelShape<Real>::threads;
   const int grid = (q.count + threads - 1) / threads;
   const std::int32_t* member_body = bodies_.member_body.data();
   const physics::BondArrays<Real> bonds = bond_arrays();
   const bool with_bodies = n_bodies_ > 0, with_bonds = bonds_.size() > 0;
   if (with_bodies && with_bonds)
-    pair_forces_kernel<Real, true, true>
+    pair_forces_kernel<Real, true, true, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
   else if (with_bodies)
-    pair_forces_kernel<Real, true>
+    pair_forces_kernel<Real, true, false, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
   else if (with_bonds)
-    pair_forces_kernel<Real, false, true>
+    pair_forces_kernel<Real, false, true, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   else
-    pair_forces_kernel<Real><<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
+    pair_forces_kernel<Real, false, false, kPeriodic>
+        <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+}
+
+template <class Real>
+bool CudaSolver<Real>::images_slid() const {
+  if (!params_.image_power) return false;
+  const double t = static_cast<double>(step_) * params_.dt;
+  return std::abs(params_.frame.shear_velocity) * (t - built_at_) > sheared_slack_;
 }
 
 // The servos' targets from the walls' poses of the step's start, before the runaway test
@@ -297,11 +346,20 @@ void CudaSolver<Real>::gather(const ParticleArrays<Real>& p, StepStatus* status)
 // state.
 template <class Real>
 void CudaSolver<Real>::integrate(const ParticleArrays<Real>& p, StepStatus* status) {
-  member_energy_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status);
-  TRIDEM_CUDA_CHECK_LAUNCH("member_energy_kernel");
-  body_integrate_kernel<Real>
-      <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status);
-  TRIDEM_CUDA_CHECK_LAUNCH("body_integrate_kernel");
+  if (periodic_) {
+    member_energy_kernel<Real, true>
+        <<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status);
+    TRIDEM_CUDA_CHECK_LAUNCH("member_energy_kernel");
+    body_integrate_kernel<Real, true>
+        <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status);
+    TRIDEM_CUDA_CHECK_LAUNCH("body_integrate_kernel");
+  } else {
+    member_energy_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, step_pairs_, params_, status);
+    TRIDEM_CUDA_CHECK_LAUNCH("member_energy_kernel");
+    body_integrate_kernel<Real>
+        <<<blocks(n_bodies_), kBlock, 0, stream_>>>(p, body_arrays(), params_, status);
+    TRIDEM_CUDA_CHECK_LAUNCH("body_integrate_kernel");
+  }
   place_members_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, body_arrays(), status);
   TRIDEM_CUDA_CHECK_LAUNCH("place_members_kernel");
 }
@@ -416,6 +474,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   if (n_bodies_ > 0) bodies_.download(host_bodies_, n_bodies_, n);  // after the sync above
   fill_bodies(out, host_bodies_, n_bodies_);
   fill_bonds(out, bonds_.download_state());  // after the sync above
+  out.periodic = cell_;
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
   std::vector<int> offset, partner;
@@ -423,6 +482,9 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   pairs_->download(offset, partner, nullptr, &result);
   append_contacts(out, n, offset.data(), partner.data(), result.data(), out.x.data(),
                   out.y.data());
+  if (periodic_)
+    set_image_shifts(out, periodic_frame_of(cell_, static_cast<double>(step_) * params_.dt),
+                     out.x.data(), out.y.data());
 }
 
 // The sums are reduced on the host in index order: n doubles per accumulator cross the bus

@@ -69,6 +69,10 @@ class CudaSolver final : public Solver {
   physics::BondArrays<Real> bond_arrays() const { return bonds_.view(); }
   /// The pair forces of this step, with the filters the scene needs (bodies, bonds).
   void launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status);
+  template <bool kPeriodic>
+  void launch_pair_forces_with(const ParticleArrays<Real>& p, StepStatus* status);
+  /// Lees-Edwards: whether the images have slid farther than the build's slack since it.
+  bool images_slid() const;
   /// The geometry of the current state (and a rebuild); with `place`, the members placed
   /// on their bodies first (at the start, as CpuSolver's constructor does).
   void update_geometry(bool place = false);
@@ -119,6 +123,14 @@ class CudaSolver final : public Solver {
   std::unique_ptr<DecomposedRows<Real>> decomposed_;
   PairArrays<Real> step_pairs_{};  ///< the list of the step in progress
   std::unique_ptr<StageEvents> events_;
+  /// Periodic boundaries (physics/periodic_frame.hpp): the cell, the frames of each step in
+  /// params_, and with Lees-Edwards the rows' image power (params_.image_power), the
+  /// sheared images' slack in the list and the time of the last build.
+  PeriodicCell cell_;
+  bool periodic_ = false;
+  double sheared_slack_ = 0;
+  double built_at_ = 0;
+  DeviceBuffer<double> image_power_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies

@@ -5,6 +5,7 @@
 #include "physics/contact_laws.hpp"
 #include "physics/motion_program.hpp"
 #include "physics/pair_record.hpp"
+#include "physics/periodic_frame.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/particle_fields.hpp"
 
@@ -55,6 +56,14 @@ struct StepParams {
   /// This step's results will be read (the last step of an advance() call): the pairs
   /// write their PairDetail too. A pair deeper than max_depth always writes it.
   bool details;
+  /// Periodic boundaries (physics/periodic_frame.hpp; read only by the kernels compiled
+  /// for a periodic scene): the cell at the step's start, which the pairs see their
+  /// partners' images in, and at its end, which the integration wraps into.
+  physics::PeriodicFrame frame;
+  physics::PeriodicFrame frame_new;
+  /// Lees-Edwards only (else null): each emitter row's image_power of this step, booked
+  /// as wall work when the step is written (CpuSolver's image_power_).
+  double* image_power;
 };
 
 /// What the host reads back after every step.

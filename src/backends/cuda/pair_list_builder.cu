@@ -1,6 +1,7 @@
 #include "backends/cuda/pair_list_builder.cuh"
 
 #include "backends/cuda/broad_phase_kernels.cuh"
+#include "backends/cuda/periodic_search.cuh"
 
 #include "tridem/error.hpp"
 
@@ -145,56 +146,104 @@ SingleDomainSearch<Real> PairListBuilder<Real>::single_domain_search(
            p.y},
           large_.data(),
           n_large_,
-          filter_};
+          filter_,
+          physics::PeriodicFrame{}};
 }
 
 template <class Real>
-void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin) {
+void PairListBuilder<Real>::set_periodic(double sheared_slack) {
+  periodic_ = true;
+  sheared_slack_ = sheared_slack;
+  periodic_grid_.allocate(1);
+}
+
+template <class Real>
+void PairListBuilder<Real>::rebuild(const ParticleArrays<Real>& p, Real margin,
+                                    const physics::PeriodicFrame& frame) {
   if (method_ == Method::SingleDomain) {
     // The paper's kernel: blocks of 64 threads, one per particle.
-    const SingleDomainSearch<Real> c = single_domain_search(p);
-    const int tiles = (n_ + kSingleDomainBlock - 1) / kSingleDomainBlock;
-    single_domain_count_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(
-        c, row_count_.data());
-    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_count_kernel");
-    size_rows();
-    single_domain_fill_kernel<Real><<<tiles, kSingleDomainBlock, 0, stream_>>>(c, history());
-    TRIDEM_CUDA_CHECK_LAUNCH("single_domain_fill_kernel");
+    SingleDomainSearch<Real> c = single_domain_search(p);
+    c.frame = frame;
+    if (periodic_)
+      single_domain_rows<true>(c);
+    else
+      single_domain_rows<false>(c);
   } else {
     const CandidateSearch<Real> c = search(p);
-    count_candidates(c, margin, p);
-    size_rows();
-    fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, history());
-    TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
+    grow_boxes_kernel<Real>
+        <<<blocks(n_), kBlock, 0, stream_>>>(p, small_.data(), margin, bounds_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("grow_boxes_kernel");
+    if (periodic_) {
+      const PeriodicFinder<Real> find{
+          c, PeriodicSearch{frame, p.x, p.y, periodic_grid_.data(), sheared_slack_}};
+      if (method_ == Method::Grid) bin_periodic(find);
+      fill_rows(find);
+    } else {
+      const GridFinder<Real> find{c};
+      if (method_ == Method::Grid) bin(c);
+      fill_rows(find);
+    }
   }
   index_rows();
   ++builds_;
 }
 
 template <class Real>
-void PairListBuilder<Real>::count_candidates(const CandidateSearch<Real>& c, Real margin,
-                                             const ParticleArrays<Real>& p) {
-  grow_boxes_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(p, small_.data(), margin,
-                                                                bounds_.data());
-  TRIDEM_CUDA_CHECK_LAUNCH("grow_boxes_kernel");
-  if (method_ == Method::Grid) {
-    grid_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data(), cell_, max_cells(n_), grid_.data());
-    TRIDEM_CUDA_CHECK_LAUNCH("grid_kernel");
-    cell_key_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, beyond_, cell_of_.data(),
-                                                               index_.data());
-    TRIDEM_CUDA_CHECK_LAUNCH("cell_key_kernel");
-    std::size_t bytes = temp_.size();
-    TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
-        temp_.data(), bytes, cell_of_.data(), sorted_cell_.data(), index_.data(),
-        sorted_.data(), n_, 0, cell_bits_, stream_));
-    TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_start_.data(), 0, cell_start_.bytes(), stream_));
-    TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_end_.data(), 0, cell_end_.bytes(), stream_));
-    cell_range_kernel<<<blocks(n_), kBlock, 0, stream_>>>(sorted_cell_.data(), n_, beyond_,
-                                                          cell_start_.data(), cell_end_.data());
-    TRIDEM_CUDA_CHECK_LAUNCH("cell_range_kernel");
-  }
-  count_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(c, row_count_.data());
+template <bool kPeriodic>
+void PairListBuilder<Real>::single_domain_rows(const SingleDomainSearch<Real>& c) {
+  const int tiles = (n_ + kSingleDomainBlock - 1) / kSingleDomainBlock;
+  single_domain_count_kernel<Real, kPeriodic>
+      <<<tiles, kSingleDomainBlock, 0, stream_>>>(c, row_count_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("single_domain_count_kernel");
+  size_rows();
+  single_domain_fill_kernel<Real, kPeriodic>
+      <<<tiles, kSingleDomainBlock, 0, stream_>>>(c, history());
+  TRIDEM_CUDA_CHECK_LAUNCH("single_domain_fill_kernel");
+}
+
+template <class Real>
+void PairListBuilder<Real>::bin(const CandidateSearch<Real>& c) {
+  grid_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data(), cell_, max_cells(n_), grid_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("grid_kernel");
+  cell_key_kernel<Real>
+      <<<blocks(n_), kBlock, 0, stream_>>>(c, beyond_, cell_of_.data(), index_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("cell_key_kernel");
+  sort_by_cell();
+}
+
+template <class Real>
+void PairListBuilder<Real>::bin_periodic(const PeriodicFinder<Real>& find) {
+  periodic_grid_kernel<Real><<<1, 1, 0, stream_>>>(bounds_.data(), static_cast<double>(cell_),
+                                                   sheared_slack_, max_cells(n_), find.ps.frame,
+                                                   periodic_grid_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("periodic_grid_kernel");
+  periodic_cell_key_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
+      find.c, find.ps, beyond_, cell_of_.data(), index_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("periodic_cell_key_kernel");
+  sort_by_cell();
+}
+
+template <class Real>
+void PairListBuilder<Real>::sort_by_cell() {
+  std::size_t bytes = temp_.size();
+  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp_.data(), bytes, cell_of_.data(),
+                                                    sorted_cell_.data(), index_.data(),
+                                                    sorted_.data(), n_, 0, cell_bits_, stream_));
+  TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_start_.data(), 0, cell_start_.bytes(), stream_));
+  TRIDEM_CUDA_CHECK(cudaMemsetAsync(cell_end_.data(), 0, cell_end_.bytes(), stream_));
+  cell_range_kernel<<<blocks(n_), kBlock, 0, stream_>>>(sorted_cell_.data(), n_, beyond_,
+                                                        cell_start_.data(), cell_end_.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("cell_range_kernel");
+}
+
+template <class Real>
+template <class Finder>
+void PairListBuilder<Real>::fill_rows(const Finder& find) {
+  count_rows_kernel<<<blocks(n_), kBlock, 0, stream_>>>(find, n_, row_count_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("count_rows_kernel");
+  size_rows();
+  fill_rows_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(find, n_, history());
+  TRIDEM_CUDA_CHECK_LAUNCH("fill_rows_kernel");
 }
 
 template <class Real>

@@ -11,12 +11,16 @@
 #include "backends/cuda/grid_types.cuh"
 #include "backends/cuda/row_history.cuh"
 #include "backends/cuda/single_domain_kernels.cuh"
+#include "broadphase/periodic_grid.hpp"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
 #include <vector>
 
 namespace tridem::cuda {
+
+template <class Real>
+struct PeriodicFinder;
 
 template <class Real>
 class PairListBuilder {
@@ -29,7 +33,14 @@ class PairListBuilder {
   /// A new list for the current boxes, grown by `margin` (grid and all-pairs), or of the
   /// pairs passing the contact test now (single-domain); carries the contact history of
   /// the old list over. Synchronises once, to learn the number of pairs.
-  void rebuild(const ParticleArrays<Real>& p, Real margin);
+  /// In a periodic cell (set_periodic), pairs are also found across its boundaries, each
+  /// box tested against its partner's nearest image in `frame`.
+  void rebuild(const ParticleArrays<Real>& p, Real margin,
+               const physics::PeriodicFrame& frame = physics::PeriodicFrame{});
+  /// A periodic cell: grid and all-pairs find pairs through its boundaries; an image across
+  /// a Lees-Edwards boundary is listed while it is within `sheared_slack` of the box it
+  /// must touch (the solver rebuilds before the images slide farther).
+  void set_periodic(double sheared_slack);
   /// A list found by another method's kernels (the decomposition's sub-domains), through
   /// the same rows, history and reverse index: count(row_count) writes the length of every
   /// particle's row into n counts (zero where it emits nothing), fill(history()) writes the
@@ -69,8 +80,16 @@ class PairListBuilder {
   void size_temp_storage();
   CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
   SingleDomainSearch<Real> single_domain_search(const ParticleArrays<Real>& p) const;
-  /// Grid or all-pairs: the counts of each row into row_count_.
-  void count_candidates(const CandidateSearch<Real>& c, Real margin, const ParticleArrays<Real>& p);
+  /// Single-domain: the paper's count and fill kernels, plain or periodic.
+  template <bool kPeriodic>
+  void single_domain_rows(const SingleDomainSearch<Real>& c);
+  /// Grid: the small particles sorted by their cell, plain or periodic.
+  void bin(const CandidateSearch<Real>& c);
+  void bin_periodic(const PeriodicFinder<Real>& find);
+  void sort_by_cell();
+  /// Grid or all-pairs: the rows counted, sized and filled by a finder.
+  template <class Finder>
+  void fill_rows(const Finder& find);
   /// From row_count_: the offsets of the new rows (the old ones kept for the history), the
   /// number of pairs (one synchronisation) and room for them.
   void size_rows();
@@ -88,6 +107,9 @@ class PairListBuilder {
   int count_ = 0;
   std::int64_t builds_ = 0;
   int n_large_ = 0;
+  bool periodic_ = false;
+  double sheared_slack_ = 0;
+  DeviceBuffer<PeriodicGrid> periodic_grid_;  ///< the periodic grid of the last build
 
   DeviceBuffer<std::uint8_t> small_;
   DeviceBuffer<int> large_;

@@ -28,6 +28,7 @@ struct SingleDomainSearch {
   const int* large;  ///< ascending: particles too large for the grid (walls)
   int n_large;
   ContactFilter filter;
+  physics::PeriodicFrame frame;  ///< the periodic cell (read by the kPeriodic kernels only)
 };
 
 /// One tile of particles in shared memory, structure of arrays: centroids (double) and
@@ -65,7 +66,9 @@ struct SharedTile {
 /// passes the filter, partners ascending: the walls below the block first (few, read from
 /// global memory), then every particle from the block's first on, tile by tile. Every
 /// thread of the block must call it, also those past n: it synchronises the block.
-template <class Real, class Visit>
+/// kPeriodic: each partner is tested at its nearest image in c.frame
+/// (passes_periodic_contact_test, the CPU's).
+template <class Real, bool kPeriodic, class Visit>
 __device__ inline void visit_contacts(const SingleDomainSearch<Real>& c, Visit&& visit) {
   __shared__ SharedTile<Real> tile;
   const int first = blockIdx.x * kSingleDomainBlock;
@@ -82,10 +85,14 @@ __device__ inline void visit_contacts(const SingleDomainSearch<Real>& c, Visit&&
     free_i = c.free[i] != 0;
     for (int k = 0; k < c.n_large && c.large[k] < first; ++k) {
       const int j = c.large[k];
-      if (emits_pair(i, j, true, false, free_i, c.free[j] != 0) &&
-          passes_contact_test(a, box_a, c.geometry.triangle(j, origin), c.geometry.box(j),
-                              c.filter))
+      if (!emits_pair(i, j, true, false, free_i, c.free[j] != 0)) continue;
+      if constexpr (kPeriodic) {
+        if (passes_periodic_contact_test(c.frame, origin, a, box_a, c.geometry, j, c.filter))
+          visit(j);
+      } else if (passes_contact_test(a, box_a, c.geometry.triangle(j, origin), c.geometry.box(j),
+                                     c.filter)) {
         visit(j);
+      }
     }
   }
   const TriangleArrays<Real> staged_geometry = tile.view();
@@ -97,31 +104,35 @@ __device__ inline void visit_contacts(const SingleDomainSearch<Real>& c, Visit&&
     if (emitter)
       for (int k = 0; k < staged; ++k) {
         const int j = base + k;
-        if (emits_pair(i, j, true, tile.small[k] != 0, free_i, tile.free[k] != 0) &&
-            passes_contact_test(a, box_a, staged_geometry.triangle(k, origin), staged_geometry.box(k),
-                                c.filter))
+        if (!emits_pair(i, j, true, tile.small[k] != 0, free_i, tile.free[k] != 0)) continue;
+        if constexpr (kPeriodic) {
+          if (passes_periodic_contact_test(c.frame, origin, a, box_a, staged_geometry, k, c.filter))
+            visit(j);
+        } else if (passes_contact_test(a, box_a, staged_geometry.triangle(k, origin),
+                                       staged_geometry.box(k), c.filter)) {
           visit(j);
+        }
       }
     __syncthreads();  // the tile is overwritten next
   }
 }
 
-template <class Real>
+template <class Real, bool kPeriodic = false>
 __global__ void __launch_bounds__(kSingleDomainBlock)
     single_domain_count_kernel(SingleDomainSearch<Real> c, int* count) {
   int k = 0;
-  visit_contacts(c, [&k](int) { ++k; });
+  visit_contacts<Real, kPeriodic>(c, [&k](int) { ++k; });
   const int i = blockIdx.x * kSingleDomainBlock + static_cast<int>(threadIdx.x);
   if (i < c.n) count[i] = k;
 }
 
 /// The rows, already ascending (visit_contacts' order), with their contact history.
-template <class Real>
+template <class Real, bool kPeriodic = false>
 __global__ void __launch_bounds__(kSingleDomainBlock)
     single_domain_fill_kernel(SingleDomainSearch<Real> c, RowHistory<Real> h) {
   const int i = blockIdx.x * kSingleDomainBlock + static_cast<int>(threadIdx.x);
   int at = i < c.n ? h.offset[i] : 0;
-  visit_contacts(c, [&](int j) { h.partner[at++] = j; });
+  visit_contacts<Real, kPeriodic>(c, [&](int j) { h.partner[at++] = j; });
   if (i < c.n) carry_history(i, h);
 }
 

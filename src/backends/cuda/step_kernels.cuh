@@ -27,6 +27,18 @@ __device__ inline physics::Body<Real> load_body(const ParticleArrays<Real>& p, i
                           Vec2d{p.vx[i], p.vy[i]}, p.w[i], p.area[i], p.mass[i]);
 }
 
+/// Body i as its nearest periodic image `im` is seen from `origin` (CpuSolver::image_body).
+template <class Real>
+__device__ inline physics::Body<Real> load_image_body(const ParticleArrays<Real>& p, int i,
+                                                      Vec2d origin,
+                                                      const physics::PeriodicImage& im) {
+  const Vec2d c{p.x[i], p.y[i]};
+  Vec2<Real> rel[3];
+  physics::load_vertices(p.rel_x, p.rel_y, i, rel);
+  return physics::body_at(physics::image_offset<Real>(origin, c, im), rel,
+                          Vec2d{p.vx[i] + im.dvx, p.vy[i]}, p.w[i], p.area[i], p.mass[i]);
+}
+
 /// Launch shape of the pair-force kernel: 128-thread blocks with a register cap, measured
 /// best on an H100 (bench/results/cuda_tuning_2026-11-23_nvidia-h100-80gb-hbm3.md): the
 /// double kernel needs 226 registers uncapped, so 4 blocks per SM (128 registers, a few
@@ -46,8 +58,9 @@ struct PairKernelShape<float> {
 /// (`member_body`) add exact zeros and keep no history (physics::same_body, as on the CPU);
 /// kBonds: a bonded scene, whose pairs an intact bond holds (`bonds`, physics::
 /// intact_bond_between: the bond carries them) add exact zeros and keep no history too. A
-/// scene without them compiles the kernel without the filter.
-template <class Real, bool kBodies = false, bool kBonds = false>
+/// scene without them compiles the kernel without the filter. kPeriodic: a periodic scene,
+/// whose partners are seen through their nearest image (StepParams::frame), as on the CPU.
+template <class Real, bool kBodies = false, bool kBonds = false, bool kPeriodic = false>
 __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
     pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                        StepStatus* status, const std::int32_t* member_body,
@@ -67,14 +80,44 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   physics::PairSlip<Real> slip = q.slip[s];
   const physics::LawParameters<Real> law = sp.laws[p.material[e] * sp.n_materials + p.material[j]];
   const Vec2d origin{p.x[e], p.y[e]};
-  const physics::PairForce<Real> result = physics::SceneContactLaw::force(
-      load_body(p, e, origin), load_body(p, j, origin), law, static_cast<Real>(sp.dt), slip);
+  const physics::PairForce<Real> result = [&] {
+    if constexpr (kPeriodic) {
+      const physics::PeriodicImage im =
+          physics::nearest_image(sp.frame, origin, Vec2d{p.x[j], p.y[j]});
+      return physics::SceneContactLaw::force(load_body(p, e, origin),
+                                             load_image_body(p, j, origin, im), law,
+                                             static_cast<Real>(sp.dt), slip);
+    } else {
+      return physics::SceneContactLaw::force(load_body(p, e, origin), load_body(p, j, origin), law,
+                                             static_cast<Real>(sp.dt), slip);
+    }
+  }();
   q.load[s] = physics::load_of(result);
   q.slip[s] = slip;
   const bool deep = result.depth > sp.max_depth;
   if (sp.details || deep) q.detail[s] = physics::detail_of(result);
   // The lowest emitter, as the CPU reports it, whatever order the threads run in.
   if (deep) atomicMin(&status->deep, e);
+}
+
+/// Lees-Edwards: the image_power of each emitter row (physics::image_power of each pair's
+/// force through its partner's image, partners ascending: CpuSolver::compute_pair_forces'
+/// sum), after the pair forces and before anything moves. A pair the filters zeroed, or one
+/// the skin keeps in the list without touching, adds an exact zero. Thread per particle.
+template <class Real>
+__global__ void row_image_power_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
+                                       StepParams<Real> sp) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= p.n) return;
+  const Vec2d origin{p.x[i], p.y[i]};
+  double sum = 0;
+  for (int s = q.offset[i]; s < q.offset[i + 1]; ++s) {
+    const int j = q.partner[s];
+    const physics::PeriodicImage im =
+        physics::nearest_image(sp.frame, origin, Vec2d{p.x[j], p.y[j]});
+    sum += physics::image_power(im, static_cast<double>(q.load[s].force_a.x));
+  }
+  sp.image_power[i] = sum;
 }
 
 template <class Real>
@@ -156,10 +199,21 @@ __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const Pair
                           p.inv_inertia[i], sp.gravity, sp.local_damping, sp.dt);
 }
 
+/// Lees-Edwards: the boundary's work through particle i's row of pairs this step, added to
+/// its wall work after its row's energy (CpuSolver::add_step_energy).
+template <class Real>
+__device__ inline void add_image_work(const ParticleArrays<Real>& p, const StepParams<Real>& sp,
+                                      int i) {
+  if (sp.image_power) p.energy[kWallWork][i] += sp.image_power[i] * sp.dt;
+}
+
 /// Writes the advanced state (unless some particle ran away or some pair overlaps too
 /// deep: then the last good state stays, as on the CPU), adds the step's energy and
 /// computes the geometry of the state it leaves. `q` is read only when advancing.
-template <class Real>
+/// kPeriodic: a periodic scene, whose rows book the boundary's work and whose free
+/// particles are put back into the cell (StepParams::frame_new) as CpuSolver::integrate
+/// does.
+template <class Real, bool kPeriodic = false>
 __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                                  StepStatus* status, bool advance) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -167,8 +221,14 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
   if (advance) {
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
     const physics::Pose<double> before = pose(p, i);
-    const physics::Pose<double> pose = advanced_pose(p, sp, i);
+    physics::Pose<double> pose = advanced_pose(p, sp, i);
     add_step_energy(p, q, sp, i, p.free[i] != 0, before, pose);
+    if constexpr (kPeriodic) {
+      add_image_work(p, sp, i);
+      if (p.free[i] != 0)
+        p.energy[kWallWork][i] +=
+            physics::wrap_with_work(sp.frame_new, pose, p.inv_mass[i], sp.gravity);
+    }
     p.x[i] = pose.c.x;
     p.y[i] = pose.c.y;
     p.theta[i] = pose.theta;
