@@ -9,8 +9,40 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace tridem {
+
+namespace {
+
+/// The farthest vertex of any triangle from its centroid, and the triangle.
+std::pair<double, std::size_t> farthest_reach(const ParticleModel& model) {
+  double reach = 0;
+  std::size_t widest = 0;
+  for (std::size_t i = 0; i < model.size(); ++i)
+    for (const Vec2d& v : model.offsets[i])
+      if (std::hypot(v.x, v.y) > reach) {
+        reach = std::hypot(v.x, v.y);
+        widest = i;
+      }
+  return {reach, widest};
+}
+
+}  // namespace
+
+double gpu_exact_periodic_length(const Scene& scene, const ParticleModel& model) {
+  if (!scene.simulation.periodic.any()) return 0;
+  const double grid_cell = classify_for_grid(model.longest_edge, model.motion).cell;
+  return 8 * farthest_reach(model).first + 2 * scene.simulation.skin * grid_cell;
+}
+
+bool gpu_lists_periodic_cell_exactly(const Scene& scene, const ParticleModel& model) {
+  const PeriodicCell& cell = scene.simulation.periodic;
+  const double shortest = gpu_exact_periodic_length(scene, model);
+  for (const auto& range : {cell.x, cell.y})
+    if (range && !(range->length() > shortest)) return false;
+  return true;
+}
 
 void check_periodic_cell(const Scene& scene, const ParticleModel& model) {
   const PeriodicCell& cell = scene.simulation.periodic;
@@ -26,14 +58,7 @@ void check_periodic_cell(const Scene& scene, const ParticleModel& model) {
   // The farthest vertex of any triangle from its centroid: two touching triangles are at
   // most twice that apart, and the nearest image is the only one they can touch through
   // when that is under half a period.
-  double reach = 0;
-  std::size_t widest = 0;
-  for (std::size_t i = 0; i < model.size(); ++i)
-    for (const Vec2d& v : model.offsets[i])
-      if (std::hypot(v.x, v.y) > reach) {
-        reach = std::hypot(v.x, v.y);
-        widest = i;
-      }
+  const auto [reach, widest] = farthest_reach(model);
   const double grid_cell = classify_for_grid(model.longest_edge, model.motion).cell;
   for (const auto& [key, range] :
        {std::pair{"periodic_x", cell.x}, std::pair{"periodic_y", cell.y}}) {

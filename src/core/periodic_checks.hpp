@@ -13,4 +13,12 @@ namespace tridem {
 /// boundaries.
 void check_periodic_cell(const Scene& scene, const ParticleModel& model);
 
+/// The shortest periodic length for which the GPU's pair list, which takes each pair's
+/// image from the centroids at its build, cannot miss a pair: 8 reaches (the farthest
+/// vertex from a centroid) plus twice the skin (ARCHITECTURE.md). 0 without a periodic cell.
+double gpu_exact_periodic_length(const Scene& scene, const ParticleModel& model);
+
+/// Whether the scene's periodic cell is at least that long along each periodic axis.
+bool gpu_lists_periodic_cell_exactly(const Scene& scene, const ParticleModel& model);
+
 }  // namespace tridem

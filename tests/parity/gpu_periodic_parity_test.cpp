@@ -120,13 +120,15 @@ TEST_P(GpuPeriodicCollision, ContactKeepsItsFrictionHistoryAcrossAWrap) {
 
 INSTANTIATE_TEST_SUITE_P(Gpu, GpuPeriodicCollision, ::testing::Values(0, 1));
 
-// backend = auto runs periodic scenes on the GPU (it fell back to the CPU before).
+// backend = auto runs periodic scenes on the GPU (it fell back to the CPU before), those
+// whose cells are long enough for the GPU's list (PeriodicRefusal.CellTooShortForTheGpuList):
+// the sheared gas of 5 pitches (4 are 0.4 m, under the 0.4005 m its grains and skin need).
 TEST(GpuPeriodic, AutoBackendRunsPeriodicScenesOnTheGpu) {
   TRIDEM_SKIP_WITHOUT_GPU();
   for (Method m : {Method::Grid, Method::AllPairs}) {
     test::expect_auto_backend_takes_the_gpu(test::periodic_gas(4, 0.1),
                                             test::SolverChoice(Backend::Cuda, m));
-    test::expect_auto_backend_takes_the_gpu(test::dense_sheared_gas(4),
+    test::expect_auto_backend_takes_the_gpu(test::dense_sheared_gas(5),
                                             test::SolverChoice(Backend::Cuda, m));
   }
 }

@@ -1,6 +1,8 @@
 // Periodic boundaries (physics/periodic_frame.hpp): a collision through the boundary is
 // the collision away from it, a contact survives its particles' wraps with its friction
 // history, a periodic gas conserves momentum, and cells the rules cannot serve are refused.
+#include "core/particle_model.hpp"
+#include "core/periodic_checks.hpp"
 #include "support/float_compare.hpp"
 #include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
@@ -11,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <random>
 #include <vector>
@@ -254,6 +257,48 @@ TEST(PeriodicRefusal, SceneKeys) {
   EXPECT_EQ(ok.simulation.periodic.y->lo, -1);
   EXPECT_EQ(ok.simulation.periodic.y->hi, 2);
   EXPECT_EQ(ok.simulation.periodic.shear_rate, 3);
+}
+
+}  // namespace
+}  // namespace tridem
+
+namespace tridem {
+namespace {
+
+// The GPU's periodic pair list takes each pair's image at its build, exact in cells longer
+// than 8 reaches plus twice the skin (ARCHITECTURE.md); between that and the CPU's 4 reaches
+// the cuda backend refuses the scene (auto runs it on the CPU), never risking a missed pair.
+TEST(PeriodicRefusal, CellTooShortForTheGpuList) {
+  Scene s = test::periodic_gas(3, 0.1);  // 3 pitches = 7.1 reaches: fine on the CPU
+  const ParticleModel model = build_particle_model(s);
+  const double exact = gpu_exact_periodic_length(s, model);
+  EXPECT_GT(exact, 0.3);
+  EXPECT_FALSE(gpu_lists_periodic_cell_exactly(s, model));
+  EXPECT_EQ(refusal(s), "");  // the CPU runs it
+  s.simulation.backend = Backend::Cuda;
+  const std::string why = refusal(s);
+  EXPECT_NE(why.find("too short for backend 'cuda'"), std::string::npos) << why;
+  EXPECT_NE(why.find(fmt::format("{}", exact)), std::string::npos) << why;
+  s.simulation.periodic.x = PeriodicRange{0, 1.01 * exact};
+  s.simulation.periodic.y = PeriodicRange{0, 1.01 * exact};
+  EXPECT_TRUE(gpu_lists_periodic_cell_exactly(s, build_particle_model(s)));
+}
+
+// The GPU tests' periodic scenes are all long enough for the GPU's list.
+TEST(PeriodicRefusal, GpuTestScenesAreLongEnoughForTheGpuList) {
+  std::vector<std::pair<std::string, Scene>> scenes;
+  for (const auto& c : test::periodic_parity_cases()) scenes.emplace_back(c.name, c.scene);
+  for (const Scene& f : test::periodic_float_scenes()) scenes.emplace_back("float", f);
+  scenes.emplace_back("gas 4", test::periodic_gas(4, 0.1));
+  scenes.emplace_back("dense sheared gas 5", test::dense_sheared_gas(5));
+  scenes.emplace_back("pile 12x8", test::periodic_pile(12, 8));
+  scenes.emplace_back("shear flow",
+                      read_scene(std::string(TRIDEM_SOURCE_DIR) + "/examples/shear_flow.toml"));
+  for (const auto& [name, s] : scenes) {
+    const ParticleModel model = build_particle_model(s);
+    EXPECT_TRUE(gpu_lists_periodic_cell_exactly(s, model))
+        << name << ": needs " << gpu_exact_periodic_length(s, model);
+  }
 }
 
 }  // namespace
