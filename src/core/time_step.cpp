@@ -321,7 +321,7 @@ TimeStep estimate_time_step(const Scene& scene, const ParticleModel& model) {
       const auto i = static_cast<std::size_t>(k);
       if (model.motion[i] != Motion::Free || multi_member(model, i)) continue;
       ParticleLimit p = particle_limit(model, i, thinnest, laws, local);
-      if (!mine || p.dt < mine->dt) mine = std::move(p);
+      if (!mine || p.dt < mine->dt) mine = p;
     }
   }
   for (const std::optional<ParticleLimit>& p : best)
