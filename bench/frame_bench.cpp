@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
       {"double, uncompressed (the former files)",
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::None}},
       {"float32, zlib (the default)", {}},
+      {"float32, zlib, appended raw", {tridem::Encoding::Appended}},
       {"double, zlib",
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::Zlib}},
       {"float32, uncompressed",

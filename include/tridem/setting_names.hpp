@@ -35,8 +35,8 @@ inline constexpr Spellings<ContactTest, 2> kContactTestNames{
 inline constexpr Spellings<DecompositionLayout, 2> kLayoutNames{
     {{"1d", DecompositionLayout::Strips}, {"2d", DecompositionLayout::Grid}}};
 
-inline constexpr Spellings<Encoding, 2> kEncodingNames{
-    {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}}};
+inline constexpr Spellings<Encoding, 3> kEncodingNames{
+    {{"binary", Encoding::Binary}, {"ascii", Encoding::Ascii}, {"appended", Encoding::Appended}}};
 
 inline constexpr Spellings<VtkPrecision, 2> kVtkPrecisionNames{
     {{"float32", VtkPrecision::Float32}, {"double", VtkPrecision::Float64}}};

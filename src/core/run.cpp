@@ -19,8 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The state the run starts from: the scene's, or that of `--restart`.
-std::optional<ResumePoint> restore(Solver& solver, const Scene& scene,
-                                   const CheckpointMeta& run, const RunOptions& options) {
+std::optional<ResumePoint> restore(Solver& solver, const Scene& scene, const CheckpointMeta& run,
+                                   const RunOptions& options) {
   if (!options.restart) return std::nullopt;
   const fs::path file = *options.restart;
   const Checkpoint c = read_checkpoint(file);
@@ -39,8 +39,8 @@ void print_start(std::FILE* log, const Solver& solver, const TimeStep& ts, std::
              solver.size(), solver.size() == 1 ? "" : "s", free, solver.description(),
              requested == Backend::Auto ? " (picked by backend = auto)" : "");
   fmt::print(log, "dt = {:.6g} s = {:.3g} x dt_crit ({:.6g} s){}, {} steps to t = {:.6g} s\n",
-             solver.dt(), solver.dt() / ts.critical, ts.critical,
-             ts.automatic ? ", automatic" : "", last, static_cast<double>(last) * solver.dt());
+             solver.dt(), solver.dt() / ts.critical, ts.critical, ts.automatic ? ", automatic" : "",
+             last, static_cast<double>(last) * solver.dt());
   // What sets dt_crit, so that a user sees which contact (a thin wall?) costs the steps.
   if (const std::string by = ts.limit.describe(); !by.empty())
     fmt::print(log, "dt_crit set by {}\n", by);
@@ -69,12 +69,26 @@ void print_relaxation(std::FILE* log, const RelaxReport& r) {
     fmt::print(log, "relax_overlaps: no overlapping triangles\n");
     return;
   }
-  fmt::print(log, "relax_overlaps: {} overlapping pair{} (deepest {:.6g} m) pushed apart in {} "
+  fmt::print(log,
+             "relax_overlaps: {} overlapping pair{} (deepest {:.6g} m) pushed apart in {} "
              "iteration{}: {} particle{} moved (first id {}), by at most {:.6g} m; velocities "
              "unchanged\n",
              r.pairs, r.pairs == 1 ? "" : "s", r.deepest, r.iterations,
              r.iterations == 1 ? "" : "s", r.moved, r.moved == 1 ? "" : "s", r.first_moved,
              r.largest_move);
+}
+
+/// Outputs that will cost a large run more than its steps, named before it starts. The
+/// contacts CSV is 17-digit text, some 1.1 kB per triangle in a dense pile: at 10^6
+/// triangles its writing took longer than 1000 steps on the H200 (docs/performance.md).
+void print_output_notes(std::FILE* log, const OutputSettings& o, std::size_t particles) {
+  constexpr std::size_t kLargeContactsCsv = 100000;
+  if (o.every > 0 && o.contacts && o.contacts_csv && particles >= kLargeContactsCsv)
+    fmt::print(log,
+               "note: the contacts CSV of each frame will take about {:.0f} MB ({} triangles, "
+               "about 1 kB each in a dense packing); [output] contacts_csv = false leaves it "
+               "out (contacts/*.vtp holds the same network)\n",
+               1.1e-3 * static_cast<double>(particles), particles);
 }
 
 }  // namespace
@@ -102,8 +116,8 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   const auto solver = options.make_solver ? options.make_solver(scene, model, ts, config)
                                           : make_solver(scene, model, ts, config);
   clock.lap("solver");
-  const auto free = static_cast<std::size_t>(
-      std::count(model.motion.begin(), model.motion.end(), Motion::Free));
+  const auto free =
+      static_cast<std::size_t>(std::count(model.motion.begin(), model.motion.end(), Motion::Free));
   // What the checkpoints of this run record, and what a restart must match.
   const CheckpointMeta meta{scene.simulation.precision, scene_fingerprint(scene),
                             physics_settings(scene, ts.chosen)};
@@ -115,6 +129,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   if (log) {
     print_start(log, *solver, ts, free, scene.simulation.backend, last);
     if (relaxed) print_relaxation(log, *relaxed);
+    print_output_notes(log, scene.output, model.size());
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
                  resume->step, resume->time);

@@ -41,7 +41,12 @@ inline void fill_from_model(Snapshot& out, const Columns& model) {
   const auto& oy = model.column(pf::offset_y{});
   const auto& inv_mass = model.column(pf::inv_mass{});
   const auto& inv_inertia = model.column(pf::inv_inertia{});
-  for (std::size_t i = 0; i < out.size(); ++i) {
+  // On the threads for large snapshots: a frame of 10^6 triangles is taken on the stepping
+  // thread, which the GPU waits for meanwhile.
+  const auto n = static_cast<std::ptrdiff_t>(out.size());
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
+    const auto i = static_cast<std::size_t>(p);
     const Vec2d off[3] = {{ox[0][i], oy[0][i]}, {ox[1][i], oy[1][i]}, {ox[2][i], oy[2][i]}};
     set_vertices(out, i, physics::place(Vec2d{out.x[i], out.y[i]}, out.theta[i], off));
     out.mass[i] = inv_mass[i] > 0 ? 1.0 / inv_mass[i] : 0.0;
@@ -77,30 +82,35 @@ inline void fill_bodies(Snapshot& out, const Columns& from, std::size_t bodies) 
   out.body_first[bodies] = from.column(bf::body_last{})[bodies - 1];
 }
 
+/// The contact record of touching pair (e, j) from its result. The pair's point is in its
+/// frame, relative to the emitter's centroid (cx, cy): placed back in double here.
+template <class Real>
+inline ContactRecord contact_record(std::size_t e, std::size_t j, const physics::PairForce<Real>& r,
+                                    const double* cx, const double* cy) {
+  ContactRecord c;
+  c.i = static_cast<std::int64_t>(e);
+  c.j = static_cast<std::int64_t>(j);
+  c.fx = r.force_a.x;
+  c.fy = r.force_a.y;
+  c.px = cx[e] + static_cast<double>(r.point.x);
+  c.py = cy[e] + static_cast<double>(r.point.y);
+  c.nx = r.normal.x;
+  c.ny = r.normal.y;
+  c.sliding = r.sliding;
+  c.depth = r.depth;
+  return c;
+}
+
 /// The touching pairs of a pair list (rows by emitter) as contact records, in slot order.
-/// A pair's point is in its frame, relative to the emitter's centroid (cx, cy): placed
-/// back in double here.
 template <class Real, class Offset, class Partner>
 inline void append_contacts(Snapshot& out, std::size_t n, const Offset* offset,
                             const Partner* partner, const physics::PairForce<Real>* result,
                             const double* cx, const double* cy) {
   for (std::size_t e = 0; e < n; ++e)
-    for (auto s = offset[e]; s < offset[e + 1]; ++s) {
-      const auto& r = result[s];
-      if (!r.touching) continue;
-      ContactRecord c;
-      c.i = static_cast<std::int64_t>(e);
-      c.j = static_cast<std::int64_t>(partner[s]);
-      c.fx = r.force_a.x;
-      c.fy = r.force_a.y;
-      c.px = cx[e] + static_cast<double>(r.point.x);
-      c.py = cy[e] + static_cast<double>(r.point.y);
-      c.nx = r.normal.x;
-      c.ny = r.normal.y;
-      c.sliding = r.sliding;
-      c.depth = r.depth;
-      out.contacts.push_back(c);
-    }
+    for (auto s = offset[e]; s < offset[e + 1]; ++s)
+      if (result[s].touching)
+        out.contacts.push_back(
+            contact_record(e, static_cast<std::size_t>(partner[s]), result[s], cx, cy));
 }
 
 /// Periodic boundaries: each contact's image translation of its partner j, by the rule the

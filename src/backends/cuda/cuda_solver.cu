@@ -466,7 +466,9 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
     using T = typename decltype(field)::template type<Real>;
     for_each_array(out.column(field), [&](std::vector<double>& to, int) {
       const auto* from = reinterpret_cast<const T*>(staging_.data() + at);
-      for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<double>(from[i]);
+      const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) if (count > 65536)
+      for (std::ptrdiff_t i = 0; i < count; ++i) to[i] = static_cast<double>(from[i]);
       at += staged_bytes<T>(n);
     });
   });
@@ -477,11 +479,8 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.periodic = cell_;
   out.contacts.clear();
   if (!with_contacts || step_ == 0) return;
-  std::vector<int> offset, partner;
-  std::vector<physics::PairForce<Real>> result;
-  pairs_->download(offset, partner, nullptr, &result);
-  append_contacts(out, n, offset.data(), partner.data(), result.data(), out.x.data(),
-                  out.y.data());
+  append_touching_contacts(out, static_cast<int>(n), pairs_->arrays(), stream_, out.x.data(),
+                           out.y.data(), touching_);
   if (periodic_)
     set_image_shifts(out, periodic_frame_of(cell_, static_cast<double>(step_) * params_.dt),
                      out.x.data(), out.y.data());

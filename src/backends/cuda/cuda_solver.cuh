@@ -10,6 +10,7 @@
 #include "backends/cuda/pair_list_builder.cuh"
 #include "backends/cuda/particle_buffers.cuh"
 #include "backends/cuda/stage_events.cuh"
+#include "backends/cuda/touching_pairs.cuh"
 #include "core/particle_model.hpp"
 #include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
@@ -134,6 +135,7 @@ class CudaSolver final : public Solver {
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
+  mutable std::vector<TouchingPair<Real>> touching_;  ///< a snapshot's contacts, as copied
 };
 
 }  // namespace tridem::cuda

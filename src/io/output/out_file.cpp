@@ -37,8 +37,15 @@ OutFile& OutFile::operator=(OutFile&& other) noexcept {
 }
 
 void OutFile::write(std::string_view text) {
-  buffer_.append(text.data(), text.data() + text.size());
-  if (buffer_.size() >= kChunk) drain();
+  if (text.size() < kChunk) {
+    buffer_.append(text.data(), text.data() + text.size());
+    if (buffer_.size() >= kChunk) drain();
+    return;
+  }
+  // A frame's encoded array (hundreds of megabytes at 10^7 triangles) goes to stdio as it
+  // is, after what is buffered, rather than through one more copy.
+  drain();
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) fail("cannot write");
 }
 
 void OutFile::print_rows(std::size_t count, const RowBlock& rows) {
@@ -79,8 +86,7 @@ void OutFile::print_rows(std::size_t count, const RowBlock& rows) {
 }
 
 void OutFile::drain() {
-  if (!file_)
-    throw RunError(fmt::format("cannot write '{}': already closed", path_.string()));
+  if (!file_) throw RunError(fmt::format("cannot write '{}': already closed", path_.string()));
   if (buffer_.size() != 0 &&
       std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
     fail("cannot write");

@@ -92,11 +92,11 @@ struct WordType {
   std::size_t size;
 };
 
-constexpr WordType kWordTypes[] = {
-    {"Float32", Word::F32, 4}, {"Float64", Word::F64, 8}, {"Int8", Word::I8, 1},
-    {"Int16", Word::I16, 2},   {"Int32", Word::I32, 4},   {"Int64", Word::I64, 8},
-    {"UInt8", Word::U8, 1},    {"UInt16", Word::U16, 2},  {"UInt32", Word::U32, 4},
-    {"UInt64", Word::U64, 8}};
+constexpr WordType kWordTypes[] = {{"Float32", Word::F32, 4}, {"Float64", Word::F64, 8},
+                                   {"Int8", Word::I8, 1},     {"Int16", Word::I16, 2},
+                                   {"Int32", Word::I32, 4},   {"Int64", Word::I64, 8},
+                                   {"UInt8", Word::U8, 1},    {"UInt16", Word::U16, 2},
+                                   {"UInt32", Word::U32, 4},  {"UInt64", Word::U64, 8}};
 
 template <class T>
 T load_word(const std::uint8_t* p) {
@@ -190,8 +190,48 @@ std::vector<std::uint8_t> inflate_blocks(const VtkXmlFile& f, std::span<const st
   return values;
 }
 
-std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, Word word,
-                                 std::size_t word_size, std::size_t count,
+/// An appended array's bytes in the raw block, from `offset`: its header and values (or
+/// compression header and blocks), as far as its header says, checked against the block.
+std::span<const std::uint8_t> appended_bytes(const VtkXmlFile& f, std::string_view offset_text,
+                                             std::size_t header, bool compressed,
+                                             std::string_view label) {
+  if (f.appended_begin == std::string::npos)
+    malformed(f, fmt::format("{} is appended, but the file has no <AppendedData>", label));
+  std::size_t offset = 0;
+  const auto [end, ec] =
+      std::from_chars(offset_text.data(), offset_text.data() + offset_text.size(), offset);
+  if (ec != std::errc() || end != offset_text.data() + offset_text.size())
+    malformed(f, fmt::format("{} has offset '{}', not a number", label, offset_text));
+  const std::size_t size = f.appended_end - f.appended_begin;
+  if (offset > size)
+    malformed(f, fmt::format("{}: offset {} is past the appended data", label, offset));
+  const auto* block = reinterpret_cast<const std::uint8_t*>(f.source.data() + f.appended_begin);
+  const std::span<const std::uint8_t> rest(block + offset, size - offset);
+  const auto word = [&](std::size_t k) -> std::uint64_t {
+    if ((k + 1) * header > rest.size())
+      malformed(f, fmt::format("{}: its header runs past the appended data", label));
+    return header == 8 ? load_word<std::uint64_t>(rest.data() + k * header)
+                       : load_word<std::uint32_t>(rest.data() + k * header);
+  };
+  std::uint64_t length = 0;
+  if (!compressed) {
+    length = header + word(0);
+  } else {
+    const std::uint64_t blocks = word(0);
+    if (blocks > rest.size() / header)
+      malformed(f, fmt::format("{}: its compression header names {} blocks", label, blocks));
+    length = (3 + blocks) * header;
+    for (std::uint64_t b = 0; b < blocks; ++b) length += word(3 + b);
+  }
+  if (length > rest.size())
+    malformed(f, fmt::format("{} runs past the appended data ({} bytes from offset {}, {} there)",
+                             label, length, offset, rest.size()));
+  return rest.first(static_cast<std::size_t>(length));
+}
+
+/// `text` is the element's contents (base64), or for format="appended" its offset.
+std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, bool appended,
+                                 Word word, std::size_t word_size, std::size_t count,
                                  std::string_view label) {
   const char* native = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   const std::string order = attribute(f.root, "byte_order");
@@ -208,8 +248,13 @@ std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, Wor
     malformed(f, fmt::format("compressor '{}' is not supported (only vtkZLibDataCompressor)",
                              compressor));
 
-  std::vector<std::uint8_t> bytes =
-      base64_decode(text, fmt::format("cannot read '{}': {}", f.name, label));
+  std::vector<std::uint8_t> bytes;
+  if (appended) {
+    const auto span = appended_bytes(f, text, header, !compressor.empty(), label);
+    bytes.assign(span.begin(), span.end());
+  } else {
+    bytes = base64_decode(text, fmt::format("cannot read '{}': {}", f.name, label));
+  }
   const std::size_t expected = count * word_size;
   std::size_t skip = 0;
   if (!compressor.empty()) {
@@ -271,15 +316,36 @@ VtkXmlFile parse_vtk_xml(std::string name, std::string source) {
     } else if (open.empty()) {
       malformed(f, fmt::format("<{}> after the end of <VTKFile>", t.name));
     }
-    if (t.name == "AppendedData")
-      malformed(f, "appended data is not supported; write frames with inline data");
+    if (t.name == "AppendedData") {
+      // Raw bytes follow the underscore, '<' among them: the parse of elements ends here,
+      // and the file must end with the block's and the root's closing tags.
+      if (attribute(t.attributes, "encoding") != "raw")
+        malformed(f, fmt::format("appended data in encoding '{}' is not supported (only raw)",
+                                 attribute(t.attributes, "encoding")));
+      const std::size_t underscore = s.find('_', p);
+      if (underscore == std::string::npos || s.find_first_not_of(" \t\r\n", p) != underscore)
+        malformed(f, "<AppendedData> does not start with '_'");
+      const std::size_t close = s.rfind("</AppendedData>");
+      if (close == std::string::npos || close < underscore ||
+          s.find_first_not_of(" \t\r\n", close + std::string_view("</AppendedData>").size()) !=
+              s.rfind("</VTKFile>") ||
+          s.find_first_not_of(" \t\r\n", s.rfind("</VTKFile>") + 10) != std::string::npos)
+        malformed(f, "<AppendedData> is not closed at the end of the file");
+      f.appended_begin = underscore + 1;
+      // VTK puts a newline (and indentation) between the bytes and the closing tag; the
+      // arrays' headers say where each ends.
+      f.appended_end = close;
+      if (open.size() != 1 || open.back() != "VTKFile")
+        malformed(f, "<AppendedData> is not directly inside <VTKFile>");
+      open.clear();
+      break;
+    }
     if (t.name == "Piece" && !seen_piece) {
       f.piece = t.attributes;
       seen_piece = true;
     }
     if (t.name == "DataArray") {
-      XmlDataArray array{open.empty() ? std::string() : open.back(), std::move(t.attributes),
-                         p, 0};
+      XmlDataArray array{open.empty() ? std::string() : open.back(), std::move(t.attributes), p, 0};
       if (!t.self_closing) {
         const std::size_t e = s.find("</DataArray>", p);
         if (e == std::string::npos) malformed(f, "a <DataArray> is never closed");
@@ -327,10 +393,11 @@ std::vector<double> decode_array(const VtkXmlFile& f, const XmlDataArray& a, int
   const std::size_t count = static_cast<std::size_t>(components) * tuples;
   const std::string_view text = std::string_view(f.source).substr(a.begin, a.length);
   const std::string format = attribute(a.attributes, "format");
-  if (format == "binary")
-    return parse_binary(f, text, word->word, word->size, count, label);
-  if (format != "ascii")
-    malformed(f, fmt::format("{} has unsupported format '{}'", label, format));
+  if (format == "binary") return parse_binary(f, text, false, word->word, word->size, count, label);
+  if (format == "appended")
+    return parse_binary(f, attribute(a.attributes, "offset"), true, word->word, word->size, count,
+                        label);
+  if (format != "ascii") malformed(f, fmt::format("{} has unsupported format '{}'", label, format));
   std::vector<double> values = parse_ascii(f, text, label);
   if (values.size() != count)
     malformed(f, fmt::format("{} holds {} numbers, expected {}", label, values.size(), count));

@@ -1,8 +1,9 @@
 #pragma once
 // Just enough XML to read back the VTK files this project writes: elements, attributes
-// and DataArray contents in "ascii" or inline "binary" format, the binary ones plain or
-// compressed by vtkZLibDataCompressor. It is not a general XML parser (no entities, no
-// appended data, no other compressor) and says so when it meets one.
+// and DataArray contents in "ascii" or inline "binary" format or "appended" to the raw
+// <AppendedData> block, the binary ones plain or compressed by vtkZLibDataCompressor. It
+// is not a general XML parser (no entities, no base64 appended data, no other compressor)
+// and says so when it meets one.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -23,6 +24,9 @@ struct VtkXmlFile {
   std::map<std::string, std::string> root;   ///< attributes of <VTKFile>
   std::map<std::string, std::string> piece;  ///< attributes of the first <Piece>
   std::vector<XmlDataArray> arrays;
+  /// The raw appended block: its bytes after the underscore, up to its closing tag, in
+  /// source; both npos without one.
+  std::size_t appended_begin = std::string::npos, appended_end = std::string::npos;
 };
 
 /// Parses a file's text; throws Error with `name` in the message on anything malformed.

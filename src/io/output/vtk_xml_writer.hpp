@@ -37,8 +37,9 @@ class VtkXmlWriter {
 
   /// Opens `<VTKFile type="...">` after the XML declaration, with the host's byte order
   /// and, when compressing, the compressor.
-  void begin_file(OutFile&, std::string_view type) const;
-  static void end_file(OutFile&);
+  void begin_file(OutFile&, std::string_view type);
+  /// Closes the file's root, after the appended arrays' block in the appended encoding.
+  void end_file(OutFile&);
 
   /// A real-valued `<DataArray>` of `count` = components × tuples numbers value(k), as
   /// Float32 or Float64 by the format's precision.
@@ -112,22 +113,33 @@ class VtkXmlWriter {
   }
   static std::string components_attribute(int components);
 
+  /// Arrays of at least this many values are converted on the OpenMP threads: a frame of
+  /// 10^6 triangles is some 10^8 values, which one core took most of a second to convert.
+  static constexpr std::size_t kParallelValues = std::size_t{1} << 16;
+
   /// The values, converted to T, into raw_ after room for the uncompressed byte count.
+  /// `value` is called from several threads at once for large arrays: it must only read.
   template <class T, class Value>
   void pack(std::size_t count, const Value& value) {
     raw_.resize(kCountBytes + count * sizeof(T));
-    std::uint8_t* to = raw_.data() + kCountBytes;
-    for (std::size_t k = 0; k < count; ++k, to += sizeof(T)) {
-      const T v = static_cast<T>(value(k));
-      std::memcpy(to, &v, sizeof v);
+    std::uint8_t* const to = raw_.data() + kCountBytes;
+    const auto values = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (count >= kParallelValues)
+    for (std::ptrdiff_t k = 0; k < values; ++k) {
+      const T v = static_cast<T>(value(static_cast<std::size_t>(k)));
+      std::memcpy(to + static_cast<std::size_t>(k) * sizeof(T), &v, sizeof v);
     }
   }
   /// The element around raw_'s values; `size_attribute` is NumberOfComponents for
   /// ordinary arrays and NumberOfTuples for field data, which VTK requires there.
   void emit(OutFile&, std::string_view name, VtkWord word, std::string_view size_attribute,
             int indent);
+  /// Appended encoding: the element names its array's offset in the block end_file
+  /// writes, and the bytes wait in appended_.
   void write_binary(OutFile&);
   void write_compressed(OutFile&);
+  /// The compressed array's header_ and blocks, in compressed_ (its first `used` bytes).
+  std::size_t compress_raw(const OutFile&);
   void write_ascii(OutFile&, VtkWord word);
 
   VtkFormat format_;
@@ -135,6 +147,7 @@ class VtkXmlWriter {
   std::vector<std::uint8_t> compressed_;  ///< its blocks, compressed, end to end
   std::vector<std::uint64_t> header_;     ///< the compressed array's header
   std::string text_;                      ///< base64 of the above
+  std::vector<std::uint8_t> appended_;    ///< the file's appended arrays, end to end
 };
 
 }  // namespace tridem::io

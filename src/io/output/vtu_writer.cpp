@@ -93,7 +93,7 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
         out, "coordination", 1, n, [&](std::size_t k) { return grain.coordination[g(k)]; }, 8);
   }
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
-  VtkXmlWriter::end_file(out);
+  w.end_file(out);
   out.close();
 }
 

@@ -71,6 +71,35 @@ TEST(FrameSize, DensePileFrameWithContactsIsAtMost160BytesPerTriangleNot100) {
             5 * (frame_bytes + contact_bytes));
 }
 
+TEST(FrameSize, AppendedEncodingIsAQuarterSmallerAndReadsTheSame) {
+  const Snapshot& s = frame();
+  test::TempDir tmp;
+  const VtkFormat appended{Encoding::Appended};
+  write_vtu_frame(tmp.path() / "inline.vtu", s);
+  write_contacts_vtp(tmp.path() / "inline.vtp", s);
+  write_vtu_frame(tmp.path() / "appended.vtu", s, appended);
+  write_contacts_vtp(tmp.path() / "appended.vtp", s, appended);
+  const double inline_bytes = bytes_per_triangle(tmp.path() / "inline.vtu", s) +
+                              bytes_per_triangle(tmp.path() / "inline.vtp", s);
+  const double appended_bytes = bytes_per_triangle(tmp.path() / "appended.vtu", s) +
+                                bytes_per_triangle(tmp.path() / "appended.vtp", s);
+  // Base64 spends 4 characters on 3 bytes; the XML around the arrays is the same.
+  EXPECT_LE(appended_bytes, 0.77 * inline_bytes)
+      << "appended " << appended_bytes << " B/triangle, inline " << inline_bytes;
+  const Snapshot a = read_vtu_frame(tmp.path() / "inline.vtu");
+  const Snapshot b = read_vtu_frame(tmp.path() / "appended.vtu");
+  EXPECT_EQ(a.x1, b.x1);
+  EXPECT_EQ(a.vx, b.vx);
+  EXPECT_EQ(a.torque, b.torque);
+  EXPECT_EQ(a.material, b.material);
+  const auto network = [&](const char* name) {
+    const fs::path file = tmp.path() / name;
+    const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), test::read_file(file));
+    return io::decode_array(f, *io::find_array(f, "CellData", "force"), 3, s.contacts.size());
+  };
+  EXPECT_EQ(network("inline.vtp"), network("appended.vtp"));
+}
+
 /// Each value read within float32's rounding of the state's (or of `scale`, if larger).
 void expect_float_close(const std::vector<double>& read, const std::vector<double>& state,
                         double scale, const char* what) {

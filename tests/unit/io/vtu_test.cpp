@@ -47,6 +47,12 @@ TEST(Vtu, CompressedBinaryRoundTrip) {
   expect_round_trip({Encoding::Binary, VtkPrecision::Float64, VtkCompression::Zlib});
 }
 TEST(Vtu, AsciiRoundTrip) { expect_round_trip({Encoding::Ascii, VtkPrecision::Float64}); }
+TEST(Vtu, AppendedRoundTrip) {
+  expect_round_trip({Encoding::Appended, VtkPrecision::Float64, VtkCompression::None});
+}
+TEST(Vtu, CompressedAppendedRoundTrip) {
+  expect_round_trip({Encoding::Appended, VtkPrecision::Float64, VtkCompression::Zlib});
+}
 
 TEST(Vtu, DeclaresTheRequestedEncoding) {
   test::TempDir tmp;
@@ -198,6 +204,36 @@ TEST_F(VtuCompressedMalformed, CorruptBlock) {
   expect_refused(head + text_.substr(at + head.size(), 44) + original,
                  head + text_.substr(at + head.size(), 44) + changed);
 }
+
+/// The appended encoding: the arrays' bytes after the XML, each element naming its offset.
+class VtuAppendedMalformed : public VtuMalformed {
+ protected:
+  VtkFormat format() const override { return {Encoding::Appended}; }
+};
+
+TEST_F(VtuAppendedMalformed, DeclaresAppendedRawData) {
+  EXPECT_NE(text_.find("format=\"appended\" offset=\"0\"/>"), std::string::npos);
+  EXPECT_NE(text_.find("<AppendedData encoding=\"raw\">\n   _"), std::string::npos);
+  EXPECT_EQ(text_.find("format=\"binary\""), std::string::npos);
+  const Snapshot r = read_vtu_frame(file_);
+  EXPECT_EQ(r.material, test::sample_snapshot().material);
+}
+TEST_F(VtuAppendedMalformed, BlockCutShort) {
+  // The block ends halfway: the arrays of its second half run past it.
+  const auto begin = text_.find("   _") + 4;
+  const auto end = text_.rfind("\n  </AppendedData>");
+  ASSERT_LT(begin, end);
+  const auto half = begin + (end - begin) / 2;
+  expect_refused(text_.substr(half), text_.substr(end));
+}
+TEST_F(VtuAppendedMalformed, OffsetPastTheData) {
+  expect_refused("offset=\"0\"", "offset=\"99999999\"");
+}
+TEST_F(VtuAppendedMalformed, OffsetNotANumber) { expect_refused("offset=\"0\"", "offset=\"x\""); }
+TEST_F(VtuAppendedMalformed, Base64AppendedData) {
+  expect_refused("encoding=\"raw\"", "encoding=\"base64\"");
+}
+TEST_F(VtuAppendedMalformed, UnclosedBlock) { expect_refused("</AppendedData>", "</Appended>"); }
 
 }  // namespace
 }  // namespace tridem

@@ -1,6 +1,7 @@
 // Valid scenes: every key lands in the right field, defaults, integers as reals, clockwise
 // reordering and particle id order.
 #include "core/particle_model.hpp"
+#include "tridem/error.hpp"
 #include "tridem/generate.hpp"
 #include "tridem/scene_io.hpp"
 
@@ -11,7 +12,8 @@
 namespace tridem {
 namespace {
 
-const std::filesystem::path kScenes = std::filesystem::path(TRIDEM_SOURCE_DIR) / "tests/data/scenes";
+const std::filesystem::path kScenes =
+    std::filesystem::path(TRIDEM_SOURCE_DIR) / "tests/data/scenes";
 
 void expect_same_vertices(const TriangleSpec& a, const TriangleSpec& b) {
   for (int k = 0; k < 3; ++k) {
@@ -173,6 +175,34 @@ vertices = [[0, 0], [1, 0], [0, 1]]
   EXPECT_DOUBLE_EQ(material_restitution(s.materials[0]), 0.6);
   // ζ = 0.2 stands for the face restitution it gave: exp(−0.2π/√0.96) = 0.5266.
   EXPECT_NEAR(material_restitution(s.materials[1]), 0.52662, 1e-5);
+}
+
+TEST(SceneParse, FrameFormatKeysAreRead) {
+  const std::string triangle = R"(
+[[triangle]]
+material = "m"
+vertices = [[0, 0], [1, 0], [0, 1]]
+)";
+  const Scene s = parse_scene(std::string(kHead) + triangle + R"(
+[output]
+every = 10
+contacts_csv = false
+vtk_encoding = "appended"
+vtk_precision = "double"
+vtk_compression = "none"
+)",
+                              "formats.toml");
+  EXPECT_FALSE(s.output.contacts_csv);
+  EXPECT_EQ(s.output.encoding, Encoding::Appended);
+  EXPECT_EQ(s.output.precision, VtkPrecision::Float64);
+  EXPECT_EQ(s.output.compression, VtkCompression::None);
+  try {
+    parse_scene(std::string(kHead) + triangle + "[output]\nvtk_encoding = \"raw\"\n", "bad.toml");
+    ADD_FAILURE() << "accepted vtk_encoding = \"raw\"";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("appended"), std::string::npos)
+        << "the message names the choices: " << e.what();
+  }
 }
 
 TEST(SceneParse, IntegersAcceptedWhereRealsExpected) {
