@@ -54,7 +54,7 @@ inline double max_wall_force_difference(const Snapshot& a, const Snapshot& b) {
 /// larger than the fixed tolerances; `twin` is a twin of the reference at its step 0.
 inline void expect_runs_agree_within_rounding(Solver& reference, Solver& tried, RoundingTwin& twin,
                                               std::int64_t steps, std::int64_t every) {
-  Snapshot a, b, t;
+  Snapshot a, b;
   double twin_wall_force = 0;
   for (std::int64_t s = every; s <= steps; s += every) {
     reference.advance(every);
@@ -62,10 +62,9 @@ inline void expect_runs_agree_within_rounding(Solver& reference, Solver& tried, 
     twin.advance(every);
     reference.snapshot(a, true);
     tried.snapshot(b, true);
-    twin.solver().snapshot(t, true);
     ASSERT_EQ(a.size(), b.size());
     const Difference spread = twin.spread_from(a);
-    twin_wall_force = std::max(twin_wall_force, max_wall_force_difference(a, t));
+    twin_wall_force = std::max(twin_wall_force, max_wall_force_difference(a, twin.snapshot()));
     const Difference d = max_difference(a, b);
     const double dx = std::max(kPositionTolerance, kProgramEnvelope * spread.position);
     const double da = std::max(kAngleTolerance, kProgramEnvelope * spread.angle);

@@ -116,17 +116,4 @@ inline Scene servo_box_of_bodies(bool follow, int rows = 5) {
   return s;
 }
 
-/// Rows of the settled servo box.
-constexpr int kSettledServoRows = 2;
-
-/// servo_box of kSettledServoRows rows (of bodies with `bodies`): the servo and the lid as
-/// in the pile of 5 rows, but few enough grains that the packing settles without its
-/// contacts opening and closing, so that rounding stays at rounding size
-/// (UnstableParity.SettledServoBoxKeepsRoundingAtRoundingSize) where the pile's grows
-/// tenfold per 50-100 steps from its first contacts.
-inline Scene settled_servo_box(bool bodies, bool follow = true) {
-  return bodies ? servo_box_of_bodies(follow, kSettledServoRows)
-                : servo_box(follow, kSettledServoRows);
-}
-
 }  // namespace tridem::test

@@ -17,6 +17,7 @@
 // gpu_checks_2026-12-02_nvidia-h200). Bodies of several triangles are kicked through their
 // own pose and velocities, which place their members.
 #include "support/gpu_compare.hpp"
+#include "tridem/energy_budget.hpp"
 #include "tridem/snapshot.hpp"
 #include "tridem/solver.hpp"
 #include "tridem/solver_state.hpp"
@@ -42,6 +43,11 @@ class RoundingTwin {
     for (std::int64_t s = 0; s < steps; ++s) {
       twin_->save_state(before_);
       twin_->advance(1);
+      // The step's forces, which load_state clears: shown by spread_from and snapshot().
+      if (s + 1 == steps) {
+        twin_->snapshot(snapshot_, true);
+        energy_ = twin_->energy();
+      }
       twin_->save_state(after_);
       kick_changes(after_.vx, before_.vx);
       kick_changes(after_.vy, before_.vy);
@@ -61,9 +67,9 @@ class RoundingTwin {
     }
   }
 
-  /// The twin's largest difference from `reference` so far (reference at the twin's step).
+  /// The twin's largest difference from `reference` so far (reference at the twin's step),
+  /// from its last step before that step's kicks.
   const Difference& spread_from(const Snapshot& reference) {
-    twin_->snapshot(snapshot_, true);
     const Difference d = max_difference(reference, snapshot_);
     spread_.position = std::max(spread_.position, d.position);
     spread_.angle = std::max(spread_.angle, d.angle);
@@ -71,7 +77,12 @@ class RoundingTwin {
     return spread_;
   }
 
-  /// The twin itself, for what else is compared (energy, bond state).
+  /// The twin's last step before its kicks, with that step's forces and contacts.
+  const Snapshot& snapshot() const { return snapshot_; }
+  /// The twin's energy budget at its last step, before its kicks (load_state clears the
+  /// elastic energy of the contacts until the next step).
+  const EnergyBudget& energy() const { return energy_; }
+  /// The twin itself, for what else is compared (its bond state).
   Solver& solver() { return *twin_; }
 
  private:
@@ -96,6 +107,7 @@ class RoundingTwin {
   std::uint64_t state_;
   SolverState before_, after_;
   Snapshot snapshot_;
+  EnergyBudget energy_;
   Difference spread_;
 };
 
