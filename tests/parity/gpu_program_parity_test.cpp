@@ -78,7 +78,7 @@ TEST_P(GpuProgramParity, RotatingDrumBodyAgreesWithSerial) {
 // gpu_checks_2026-12-02_nvidia-h200): so it is compared every 100 steps within
 // kProgramEnvelope times the spread of a serial twin kicked by one rounding of its
 // positions and velocity changes each step (support/program_compare.hpp), which a servo
-// of 1 % other gain or one that ignores the length exceeds (validation/
+// of 1 % other gain exceeds (validation/
 // unstable_parity_test.cpp).
 TEST_P(GpuProgramParity, ServoFollowingALengthAgreesWithSerial) {
   for (Scene s : {test::servo_box(true), test::servo_box_of_bodies(true)}) {
