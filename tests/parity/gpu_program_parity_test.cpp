@@ -3,12 +3,15 @@
 // body turned by a rotation program with grains inside. The programs are the same TRIDEM_HD
 // functions on both, and a servo reads the same summed force (the walls' gather runs every
 // step on the GPU when a servo is present), so they agree as the other GPU parity tests do
-// (support/gpu_compare.hpp); likewise a servo whose length follows a lid. Skipped without
-// a GPU; label gpu.
+// (support/gpu_compare.hpp); likewise a servo whose length follows a lid, on an unstable
+// pile, within a rounding twin's envelope (support/program_compare.hpp;
+// validation/unstable_parity_test.cpp proves that comparison on the CPU). Skipped without a GPU; label gpu.
 #include "support/backend_test.hpp"
 #include "support/body_scenes.hpp"
 #include "support/gpu_compare.hpp"
+#include "support/program_compare.hpp"
 #include "support/program_scenes.hpp"
+#include "support/rounding_twin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,15 +24,7 @@ void expect_programs_agree(const test::SolverChoice& choice, const Scene& scene,
                            std::int64_t every) {
   auto cpu = test::solver_for(scene, test::SolverChoice(Backend::Cpu, choice.method));
   auto gpu = test::solver_for(scene, choice);
-  Snapshot a, b;
-  for (std::int64_t s = every; s <= steps; s += every) {
-    cpu->advance(every);
-    gpu->advance(every);
-    cpu->snapshot(a, true);
-    gpu->snapshot(b, true);
-    const std::string what = "step " + std::to_string(s);
-    test::expect_agreement(a, b, what.c_str());
-  }
+  test::expect_runs_agree(*cpu, *gpu, steps, every);
 }
 
 using GpuProgramParity = test::BackendTest;
@@ -76,12 +71,25 @@ TEST_P(GpuProgramParity, RotatingDrumBodyAgreesWithSerial) {
 
 // A servo whose target follows the gap between the floor and a lid coming down
 // (length_between): the target is computed by servo_target_kernel on the GPU, by
-// update_servo_targets on the CPU, from the same poses with the same function.
+// update_servo_targets on the CPU, from the same poses with the same function. The box's
+// pile parts from the serial run from its first contacts (step ~382: a shallow overlap's
+// depth, the difference of nearly equal coordinates, carries their rounding), then about
+// tenfold per 50-100 steps, with a fixed target too (H200, bench/results/
+// gpu_checks_2026-12-02_nvidia-h200): so it is compared every 100 steps within
+// kProgramEnvelope times the spread of a serial twin kicked by one rounding of its
+// positions and velocity changes each step (support/program_compare.hpp), which a servo
+// of 1 % other gain exceeds (validation/
+// unstable_parity_test.cpp).
 TEST_P(GpuProgramParity, ServoFollowingALengthAgreesWithSerial) {
   for (Scene s : {test::servo_box(true), test::servo_box_of_bodies(true)}) {
     if (GetParam().method == Method::Decomposition)
       s = test::with_decomposition(s, DecompositionLayout::Strips, 40);
-    expect_programs_agree(GetParam(), s, 3000, 1000);
+    const test::SolverChoice serial(Backend::Cpu, GetParam().method);
+    auto cpu = test::solver_for(s, serial);
+    auto gpu = test::solver_for(s, GetParam());
+    test::RoundingTwin twin(test::solver_for(s, serial), 0x1p-53,
+                            test::RoundingTwin::Kicks::VelocitiesAndPositions);
+    test::expect_runs_agree_within_rounding(*cpu, *gpu, twin, 3000, 100);
   }
 }
 

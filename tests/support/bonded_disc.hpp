@@ -5,6 +5,7 @@
 // test's 0.1 m/s needs tens of thousands). Gmsh meshes it: without Gmsh the scene throws
 // SceneError and the tests skip.
 #include "support/brazilian_disc.hpp"
+#include "tridem/error.hpp"
 
 namespace tridem::test {
 
@@ -15,6 +16,16 @@ constexpr std::int64_t kLoadedDiscSteps = 600;
 
 /// 5 mm elements (some 180 triangles), the top platen at `speed` m/s.
 inline Scene loaded_bonded_disc(double speed = 5) { return brazilian_scene(0.005, speed); }
+
+/// loaded_bonded_disc(), or an empty scene and `skip` set in a build without Gmsh.
+inline Scene loaded_bonded_disc_or_skip(bool& skip) {
+  try {
+    return loaded_bonded_disc();
+  } catch (const SceneError&) {
+    skip = true;
+    return {};
+  }
+}
 
 /// Bonds with some damage, and broken ones, of a state.
 struct BondCount {

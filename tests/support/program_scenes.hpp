@@ -41,7 +41,7 @@ struct ServoBox {
   static constexpr double kLidCentroid = 0.3;  ///< the lid's centroid above its bottom, m
 };
 
-/// 5 rows of lattice triangles (side 0.1 m, each shrunk to 0.95 about its centroid: they
+/// `rows` (5 by default) rows of lattice triangles (side 0.1 m, each shrunk to 0.95 about its centroid: they
 /// start apart) under gravity in a box 0.6 m wide: the floor and the left wall fixed, the
 /// right wall a servo pushing left at ServoBox::kStress, and a wide lid 0.45 m above the
 /// floor (0.017 m above the grains) that comes down at 0.1 m/s, from 0.05 s to 0.8 s (its
@@ -49,7 +49,7 @@ struct ServoBox {
 /// and it spreads against the servo. With `follow`, the servo's length is the gap between
 /// the floor and the lid (length_between = [floor, lid]); without, the fixed length of the
 /// start, 0.45 m.
-inline Scene servo_box(bool follow) {
+inline Scene servo_box(bool follow, int rows = 5) {
   Scene s = empty_scene(1e7, 2000, 0.2, 0);
   s.simulation.gravity = {0, -9.81};
   s.simulation.safety = 0.3;
@@ -88,7 +88,7 @@ inline Scene servo_box(bool follow) {
       {0.05, {0, 0}, 0}, {0.1, {0, -0.1}, 0}, {0.75, {0, -0.1}, 0}, {0.8, {0, 0}, 0}};
   s.programs.push_back(lid_motion);
   const double a = 0.1;
-  for (int j = 0; j < 5; ++j)
+  for (int j = 0; j < rows; ++j)
     for (int k = -j; (j + k) * a / 2 + a <= width + 1e-9; ++k)
       s.triangles.push_back(lattice_triangle(k, j, a, 0.95));
   return s;
@@ -97,8 +97,8 @@ inline Scene servo_box(bool follow) {
 /// servo_box as bodies: each wall a body of one triangle (body ids 0 to 3, as the
 /// particle ids), each pair of neighbours in the grains' order one rigid body of two (the last one
 /// alone).
-inline Scene servo_box_of_bodies(bool follow) {
-  Scene s = servo_box(follow);
+inline Scene servo_box_of_bodies(bool follow, int rows = 5) {
+  Scene s = servo_box(follow, rows);
   for (std::size_t k = 0; k < 4; ++k) {
     BodySpec wall;
     wall.first = k;

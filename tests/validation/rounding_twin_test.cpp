@@ -17,18 +17,9 @@
 namespace tridem {
 namespace {
 
-Scene disc_or_skip(bool& skip) {
-  try {
-    return test::loaded_bonded_disc();
-  } catch (const SceneError&) {
-    skip = true;  // a build without Gmsh
-    return {};
-  }
-}
-
 TEST(RoundingTwin, WithoutKicksIsTheReferenceBitForBit) {
   bool skip = false;
-  const Scene s = disc_or_skip(skip);
+  const Scene s = test::loaded_bonded_disc_or_skip(skip);
   if (skip) GTEST_SKIP() << "no Gmsh";
   auto reference = make_solver(s, {});
   test::RoundingTwin twin(make_solver(s, {}), 0);
@@ -44,7 +35,7 @@ TEST(RoundingTwin, WithoutKicksIsTheReferenceBitForBit) {
 
 TEST(RoundingTwin, SpreadOnTheLoadedDiscGrowsFromRoundingSize) {
   bool skip = false;
-  const Scene s = disc_or_skip(skip);
+  const Scene s = test::loaded_bonded_disc_or_skip(skip);
   if (skip) GTEST_SKIP() << "no Gmsh";
   auto reference = make_solver(s, {});
   test::RoundingTwin twin(make_solver(s, {}), 0x1p-53);
