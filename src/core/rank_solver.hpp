@@ -57,8 +57,8 @@ class RankSolver {
 
   /// Local particle i's energy accumulator k at out[i * kEnergyAccumulators + k].
   virtual void energy_sums(std::vector<double>& out) const = 0;
-  using PairVisitor =
-      std::function<void(std::int32_t emitter, std::int32_t partner, const physics::PairForce<Real>&)>;
+  using PairVisitor = std::function<void(std::int32_t emitter, std::int32_t partner,
+                                         const physics::PairForce<Real>&)>;
   /// f for each pair of the last completed step, by local index, in slot order (none before
   /// the first step).
   virtual void for_each_last_pair(const PairVisitor& f) const = 0;

@@ -114,9 +114,9 @@ class MpiSolver final : public Solver {
   StripPlan plan_;
   std::vector<std::int32_t> global_;    ///< local index -> global id (ascending)
   std::vector<std::int32_t> local_of_;  ///< global id -> local index, -1 when not held
-  bool gpu_ = false;  ///< backend = "cuda": GPU ranks
-  int device_ = 0;    ///< this rank's GPU (GPU ranks)
-  std::vector<int> devices_;  ///< every rank's GPU, on rank 0 (GPU ranks)
+  bool gpu_ = false;                    ///< backend = "cuda": GPU ranks
+  int device_ = 0;                      ///< this rank's GPU (GPU ranks)
+  std::vector<int> devices_;            ///< every rank's GPU, on rank 0 (GPU ranks)
   std::unique_ptr<RankSolver<Real>> local_;
   bool redecompose_ = false;
   bool check_agreed_ = false;  ///< the check hook ran the step's agreement

@@ -1,8 +1,8 @@
 // GPU ranks (src/mpi/device_choice, mpi_solver.cpp's refusal): which GPU a rank picks from
 // its rank on the node, and what a rank without one says. The run itself needs a GPU:
 // bench/run_mpi_gpu_on_device.sh.
-#include "core/particle_model.hpp"
 #include "mpi/device_choice.hpp"
+#include "core/particle_model.hpp"
 #include "mpi/mpi_solver.hpp"
 #include "tridem/scene.hpp"
 

@@ -115,13 +115,12 @@ class CudaRank final : public RankSolver<Real> {
     const cudaStream_t stream = solver_.stream();
     if (sent_ > 0) {
       const Columns c = state_columns(solver_.device_arrays());
-      pack_kernel<<<blocks(sent_), kBlock, 0, stream>>>(c, send_index_.data(),
-                                                        static_cast<int>(sent_),
-                                                        device_send_.data());
+      pack_kernel<<<blocks(sent_), kBlock, 0, stream>>>(
+          c, send_index_.data(), static_cast<int>(sent_), device_send_.data());
       TRIDEM_CUDA_CHECK_LAUNCH("pack_kernel");
       TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_send_.data(), device_send_.data(),
-                                        host_send_.size() * sizeof(double),
-                                        cudaMemcpyDeviceToHost, stream));
+                                        host_send_.size() * sizeof(double), cudaMemcpyDeviceToHost,
+                                        stream));
     }
     TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   }
@@ -133,9 +132,8 @@ class CudaRank final : public RankSolver<Real> {
                                         host_receive_.size() * sizeof(double),
                                         cudaMemcpyHostToDevice, stream));
       const Columns c = state_columns(solver_.device_arrays());
-      unpack_kernel<<<blocks(received_), kBlock, 0, stream>>>(c, receive_index_.data(),
-                                                              static_cast<int>(received_),
-                                                              device_receive_.data());
+      unpack_kernel<<<blocks(received_), kBlock, 0, stream>>>(
+          c, receive_index_.data(), static_cast<int>(received_), device_receive_.data());
       TRIDEM_CUDA_CHECK_LAUNCH("unpack_kernel");
     }
     // Every step, ghosts or not: the solver's own rebuild test is read here (kRankPipeline).
@@ -148,9 +146,8 @@ class CudaRank final : public RankSolver<Real> {
     const ParticleArrays<Real> p = solver_.device_arrays();
     TRIDEM_CUDA_CHECK(cudaMemsetAsync(flag_.data(), 0, sizeof(int), stream));
     drift_kernel<<<blocks(owned_), kBlock, 0, stream>>>(p.x, p.y, own_index_.data(),
-                                                        static_cast<int>(owned_),
-                                                        reference_.data(), limit * limit,
-                                                        flag_.data());
+                                                        static_cast<int>(owned_), reference_.data(),
+                                                        limit * limit, flag_.data());
     TRIDEM_CUDA_CHECK_LAUNCH("drift_kernel");
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_flag_.data(), flag_.data(), sizeof(int),
                                       cudaMemcpyDeviceToHost, stream));
@@ -166,8 +163,8 @@ class CudaRank final : public RankSolver<Real> {
     out.assign(n * kEnergyAccumulators, 0.0);
     for (int k = 0; k < kEnergyAccumulators; ++k) {
       if (n > 0)
-        TRIDEM_CUDA_CHECK(cudaMemcpy(column.data(), p.energy[k], n * sizeof(double),
-                                     cudaMemcpyDeviceToHost));
+        TRIDEM_CUDA_CHECK(
+            cudaMemcpy(column.data(), p.energy[k], n * sizeof(double), cudaMemcpyDeviceToHost));
       for (std::size_t i = 0; i < n; ++i) out[i * kEnergyAccumulators + k] = column[i];
     }
   }

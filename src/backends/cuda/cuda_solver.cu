@@ -169,8 +169,8 @@ void CudaSolver<Real>::update_geometry(bool place) {
 
 template <class Real>
 void CudaSolver<Real>::state_written() {
-  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{},
-                                                             params_, status_.data(), false);
+  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{}, params_,
+                                                             status_.data(), false);
   TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
   StepStatus* host = host_status_.data();
   TRIDEM_CUDA_CHECK(
@@ -194,9 +194,8 @@ template <class Real>
 void CudaSolver<Real>::row_elastic(std::vector<double>& rows) const {
   rows.clear();
   if (!results_) return;
-  row_elastic_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(static_cast<int>(n_),
-                                                                pairs_->arrays(),
-                                                                d_.row_elastic.data());
+  row_elastic_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
+      static_cast<int>(n_), pairs_->arrays(), d_.row_elastic.data());
   TRIDEM_CUDA_CHECK_LAUNCH("row_elastic_kernel");
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   rows.resize(n_);

@@ -67,9 +67,8 @@ class CudaSolver final : public Solver {
   // hook, advance() runs kRankPipeline: Check before Integrate, so that the ranks agree
   // every rank's step is good before any writes it (the hook may throw RunError); the
   // rebuild test is then read by state_written(), once the ghosts have their new states.
-  static constexpr std::array<Stage, 5> kRankPipeline = {Stage::PairList, Stage::PairForces,
-                                                         Stage::Gather, Stage::Check,
-                                                         Stage::Integrate};
+  static constexpr std::array<Stage, 5> kRankPipeline = {
+      Stage::PairList, Stage::PairForces, Stage::Gather, Stage::Check, Stage::Integrate};
   void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
   ParticleArrays<Real> device_arrays() const { return arrays(); }
   cudaStream_t stream() const { return stream_; }
@@ -154,7 +153,7 @@ class CudaSolver final : public Solver {
   DeviceBuffer<double> image_power_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
-  std::function<void()> check_hook_;  ///< MPI ranks only (set_check_hook)
+  std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
 };
 
