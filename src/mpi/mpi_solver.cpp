@@ -1,7 +1,10 @@
 #include "mpi/mpi_solver.hpp"
 
+#include "backends/cuda/cuda_backend.hpp"
 #include "core/particle_columns.hpp"
 #include "mpi/agreement.hpp"
+#include "mpi/cpu_rank.hpp"
+#include "mpi/device_choice.hpp"
 #include "tridem/error.hpp"
 
 #include <algorithm>
@@ -39,24 +42,6 @@ ParticleModel slice(const ParticleModel& m, const std::vector<std::int32_t>& ids
   out.programs = m.programs;
   out.program_knots = m.program_knots;
   return out;  // bodies of several triangles are refused on more than one rank
-}
-
-/// Calls f(array) for each array of the State fields of a solver's storage, in the
-/// order of particle_fields.hpp: what a ghost takes from its owner every step.
-template <class Storage, class F>
-void for_each_state_array(Storage& s, F&& f) {
-  for_each_particle_field([&](auto field) {
-    if constexpr (decltype(field)::role == FieldRole::State)
-      for_each_array(s.column(field), [&](auto& v, int) { f(v); });
-  });
-}
-
-int state_arrays() {
-  int count = 0;
-  for_each_particle_field([&](auto field) {
-    if constexpr (decltype(field)::role == FieldRole::State) count += decltype(field)::count;
-  });
-  return count;
 }
 
 /// Every rank's `mine`, one after the other in rank order: on every rank (`all`) or on
@@ -102,8 +87,6 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     what = "periodic boundaries (periodic_x, periodic_y)";
   else if (scene.simulation.method == Method::AllPairs)
     what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
-  else if (scene.simulation.backend == Backend::Cuda)
-    what = "backend = \"cuda\" (GPU ranks)";
   if (!what) return {};
   return fmt::format("{}: {} are not split across MPI ranks yet (docs/scaling.md); run "
                      "this scene on one rank (without mpirun, or mpirun -np 1)",
@@ -125,9 +108,22 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   MPI_Comm_size(comm_, &ranks_);
   // The first collective: a rank that failed before (reading the scene) takes part in it
   // from mpi_run.cpp, so that every rank stops with that rank's message.
-  const std::string why = refusal(scene, model);
+  std::string why = refusal(scene, model);
+  // GPU ranks: each on the GPU its rank on the node picks; a rank without one refuses.
+  gpu_ = scene.simulation.backend == Backend::Cuda;
+  if (gpu_) {
+    const int local_rank = node_local_rank(comm_);
+    std::string reason;
+    const int devices = cuda_available(&reason) ? cuda_device_count() : 0;
+    if (why.empty()) why = gpu_rank_refusal(scene.source, rank_, devices, reason);
+    device_ = device_for_rank(local_rank, devices);
+  }
   if (auto m = agree(comm_, why.empty() ? std::nullopt : std::optional<std::string>(why)))
     throw SceneError(*m);
+  if (gpu_) {
+    devices_.assign(static_cast<std::size_t>(ranks_), 0);
+    MPI_Gather(&device_, 1, MPI_INT, devices_.data(), 1, MPI_INT, 0, comm_);
+  }
 
   radius_.resize(n_);
   double largest = 0;
@@ -214,7 +210,7 @@ void MpiSolver<Real>::step_once() {
   }
   check_agreed_ = false;
   try {
-    local_->advance(1);
+    local_->solver().advance(1);
   } catch (const std::exception& e) {
     // This rank failed before or in its Check: tell the others, which are waiting in
     // their check hook. When the hook threw, the agreement is already made.
@@ -231,34 +227,16 @@ void MpiSolver<Real>::step_once() {
 
 template <class Real>
 void MpiSolver<Real>::exchange_ghosts() {
-  std::size_t at = 0;
-  for (int r = 0; r < ranks_; ++r)
-    for (std::int32_t i : send_[static_cast<std::size_t>(r)])
-      for_each_state_array(*local_, [&](const std::vector<double>& v) {
-        send_buf_[at++] = v[static_cast<std::size_t>(i)];
-      });
-  MPI_Alltoallv(send_buf_.data(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
-                recv_buf_.data(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE, comm_);
-  at = 0;
-  for (int r = 0; r < ranks_; ++r)
-    for (std::int32_t i : recv_[static_cast<std::size_t>(r)])
-      for_each_state_array(*local_, [&](std::vector<double>& v) {
-        v[static_cast<std::size_t>(i)] = recv_buf_[at++];
-      });
+  local_->pack();
+  MPI_Alltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
+                local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
+                comm_);
+  local_->unpack();
 }
 
 template <class Real>
 bool MpiSolver<Real>::drifted() const {
-  const double limit = 0.25 * skin_ * skin_;  // (skin / 2)^2
-  const auto& x = local_->column(particle_field::x{});
-  const auto& y = local_->column(particle_field::y{});
-  for (std::size_t k = 0; k < global_.size(); ++k) {
-    if (!plan_.owns(rank_, global_[k])) continue;
-    const double dx = x[k] - ref_x_[k], dy = y[k] - ref_y_[k];
-    // A non-finite state drifts too: the next plan's gather lets the check report it.
-    if (!(dx * dx + dy * dy <= limit)) return true;
-  }
-  return false;
+  return local_->drifted(0.5 * skin_);  // half the skin
 }
 
 template <class Real>
@@ -273,7 +251,7 @@ int MpiSolver<Real>::authority(std::int32_t a, std::int32_t b) const {
 template <class Real>
 void MpiSolver<Real>::gather_state(SolverState& out) const {
   SolverState& ls = scratch_state_;
-  local_->save_state(ls);
+  local_->solver().save_state(ls);
   std::vector<double> mine;
   std::vector<std::size_t> own;
   for (std::size_t k = 0; k < global_.size(); ++k) {
@@ -374,15 +352,21 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     local_of_[static_cast<std::size_t>(global_[k])] = static_cast<std::int32_t>(k);
 
   if (local_) {
-    const StageTimes t = local_->stage_times();
+    const StageTimes t = local_->solver().stage_times();
     for (int s = 0; s < kStageCount; ++s) earlier_times_.seconds[s] += t.seconds[s];
     earlier_times_.steps += t.steps;
     earlier_times_.timed_steps += t.timed_steps;
   }
   SolverConfig config;
   config.force = true;  // the whole scene's time step was checked by the run
-  local_ = std::make_unique<CpuSolver<Real>>(scene_, slice(model_, global_), ts_, config, false);
-  local_->set_stage_timing(timing_);
+  if (gpu_) {
+    config.device = device_;
+    local_.reset();  // its GPU memory first
+    local_ = make_cuda_rank<Real>(scene_, slice(model_, global_), ts_, config);
+  } else {
+    local_ = std::make_unique<CpuRank<Real>>(scene_, slice(model_, global_), ts_, config);
+  }
+  local_->solver().set_stage_timing(timing_);
   local_->set_check_hook([this] {
     check_agreed_ = true;
     if (auto m = agree(comm_, std::nullopt)) {
@@ -411,49 +395,50 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     ls.pair_partner.push_back(j);
     ls.pair_slip.push_back(whole.pair_slip[p]);
   }
-  local_->load_state(ls);
+  local_->solver().load_state(ls);
 
   const auto ranks = static_cast<std::size_t>(ranks_);
-  send_.assign(ranks, {});
-  recv_.assign(ranks, {});
+  std::vector<std::vector<std::int32_t>> send(ranks), recv(ranks);
   for (std::size_t r = 0; r < ranks; ++r) {
     if (static_cast<int>(r) == rank_) continue;
     for (std::int32_t g : plan_.held[r])
       if (plan_.owns(rank_, g) && model_.motion[static_cast<std::size_t>(g)] == Motion::Free)
-        send_[r].push_back(local_of_[static_cast<std::size_t>(g)]);
+        send[r].push_back(local_of_[static_cast<std::size_t>(g)]);
   }
   // Walls are stepped by every rank: only grains are sent.
+  std::vector<std::int32_t> own;
   for (std::size_t k = 0; k < global_.size(); ++k) {
     const auto g = static_cast<std::size_t>(global_[k]);
     const int owner = plan_.owner[g];
     if (owner >= 0 && owner != rank_ && model_.motion[g] == Motion::Free)
-      recv_[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(k));
+      recv[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(k));
+    if (owner == rank_) own.push_back(static_cast<std::int32_t>(k));
   }
-  const int per = state_arrays();
+  const int per = state_array_count();
   send_counts_.assign(ranks, 0);
   send_displs_.assign(ranks, 0);
   recv_counts_.assign(ranks, 0);
   recv_displs_.assign(ranks, 0);
   int sent = 0, received = 0;
+  std::vector<std::int32_t> send_all, recv_all;  // rank by rank: the buffers' order
   for (std::size_t r = 0; r < ranks; ++r) {
-    send_counts_[r] = per * static_cast<int>(send_[r].size());
-    recv_counts_[r] = per * static_cast<int>(recv_[r].size());
+    send_counts_[r] = per * static_cast<int>(send[r].size());
+    recv_counts_[r] = per * static_cast<int>(recv[r].size());
     send_displs_[r] = sent;
     recv_displs_[r] = received;
     sent += send_counts_[r];
     received += recv_counts_[r];
+    send_all.insert(send_all.end(), send[r].begin(), send[r].end());
+    recv_all.insert(recv_all.end(), recv[r].begin(), recv[r].end());
   }
-  send_buf_.assign(static_cast<std::size_t>(sent), 0.0);
-  recv_buf_.assign(static_cast<std::size_t>(received), 0.0);
-  ref_x_ = local_->column(particle_field::x{});
-  ref_y_ = local_->column(particle_field::y{});
+  local_->set_plan(send_all, recv_all, own);
   ++plans_;
 }
 
 template <class Real>
 void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   Snapshot& ls = scratch_snapshot_;
-  local_->snapshot(ls, with_contacts);
+  local_->solver().snapshot(ls, with_contacts);
   std::vector<double> rows, loads, contacts;
   for (std::size_t k = 0; k < global_.size(); ++k) {
     const auto g = static_cast<std::size_t>(global_[k]);
@@ -577,18 +562,23 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
 
 template <class Real>
 EnergyBudget MpiSolver<Real>::gather_energy() const {
-  const auto& energy = local_->column(particle_field::energy{});
+  std::vector<double> energy;
+  local_->energy_sums(energy);
+  const std::size_t per = kEnergyAccumulators;
   std::vector<double> sums, elastic;
   for (std::size_t k = 0; k < global_.size(); ++k) {
     const auto g = static_cast<std::size_t>(global_[k]);
     if (!reports(global_[k])) continue;
     sums.push_back(static_cast<double>(g));
-    for (const auto& v : energy) sums.push_back(v[k]);
+    for (std::size_t a = 0; a < per; ++a) sums.push_back(energy[k * per + a]);
   }
-  for_each_last_pair([&](std::int32_t ge, std::int32_t gj, const physics::PairForce<Real>& f) {
-    const auto value = static_cast<double>(f.elastic_energy);
-    if (value != 0 && authority(ge, gj) == rank_)
-      elastic.insert(elastic.end(), {double(ge), double(gj), value});
+  // The terms the local backend adds (pairs on the CPU, rows on the GPU), by global ids; a
+  // row (partner -1) is its emitter's owner's.
+  local_->elastic_terms([&](std::int32_t e, std::int32_t j, double value) {
+    const std::int32_t ge = global_[static_cast<std::size_t>(e)];
+    const std::int32_t gj = j < 0 ? -1 : global_[static_cast<std::size_t>(j)];
+    const int who = gj < 0 ? plan_.owner[static_cast<std::size_t>(ge)] : authority(ge, gj);
+    if (value != 0 && who == rank_) elastic.insert(elastic.end(), {double(ge), double(gj), value});
   });
   std::vector<double> mine{static_cast<double>(sums.size()), static_cast<double>(elastic.size())};
   mine.insert(mine.end(), sums.begin(), sums.end());
@@ -596,7 +586,6 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
   const std::vector<double> all = collect(comm_, mine, false);
   EnergyBudget b;
   if (rank_ != 0) return b;
-  const std::size_t per = energy.size();
   std::vector<double> by_particle(n_ * per, 0.0);
   std::vector<std::tuple<std::int32_t, std::int32_t, double>> pairs;
   for (std::size_t at = 0; at < all.size();) {
@@ -727,10 +716,17 @@ void MpiSolver<Real>::measure_bandwidth() {
 
 template <class Real>
 std::string MpiSolver<Real>::description() const {
-  return fmt::format("{} ranks of {}; strips along {}, ghosts by MPI_Alltoallv through host "
-                     "memory ({}; CPU ranks), first exchange {:.3g} GB/s per rank",
-                     ranks_, local_->description(), plan_.axis == 0 ? "x" : "y", library_,
-                     bandwidth_ / 1e9);
+  std::string ranks_on = "CPU ranks";
+  if (gpu_) {
+    ranks_on = "GPU ranks, on GPU";
+    ranks_on += devices_.size() > 1 ? "s" : "";
+    for (std::size_t r = 0; r < devices_.size(); ++r)
+      ranks_on += fmt::format("{}{}", r == 0 ? " " : ", ", devices_[r]);
+  }
+  return fmt::format("{} ranks of {}; strips along {}, ghosts by MPI_Alltoallv {} ({}; {}), "
+                     "first exchange {:.3g} GB/s per rank",
+                     ranks_, local_->solver().description(), plan_.axis == 0 ? "x" : "y",
+                     local_->transport(), library_, ranks_on, bandwidth_ / 1e9);
 }
 
 template <class Real>
@@ -745,7 +741,7 @@ std::string MpiSolver<Real>::statistics() const {
 
 template <class Real>
 StageTimes MpiSolver<Real>::stage_times() const {
-  StageTimes t = local_->stage_times();
+  StageTimes t = local_->solver().stage_times();
   for (int s = 0; s < kStageCount; ++s) t.seconds[s] += earlier_times_.seconds[s];
   t.steps += earlier_times_.steps;
   t.timed_steps += earlier_times_.timed_steps;
@@ -755,7 +751,7 @@ StageTimes MpiSolver<Real>::stage_times() const {
 template <class Real>
 void MpiSolver<Real>::set_stage_timing(bool on) {
   timing_ = on;
-  local_->set_stage_timing(on);
+  local_->solver().set_stage_timing(on);
 }
 
 template class MpiSolver<float>;

@@ -1,6 +1,8 @@
 #pragma once
 // The run on N MPI ranks (docs/scaling.md): each rank steps the particles of its strip
-// (mpi/strip_plan.hpp) with the serial CPU solver, on a copy of the scene that holds them,
+// (mpi/strip_plan.hpp) with its local solver (core/rank_solver.hpp: the serial CPU solver,
+// or with backend = "cuda" the CUDA solver on the GPU its node-local rank picks,
+// mpi/device_choice.hpp), on a copy of the scene that holds them,
 // their ghosts and the walls, in global id order. Because the ids keep their order and a
 // ghost's state is its owner's, bit for bit, every pair an owned particle takes part in is
 // computed as one solver computes it (same emitter, same frame, same history) and summed in
@@ -19,7 +21,9 @@
 // the other ranks, in serve(), carry out with it. Snapshots, states and energies are
 // gathered to rank 0 in global id order, the walls' loads and the elastic energy summed
 // there pair by pair in one solver's order; the outputs and checkpoints are one rank's.
-#include "backends/cpu/cpu_solver.hpp"
+#include "core/particle_model.hpp"
+#include "core/rank_solver.hpp"
+#include "core/time_step.hpp"
 #include "mpi/strip_plan.hpp"
 #include "tridem/solver.hpp"
 
@@ -48,9 +52,9 @@ class MpiSolver final : public Solver {
   void save_state(SolverState& out) const override;
   void load_state(const SolverState& in) override;
   EnergyBudget energy() const override;
-  std::int64_t step() const override { return local_->step(); }
-  double time() const override { return local_->time(); }
-  double dt() const override { return local_->dt(); }
+  std::int64_t step() const override { return local_->solver().step(); }
+  double time() const override { return local_->solver().time(); }
+  double dt() const override { return local_->solver().dt(); }
   std::size_t size() const override { return n_; }
   std::string description() const override;
   std::string statistics() const override;
@@ -90,13 +94,10 @@ class MpiSolver final : public Solver {
   /// ids, in its slot order (none before the first step).
   template <class F>
   void for_each_last_pair(F&& f) const {
-    if (step() == 0) return;
-    const PairList& pl = local_->last_pairs();
-    const auto& force = local_->last_forces();
-    for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
-      for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s)
-        f(global_[e], global_[static_cast<std::size_t>(pl.partner[static_cast<std::size_t>(s)])],
-          force[static_cast<std::size_t>(s)]);
+    local_->for_each_last_pair(
+        [&](std::int32_t e, std::int32_t j, const physics::PairForce<Real>& force) {
+          f(global_[static_cast<std::size_t>(e)], global_[static_cast<std::size_t>(j)], force);
+        });
   }
 
   MPI_Comm comm_;
@@ -113,17 +114,18 @@ class MpiSolver final : public Solver {
   StripPlan plan_;
   std::vector<std::int32_t> global_;    ///< local index -> global id (ascending)
   std::vector<std::int32_t> local_of_;  ///< global id -> local index, -1 when not held
-  std::unique_ptr<CpuSolver<Real>> local_;
+  bool gpu_ = false;                    ///< backend = "cuda": GPU ranks
+  int device_ = 0;                      ///< this rank's GPU (GPU ranks)
+  std::vector<int> devices_;            ///< every rank's GPU, on rank 0 (GPU ranks)
+  std::unique_ptr<RankSolver<Real>> local_;
   bool redecompose_ = false;
   bool check_agreed_ = false;  ///< the check hook ran the step's agreement
   std::string agreed_;         ///< the message the ranks agreed on
   bool timing_ = true;
 
-  // Ghost exchange, sized at each plan: local indices sent to / received from each rank.
-  std::vector<std::vector<std::int32_t>> send_, recv_;
+  // Ghost exchange, sized at each plan: the counts and displacements of each rank's part
+  // of the local solver's buffers (RankSolver::set_plan).
   std::vector<int> send_counts_, send_displs_, recv_counts_, recv_displs_;
-  std::vector<double> send_buf_, recv_buf_;
-  std::vector<double> ref_x_, ref_y_;  ///< own particles' centroids at the plan (local index)
 
   StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
   std::int64_t plans_ = 0;

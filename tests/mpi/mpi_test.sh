@@ -8,7 +8,9 @@
 #                  checkpoint to the scene's end; equal to one uninterrupted rank
 #   blowup NP SCENE: the run fails on every rank, exit 1 with one message (the one-rank
 #                  message), and last_good.ckpt, final.csv as one rank leaves them
-#   refused NP PATTERN SCENE: exit 1, one "error:" line, with PATTERN
+#   refused NP PATTERN SCENE [tridem run options]: exit 1, one "error:" line, with PATTERN
+#   refused-without-gpu NP PATTERN SCENE [options]: refused, on a machine without a GPU
+#                  (exit 77, skipped, where nvidia-smi lists one)
 # mpirun runs as root in CI (OMPI_ALLOW_RUN_AS_ROOT, set by CTest) and oversubscribes 2 cores.
 set -u
 tridem=$1 work=$2 mode=$3
@@ -64,9 +66,14 @@ case "$mode" in
     done
     echo "$np ranks stop with one rank's message: $(grep '^error: ' "$work/many.err" | cut -c1-120)"
     ;;
+  refused-without-gpu)
+    if nvidia-smi -L >/dev/null 2>&1; then echo "SKIP: this machine has a GPU"; exit 77; fi
+    exec bash "$0" "$tridem" "$work" refused "$@"
+    ;;
   refused)
     np=$1 pattern=$2 scene=$3
-    ranks "$np" run "$scene" --out "$work/many" --quiet >"$work/many.log" 2>"$work/many.err"
+    shift 3
+    ranks "$np" run "$scene" --out "$work/many" --quiet "$@" >"$work/many.log" 2>"$work/many.err"
     code=$?
     [ "$code" = 1 ] || fail "exit code $code, expected 1 (124: a rank hung) :: $(cat "$work/many.err")"
     [ "$(grep -c '^error: ' "$work/many.err")" = 1 ] || fail "not one message: $(cat "$work/many.err")"

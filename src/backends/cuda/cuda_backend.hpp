@@ -3,6 +3,7 @@
 // solver factory, `tridem info` and the tests compile with or without nvcc. Without CUDA
 // (cuda_backend_absent.cpp) every entry point says so instead of failing obscurely.
 #include "core/particle_model.hpp"
+#include "core/rank_solver.hpp"
 #include "core/time_step.hpp"
 #include "tridem/solver.hpp"
 
@@ -29,6 +30,13 @@ std::string cuda_device_description(int device = 0);
 /// machine without one, with the way out).
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,
                                          const TimeStep& ts, const SolverConfig& config);
+
+/// An MPI rank's local solver on GPU `config.device` (core/rank_solver.hpp, src/mpi/): the
+/// CUDA solver, its ghosts packed on the GPU and staged through pinned host memory. Throws
+/// RunError as make_cuda_solver does.
+template <class Real>
+std::unique_ptr<RankSolver<Real>> make_cuda_rank(const Scene& scene, const ParticleModel& model,
+                                                 const TimeStep& ts, const SolverConfig& config);
 
 /// Bytes of GPU memory the CUDA solver allocates at start for n particles and `bonds`
 /// cohesive bonds (core/memory_estimate.hpp); 0 in a build without CUDA.

@@ -23,6 +23,16 @@ std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, con
   throw RunError(kAbsent);  // make_solver asks cuda_available() first, and says why
 }
 
+template <class Real>
+std::unique_ptr<RankSolver<Real>> make_cuda_rank(const Scene&, const ParticleModel&,
+                                                 const TimeStep&, const SolverConfig&) {
+  throw RunError(kAbsent);  // the MPI ranks ask cuda_available() first, and say why
+}
+template std::unique_ptr<RankSolver<float>> make_cuda_rank(const Scene&, const ParticleModel&,
+                                                           const TimeStep&, const SolverConfig&);
+template std::unique_ptr<RankSolver<double>> make_cuda_rank(const Scene&, const ParticleModel&,
+                                                            const TimeStep&, const SolverConfig&);
+
 std::size_t cuda_solver_bytes(std::size_t, Precision, std::size_t) { return 0; }
 
 }  // namespace tridem

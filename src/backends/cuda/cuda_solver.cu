@@ -168,6 +168,41 @@ void CudaSolver<Real>::update_geometry(bool place) {
 }
 
 template <class Real>
+void CudaSolver<Real>::state_written() {
+  integrate_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(arrays(), PairArrays<Real>{}, params_,
+                                                             status_.data(), false);
+  TRIDEM_CUDA_CHECK_LAUNCH("integrate_kernel");
+  StepStatus* host = host_status_.data();
+  TRIDEM_CUDA_CHECK(
+      cudaMemcpyAsync(host, status_.data(), sizeof *host, cudaMemcpyDeviceToHost, stream_));
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  rebuild_ = rebuild_ || host->rebuild != 0;
+}
+
+template <class Real>
+bool CudaSolver<Real>::last_pairs(std::vector<int>& offset, std::vector<int>& partner,
+                                  std::vector<physics::PairForce<Real>>& result) const {
+  offset.clear();
+  partner.clear();
+  result.clear();
+  if (!results_ || step_ == 0) return false;
+  pairs_->download(offset, partner, nullptr, &result);
+  return true;
+}
+
+template <class Real>
+void CudaSolver<Real>::row_elastic(std::vector<double>& rows) const {
+  rows.clear();
+  if (!results_) return;
+  row_elastic_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(
+      static_cast<int>(n_), pairs_->arrays(), d_.row_elastic.data());
+  TRIDEM_CUDA_CHECK_LAUNCH("row_elastic_kernel");
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  rows.resize(n_);
+  d_.row_elastic.download(rows);
+}
+
+template <class Real>
 void CudaSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     params_.time_new = physics::time_after_step(step_, params_.dt);
@@ -176,7 +211,10 @@ void CudaSolver<Real>::advance(std::int64_t steps) {
       params_.frame_new = periodic_frame_of(cell_, params_.time_new);
     }
     params_.details = s + 1 == steps;  // only then are this step's pair results read
-    run_step(*this, kPipeline, *events_);
+    if (check_hook_)
+      run_step(*this, kRankPipeline, *events_);
+    else
+      run_step(*this, kPipeline, *events_);
     ++step_;
     time_ += params_.dt;
   }
@@ -260,6 +298,11 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       if (host->bad != INT_MAX) {
         if (n_bodies_ > 0) report_body_runaway(host->bad);
         report_runaway(host->bad);
+      }
+      if (check_hook_) {  // before Integrate (kRankPipeline): state_written reads the rebuild
+        check_hook_();
+        results_ = true;
+        return;
       }
       rebuild_ = host->rebuild != 0;
       results_ = true;

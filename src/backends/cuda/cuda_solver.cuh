@@ -17,6 +17,7 @@
 #include "tridem/solver.hpp"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +63,25 @@ class CudaSolver final : public Solver {
                                                      Stage::Gather, Stage::Integrate,
                                                      Stage::Check};
   void run_stage(Stage stage);
+
+  // MPI ranks (backends/cuda/cuda_rank.cu, src/mpi/), never the solver alone. With a check
+  // hook, advance() runs kRankPipeline: Check before Integrate, so that the ranks agree
+  // every rank's step is good before any writes it (the hook may throw RunError); the
+  // rebuild test is then read by state_written(), once the ghosts have their new states.
+  static constexpr std::array<Stage, 5> kRankPipeline = {
+      Stage::PairList, Stage::PairForces, Stage::Gather, Stage::Check, Stage::Integrate};
+  void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
+  ParticleArrays<Real> device_arrays() const { return arrays(); }
+  cudaStream_t stream() const { return stream_; }
+  /// After kernels on stream() wrote some particles' State (a rank's ghosts): the geometry
+  /// of the current state, and whether the pair list must be rebuilt (synchronises).
+  void state_written();
+  /// The last step's pair list and results, on the host; false (and nothing) before the
+  /// first step and after load_state.
+  bool last_pairs(std::vector<int>& offset, std::vector<int>& partner,
+                  std::vector<physics::PairForce<Real>>& result) const;
+  /// Each row's elastic energy as energy() adds them; empty when last_pairs has none.
+  void row_elastic(std::vector<double>& rows) const;
 
  private:
   friend class CudaStateCopy<Real>;  ///< the live view's copy reads the buffers and stream
@@ -134,6 +154,7 @@ class CudaSolver final : public Solver {
   DeviceBuffer<double> image_power_;
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
+  std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
   mutable std::vector<TouchingPair<Real>> touching_;  ///< a snapshot's contacts, as copied
 };

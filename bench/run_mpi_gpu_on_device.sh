@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# GPU ranks (issue 16, docs/scaling.md, "GPU ranks"): `mpirun -np 2` with backend = "cuda"
+# on the one GPU of the device (both ranks share it: mpi/device_choice) against one rank
+# on it, bit for bit, in double and float, through tests/mpi/mpi_test.sh (parity: the
+# output directories equal, byte for byte; restart; blow-up). Needs mpirun (Open MPI 4.1
+# on the device); runs as root there (OMPI_ALLOW_RUN_AS_ROOT, and --oversubscribe in
+# mpi_test.sh). One line per case, PASS or FAIL, then "GPU ranks: N of M cases pass".
+#   bench/run_mpi_gpu_on_device.sh OUTDIR
+set -uo pipefail
+source "$(dirname "$0")/../scripts/device_env.sh"
+out="${1:?give an output folder}"
+mkdir -p "$out/scenes"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+tridem="$root/.devbin/app/tridem"
+check="$root/tests/mpi/mpi_test.sh"
+nvidia-smi -L | sed 's/^/# /'
+mpirun --version | head -1 | sed 's/^/# /'
+
+# The scene in float precision: a copy with precision = "float" under [simulation].
+float_copy() {
+  local src=$1 dst="$out/scenes/$(basename "${1%.toml}")_float.toml"
+  sed '/^\[simulation\]/a precision = "float"' "$src" >"$dst"
+  echo "$dst"
+}
+
+pass=0 total=0
+run_case() {
+  local name=$1
+  shift
+  total=$((total + 1))
+  if bash "$check" "$tridem" "$out/work/$name" "$@" >"$out/$name.log" 2>&1; then
+    pass=$((pass + 1))
+    echo "PASS $name: $(tail -1 "$out/$name.log")"
+  else
+    echo "FAIL $name: $(grep -m1 FAIL "$out/$name.log" | cut -c1-300)"
+  fi
+}
+
+for precision in double float; do
+  for scene in tests/mpi/jostling_pile.toml tests/mpi/crossing.toml; do
+    s=$scene
+    [ "$precision" = float ] && s=$(float_copy "$scene")
+    run_case "$(basename "${scene%.toml}")_${precision}_np2" parity 2 "$s" --backend cuda
+  done
+  s=examples/settling_pile.toml
+  [ "$precision" = float ] && s=$(float_copy "$s")
+  run_case "settling_pile_${precision}_np2" parity 2 "$s" --backend cuda --steps 300
+  s=examples/hopper.toml
+  [ "$precision" = float ] && s=$(float_copy "$s")
+  run_case "hopper_${precision}_np2" parity 2 "$s" --backend cuda --steps 300
+done
+# Three ranks on one GPU, and the start line's GPUs.
+run_case jostling_pile_double_np3 parity 3 tests/mpi/jostling_pile.toml --backend cuda
+grep -h "GPU ranks" "$out"/work/jostling_pile_double_np3/many.log | head -1 | sed 's/^/# /'
+# 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
+# (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
+sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"
+run_case restart_2_on_2 restart 2 2 "$out/scenes/jostling_pile_cuda.toml" 200
+sed 's/^backend = .*/backend = "cuda"/' tests/mpi/blowup.toml >"$out/scenes/blowup_cuda.toml"
+run_case blowup_np2 blowup 2 "$out/scenes/blowup_cuda.toml"
+echo "GPU ranks: $pass of $total cases pass"
+[ "$pass" = "$total" ]

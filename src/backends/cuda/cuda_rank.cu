@@ -1,0 +1,220 @@
+// A GPU rank's local solver (core/rank_solver.hpp, docs/scaling.md): the CudaSolver on this
+// rank's GPU, its step split at the Check (kRankPipeline), and its ghosts' states packed on
+// the GPU into one contiguous buffer per exchange, staged through pinned host memory for
+// MPI (no CUDA-aware MPI yet), and written back by one kernel, after which the solver
+// recomputes the geometry and the rebuild test of the new state.
+#include "backends/cuda/cuda_backend.hpp"
+#include "backends/cuda/cuda_solver.cuh"
+#include "core/rank_solver.hpp"
+
+#include <type_traits>
+
+namespace tridem::cuda {
+
+namespace {
+
+constexpr int kBlock = 256;
+constexpr int kMaxColumns = 8;
+
+int blocks(std::size_t items) { return static_cast<int>((items + kBlock - 1) / kBlock); }
+
+/// Device columns of double, passed by value: the State arrays, or the centroid.
+struct Columns {
+  double* a[kMaxColumns];
+  int count;
+};
+
+/// out[q * count + k] = column k of particle index[q].
+__global__ void pack_kernel(Columns c, const int* index, int n, double* out) {
+  const int q = blockIdx.x * blockDim.x + threadIdx.x;
+  if (q >= n) return;
+  const int i = index[q];
+  for (int k = 0; k < c.count; ++k) out[q * c.count + k] = c.a[k][i];
+}
+
+/// Column k of particle index[q] = in[q * count + k].
+__global__ void unpack_kernel(Columns c, const int* index, int n, const double* in) {
+  const int q = blockIdx.x * blockDim.x + threadIdx.x;
+  if (q >= n) return;
+  const int i = index[q];
+  for (int k = 0; k < c.count; ++k) c.a[k][i] = in[q * c.count + k];
+}
+
+/// Flags an own particle that moved more than sqrt(limit2) from its reference (x, y pairs),
+/// or whose centroid is not finite: CpuRank::drifted's test.
+__global__ void drift_kernel(const double* x, const double* y, const int* own, int n,
+                             const double* ref, double limit2, int* flag) {
+  const int q = blockIdx.x * blockDim.x + threadIdx.x;
+  if (q >= n) return;
+  const int i = own[q];
+  const double dx = x[i] - ref[2 * q], dy = y[i] - ref[2 * q + 1];
+  if (!(dx * dx + dy * dy <= limit2)) atomicOr(flag, 1);
+}
+
+template <class Real>
+Columns state_columns(ParticleArrays<Real> p) {
+  Columns c{};
+  for_each_particle_field([&](auto field) {
+    using Field = decltype(field);
+    if constexpr (Field::role == FieldRole::State) {
+      static_assert(std::is_same_v<typename Field::template type<Real>, double>,
+                    "the State fields are double in every precision");
+      for_each_array(p.column(field), [&](double* pointer, int) { c.a[c.count++] = pointer; });
+    }
+  });
+  return c;
+}
+
+std::vector<int> as_int(const std::vector<std::int32_t>& v) { return {v.begin(), v.end()}; }
+
+}  // namespace
+
+template <class Real>
+class CudaRank final : public RankSolver<Real> {
+ public:
+  CudaRank(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+           const SolverConfig& config)
+      : solver_(scene, model, ts, config) {
+    flag_.allocate(1);
+    host_flag_.allocate(1);
+  }
+
+  Solver& solver() override { return solver_; }
+  const Solver& solver() const override { return solver_; }
+  void set_check_hook(std::function<void()> hook) override {
+    solver_.set_check_hook(std::move(hook));
+  }
+
+  void set_plan(const std::vector<std::int32_t>& send, const std::vector<std::int32_t>& receive,
+                const std::vector<std::int32_t>& own) override {
+    const auto per = static_cast<std::size_t>(state_array_count());
+    sent_ = send.size();
+    received_ = receive.size();
+    owned_ = own.size();
+    send_index_.upload(as_int(send));
+    receive_index_.upload(as_int(receive));
+    own_index_.upload(as_int(own));
+    device_send_.allocate(per * sent_);
+    device_receive_.allocate(per * received_);
+    host_send_.allocate(per * sent_);
+    host_receive_.allocate(per * received_);
+    reference_.allocate(2 * owned_);
+    const ParticleArrays<Real> p = solver_.device_arrays();
+    if (owned_ > 0) {
+      Columns centroid{{p.x, p.y}, 2};
+      pack_kernel<<<blocks(owned_), kBlock, 0, solver_.stream()>>>(
+          centroid, own_index_.data(), static_cast<int>(owned_), reference_.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("pack_kernel");
+    }
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(solver_.stream()));
+  }
+  double* send_buffer() override { return host_send_.data(); }
+  double* receive_buffer() override { return host_receive_.data(); }
+
+  void pack() override {
+    const cudaStream_t stream = solver_.stream();
+    if (sent_ > 0) {
+      const Columns c = state_columns(solver_.device_arrays());
+      pack_kernel<<<blocks(sent_), kBlock, 0, stream>>>(
+          c, send_index_.data(), static_cast<int>(sent_), device_send_.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("pack_kernel");
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_send_.data(), device_send_.data(),
+                                        host_send_.size() * sizeof(double), cudaMemcpyDeviceToHost,
+                                        stream));
+    }
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
+  }
+
+  void unpack() override {
+    const cudaStream_t stream = solver_.stream();
+    if (received_ > 0) {
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(device_receive_.data(), host_receive_.data(),
+                                        host_receive_.size() * sizeof(double),
+                                        cudaMemcpyHostToDevice, stream));
+      const Columns c = state_columns(solver_.device_arrays());
+      unpack_kernel<<<blocks(received_), kBlock, 0, stream>>>(
+          c, receive_index_.data(), static_cast<int>(received_), device_receive_.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("unpack_kernel");
+    }
+    // Every step, ghosts or not: the solver's own rebuild test is read here (kRankPipeline).
+    solver_.state_written();
+  }
+
+  bool drifted(double limit) const override {
+    if (owned_ == 0) return false;
+    const cudaStream_t stream = solver_.stream();
+    const ParticleArrays<Real> p = solver_.device_arrays();
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(flag_.data(), 0, sizeof(int), stream));
+    drift_kernel<<<blocks(owned_), kBlock, 0, stream>>>(p.x, p.y, own_index_.data(),
+                                                        static_cast<int>(owned_), reference_.data(),
+                                                        limit * limit, flag_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("drift_kernel");
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_flag_.data(), flag_.data(), sizeof(int),
+                                      cudaMemcpyDeviceToHost, stream));
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
+    return *host_flag_.data() != 0;
+  }
+
+  void energy_sums(std::vector<double>& out) const override {
+    const std::size_t n = solver_.size();
+    const ParticleArrays<Real> p = solver_.device_arrays();
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(solver_.stream()));
+    std::vector<double> column(n);
+    out.assign(n * kEnergyAccumulators, 0.0);
+    for (int k = 0; k < kEnergyAccumulators; ++k) {
+      if (n > 0)
+        TRIDEM_CUDA_CHECK(
+            cudaMemcpy(column.data(), p.energy[k], n * sizeof(double), cudaMemcpyDeviceToHost));
+      for (std::size_t i = 0; i < n; ++i) out[i * kEnergyAccumulators + k] = column[i];
+    }
+  }
+
+  void for_each_last_pair(const typename RankSolver<Real>::PairVisitor& f) const override {
+    std::vector<int> offset, partner;
+    std::vector<physics::PairForce<Real>> result;
+    if (!solver_.last_pairs(offset, partner, result)) return;
+    for (std::size_t e = 0; e + 1 < offset.size(); ++e)
+      for (int s = offset[e]; s < offset[e + 1]; ++s)
+        f(static_cast<std::int32_t>(e), partner[static_cast<std::size_t>(s)],
+          result[static_cast<std::size_t>(s)]);
+  }
+
+  void elastic_terms(
+      const std::function<void(std::int32_t, std::int32_t, double)>& f) const override {
+    // CudaSolver::energy adds each row's sum, rows ascending.
+    std::vector<double> rows;
+    solver_.row_elastic(rows);
+    for (std::size_t e = 0; e < rows.size(); ++e) f(static_cast<std::int32_t>(e), -1, rows[e]);
+  }
+
+  std::string transport() const override {
+    return "packed on the GPU, staged through pinned host memory (not CUDA-aware)";
+  }
+
+ private:
+  CudaSolver<Real> solver_;
+  std::size_t sent_ = 0, received_ = 0, owned_ = 0;
+  DeviceBuffer<int> send_index_, receive_index_, own_index_;
+  DeviceBuffer<double> device_send_, device_receive_;
+  PinnedBuffer<double> host_send_, host_receive_;
+  DeviceBuffer<double> reference_;  ///< own particles' centroids at the plan, (x, y) pairs
+  mutable DeviceBuffer<int> flag_;
+  mutable PinnedBuffer<int> host_flag_;
+};
+
+}  // namespace tridem::cuda
+
+namespace tridem {
+
+template <class Real>
+std::unique_ptr<RankSolver<Real>> make_cuda_rank(const Scene& scene, const ParticleModel& model,
+                                                 const TimeStep& ts, const SolverConfig& config) {
+  return std::make_unique<cuda::CudaRank<Real>>(scene, model, ts, config);
+}
+
+template std::unique_ptr<RankSolver<float>> make_cuda_rank(const Scene&, const ParticleModel&,
+                                                           const TimeStep&, const SolverConfig&);
+template std::unique_ptr<RankSolver<double>> make_cuda_rank(const Scene&, const ParticleModel&,
+                                                            const TimeStep&, const SolverConfig&);
+
+}  // namespace tridem

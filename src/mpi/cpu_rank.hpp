@@ -1,0 +1,43 @@
+#pragma once
+// A CPU rank's local solver (core/rank_solver.hpp): the serial CpuSolver, its ghosts'
+// states copied between its columns and host buffers.
+#include "backends/cpu/cpu_solver.hpp"
+#include "core/rank_solver.hpp"
+
+#include <memory>
+
+namespace tridem::mpi {
+
+template <class Real>
+class CpuRank final : public RankSolver<Real> {
+ public:
+  CpuRank(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+          const SolverConfig& config)
+      : solver_(scene, model, ts, config, false) {}
+
+  Solver& solver() override { return solver_; }
+  const Solver& solver() const override { return solver_; }
+  void set_check_hook(std::function<void()> hook) override {
+    solver_.set_check_hook(std::move(hook));
+  }
+  void set_plan(const std::vector<std::int32_t>& send, const std::vector<std::int32_t>& receive,
+                const std::vector<std::int32_t>& own) override;
+  double* send_buffer() override { return send_buf_.data(); }
+  double* receive_buffer() override { return receive_buf_.data(); }
+  void pack() override;
+  void unpack() override;
+  bool drifted(double limit) const override;
+  void energy_sums(std::vector<double>& out) const override;
+  void for_each_last_pair(const typename RankSolver<Real>::PairVisitor& f) const override;
+  void elastic_terms(
+      const std::function<void(std::int32_t, std::int32_t, double)>& f) const override;
+  std::string transport() const override { return "through host memory"; }
+
+ private:
+  CpuSolver<Real> solver_;
+  std::vector<std::int32_t> send_, receive_, own_;
+  std::vector<double> send_buf_, receive_buf_;
+  std::vector<double> ref_x_, ref_y_;  ///< own particles' centroids at the plan (own_ order)
+};
+
+}  // namespace tridem::mpi

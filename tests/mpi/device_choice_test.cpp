@@ -1,0 +1,48 @@
+// GPU ranks (src/mpi/device_choice, mpi_solver.cpp's refusal): which GPU a rank picks from
+// its rank on the node, and what a rank without one says. The run itself needs a GPU:
+// bench/run_mpi_gpu_on_device.sh.
+#include "mpi/device_choice.hpp"
+#include "core/particle_model.hpp"
+#include "mpi/mpi_solver.hpp"
+#include "tridem/scene.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tridem::mpi {
+namespace {
+
+TEST(MpiDeviceChoice, RanksOfANodeShareItsGpusRoundRobin) {
+  // One GPU: every rank on it (the H200 machine's 2 ranks sharing one GPU).
+  EXPECT_EQ(device_for_rank(0, 1), 0);
+  EXPECT_EQ(device_for_rank(1, 1), 0);
+  EXPECT_EQ(device_for_rank(5, 1), 0);
+  // As many ranks as GPUs: one each, in order.
+  for (int r = 0; r < 8; ++r) EXPECT_EQ(device_for_rank(r, 8), r);
+  // More ranks than GPUs: the local rank modulo the count.
+  EXPECT_EQ(device_for_rank(2, 2), 0);
+  EXPECT_EQ(device_for_rank(3, 2), 1);
+  EXPECT_EQ(device_for_rank(7, 4), 3);
+}
+
+TEST(MpiDeviceChoice, ARankWithoutAGpuSaysWhichAndWhy) {
+  EXPECT_EQ(gpu_rank_refusal("pile.toml", 0, 1, ""), "");
+  const std::string m = gpu_rank_refusal("pile.toml", 2, 0, "no CUDA device is present");
+  EXPECT_NE(m.find("pile.toml"), std::string::npos) << m;
+  EXPECT_NE(m.find("backend = \"cuda\" on MPI ranks needs a GPU"), std::string::npos) << m;
+  EXPECT_NE(m.find("rank 2 has none (no CUDA device is present)"), std::string::npos) << m;
+  EXPECT_NE(m.find("backend = \"cpu\""), std::string::npos) << m;
+}
+
+TEST(MpiRefusal, CudaIsNoLongerRefusedOnRanks) {
+  Scene scene;
+  scene.source = "pile.toml";
+  scene.simulation.backend = Backend::Cuda;
+  const ParticleModel model;
+  EXPECT_EQ(refusal(scene, model), "");
+  // What GPU ranks cannot split either is still refused, with the same message as CPU ranks.
+  scene.simulation.method = Method::AllPairs;
+  EXPECT_NE(refusal(scene, model).find("all-pairs"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tridem::mpi
