@@ -117,7 +117,7 @@ std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
   header_[2] = data.size() % kBlockSize;
   // Each block is compressed on its own (that is VTK's format), so the blocks go to the
   // OpenMP threads, each into a slot of the largest size zlib may need, then closed up in
-  // order: zlib's fastest level still runs at only ~100 MB/s on one core.
+  // order: zlib is the slowest part of writing a frame.
   const std::size_t slot = compressBound(static_cast<uLong>(kBlockSize));
   compressed_.resize(blocks * slot);
   const auto count = static_cast<std::ptrdiff_t>(blocks);
