@@ -6,6 +6,7 @@
 //   tridem_frame_bench [n=100000] [steps=2] [repetitions=3] [backend=openmp] [dir]
 // Prints a Markdown table; bench/README.md says how to read it.
 #include "io/output/vtk_frames.hpp"
+#include "tridem/measurements.hpp"
 #include "tridem/output.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
@@ -86,7 +87,32 @@ int main(int argc, char** argv) {
     fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.3f} |\n", c.name, frame, contacts,
                frame + contacts, median(times));
   }
-  tridem::write_contacts_csv(dir / "contacts.csv", s);
+  // Where a default frame's time goes (medians of `reps`), and the snapshot it is made
+  // from (on the GPU: the download and conversion the stepping thread pays).
+  {
+    tridem::io::VtkXmlWriter w;
+    const auto time = [&](auto&& part) {
+      std::vector<double> t;
+      for (int r = 0; r < reps; ++r) {
+        const auto t0 = std::chrono::steady_clock::now();
+        part();
+        t.push_back(seconds_since(t0));
+      }
+      return median(t);
+    };
+    tridem::Snapshot again;
+    const double snapshot = time([&] { solver->snapshot(again, true); });
+    const double stress = time([&] { (void)tridem::grain_stress(s); });
+    const double vtu_state = time([&] { tridem::io::write_vtu_frame(w, dir / "f.vtu", s, false); });
+    const double vtu = time([&] { tridem::io::write_vtu_frame(w, dir / "f.vtu", s, true); });
+    const double vtp = time([&] { tridem::io::write_contacts_vtp(w, dir / "c.vtp", s); });
+    const double csv = time([&] { tridem::write_contacts_csv(dir / "contacts.csv", s); });
+    fmt::print("\n| part (default format) | s |\n|---|---:|\n| snapshot with contacts | {:.3f} |\n"
+               "| grain stress | {:.3f} |\n| .vtu without grain stress | {:.3f} |\n"
+               "| .vtu with it | {:.3f} |\n| contacts .vtp | {:.3f} |\n| contacts .csv | {:.3f} "
+               "|\n",
+               snapshot, stress, vtu_state, vtu, vtp, csv);
+  }
   fmt::print("\ncontacts .csv (written with each frame while [output] contacts_csv is on): "
              "{:.1f} B/tri\n\n",
              static_cast<double>(fs::file_size(dir / "contacts.csv")) / tri);
