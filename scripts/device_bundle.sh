@@ -3,8 +3,8 @@
 # name it in the device tool's `carry`): the programs and every shared library they load
 # except the C library's own, which the machine has in a newer version. The CUDA runtime is
 # linked statically, so a recent driver is all the GPU side needs. The libraries go in
-# lib.tar.xz (Gmsh's bring ~110 MiB, over the device's 64 MiB carry; xz makes them ~31 MiB):
-# scripts/device_unpack.sh, on the device, unpacks them into .devbin/lib.
+# lib.tar.xz (Gmsh's bring ~110 MiB, over the device's 64 MiB carry; xz makes them ~31 MiB),
+# the programs in programs.tar.xz: scripts/device_unpack.sh, on the device, unpacks them.
 #   scripts/device_bundle.sh [BUILD_DIR]      (default build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -30,6 +30,11 @@ for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_pa
 done | sort -u | grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" "$dest/lib/"; done
 if [ -f "$gmsh_module" ]; then mkdir -p "$dest/lib/tridem" && cp "$gmsh_module" "$dest/lib/tridem/"; fi
+# Stripped and packed too: the programs unstripped (some 50 MiB) and the libraries' 31 MiB
+# went over the 64 MiB carry. scripts/device_unpack.sh, on the device, unpacks both.
+strip --strip-unneeded "$dest"/app/* "$dest"/bench/* "$dest"/tests/* "$dest"/lib/*.so* \
+  $([ -d "$dest/lib/tridem" ] && echo "$dest"/lib/tridem/*.so) 2>/dev/null || true
 tar -C "$dest" -cf - lib | xz -T0 -6 >"$dest/lib.tar.xz"
-rm -rf "$dest/lib"
+tar -C "$dest" -cf - app bench tests | xz -T0 -6 >"$dest/programs.tar.xz"
+rm -rf "$dest/lib" "$dest/app" "$dest/bench" "$dest/tests"
 du -sh "$dest"

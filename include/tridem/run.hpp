@@ -49,6 +49,14 @@ struct RunOptions {
   std::optional<std::chrono::steady_clock::time_point> started;
 };
 
+/// Where the outputs' wall time of a run went (of RunSummary::output_seconds).
+struct OutputSeconds {
+  double snapshots = 0;    ///< taking the state (and contacts) from the solver
+  double final_files = 0;  ///< final.csv and bodies.csv
+  double frame_waits = 0;  ///< waiting for the frame written beside the stepping
+  double rest = 0;         ///< logs, measures, checkpoints
+};
+
 struct RunSummary {
   std::int64_t steps = 0;      ///< steps run by this call
   std::int64_t last_step = 0;  ///< the step the state is at
@@ -62,6 +70,7 @@ struct RunSummary {
   StageTimes stages;  ///< the time loop's steps, stage by stage (outputs not included)
   double setup_seconds = 0;   ///< from RunOptions::started to the first step
   double output_seconds = 0;  ///< of `seconds`, spent writing outputs (frames: only the wait)
+  OutputSeconds outputs;      ///< output_seconds, part by part
 };
 
 /// Runs the scene `input` to the end (or to an interruption): its settings are the run's

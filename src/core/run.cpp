@@ -164,6 +164,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   summary.solver = solver->description();
   summary.stages = solver->stage_times();
   summary.output_seconds = loop.output_seconds();
+  summary.outputs = loop.output_parts();
   if (log) {
     fmt::print(log,
                "{}: {} steps in {:.3f} s: {:.4g} steps/s, {:.4g} triangle-steps/s; "
@@ -174,11 +175,13 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
     const double stepping = std::max(0.0, seconds - summary.output_seconds);
     fmt::print(log,
                "wall time: set-up {:.3f} s ({}), stepping {:.3f} s ({:.4g} triangle-steps/s), "
-               "outputs {:.3f} s\n",
+               "outputs {:.3f} s (snapshots {:.3g} s, waiting for frames {:.3g} s, final.csv "
+               "and bodies.csv {:.3g} s, the rest {:.3g} s)\n",
                summary.setup_seconds, clock.laps(), stepping,
                stepping > 0 ? static_cast<double>(summary.steps * summary.triangles) / stepping
                             : 0.0,
-               summary.output_seconds);
+               summary.output_seconds, summary.outputs.snapshots, summary.outputs.frame_waits,
+               summary.outputs.final_files, summary.outputs.rest);
     if (const std::string stats = solver->statistics(); !stats.empty())
       fmt::print(log, "{}: {}\n", solver->description(), stats);
     fmt::print(log, "{}", stage_table(summary.stages));

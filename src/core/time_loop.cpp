@@ -61,7 +61,11 @@ void TimeLoop::start(bool resumed) {
     const std::int64_t step = solver_.step();
     emit(step, every_ > 0 && (is_due(step, every_) || step == last_), true, measure_due_at(step));
   } else if (solver_.step() == last_) {  // nothing left to run
-    solver_.snapshot(snap_, false);
+    {
+      const OutputClock part(parts_.snapshots);
+      solver_.snapshot(snap_, false);
+    }
+    const OutputClock part(parts_.final_files);
     out_.write_final(snap_);
   }
 }
@@ -82,8 +86,15 @@ int TimeLoop::run() {
   const OutputClock clock(output_seconds_);
   if (signal != 0) keep_state(files_.checkpoint);
   // The run is done when its last frame is on disk (or has failed, which throws here).
+  const OutputClock part(parts_.frame_waits);
   out_.finish_frames();
   return signal;
+}
+
+OutputSeconds TimeLoop::output_parts() const {
+  OutputSeconds p = parts_;
+  p.rest = std::max(0.0, output_seconds_ - p.snapshots - p.final_files - p.frame_waits);
+  return p;
 }
 
 int TimeLoop::advance_to(std::int64_t target) {
@@ -144,12 +155,21 @@ void TimeLoop::emit(std::int64_t step, bool frame, bool log, bool measure) {
   // Frames take the contacts when [output] contacts asks for them (the contact files and
   // the frames' per-grain stress come from them); a measure always does. Without them a
   // frame is the state alone: on the GPU the contacts are the larger part of a download.
-  solver_.snapshot(snap_, (frame && scene_.output.contacts) || measure);
+  {
+    const OutputClock part(parts_.snapshots);
+    solver_.snapshot(snap_, (frame && scene_.output.contacts) || measure);
+  }
   if (log) out_.log(snap_, scene_.simulation.gravity, solver_.energy());
   if (measure) out_.measure(snap_, step == last_);
-  if (step == last_) out_.write_final(snap_);
+  if (step == last_) {
+    const OutputClock part(parts_.final_files);
+    out_.write_final(snap_);
+  }
   // Last: the frame is written beside the next steps and takes snap_'s contents with it.
-  if (frame) out_.write_frame_beside(snap_);
+  if (frame) {
+    const OutputClock part(parts_.frame_waits);
+    out_.write_frame_beside(snap_);
+  }
 }
 
 void TimeLoop::keep_state(const std::filesystem::path& file) {

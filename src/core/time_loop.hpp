@@ -1,11 +1,12 @@
 #pragma once
 // The time loop of a run: advances the solver from its current step to the last one in
 // chunks, and at each event writes what is due (frames every [output] every steps, log
-// rows every energy_every, checkpoints every checkpoint_every). It also owns the two ways a run stops early:
-// an interruption (the flag of RunOptions) and a blow-up (RunError from the solver).
+// rows every energy_every, checkpoints every checkpoint_every). It also owns the two ways a run
+// stops early: an interruption (the flag of RunOptions) and a blow-up (RunError from the solver).
 #include "core/progress.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/output.hpp"
+#include "tridem/run.hpp"
 #include "tridem/solver.hpp"
 #include "tridem/step_observer.hpp"
 
@@ -42,6 +43,8 @@ class TimeLoop {
   /// Wall time spent in outputs so far: snapshots, logs, checkpoints, final.csv, and the
   /// wait for a frame written beside the stepping.
   double output_seconds() const { return output_seconds_; }
+  /// The same, part by part (the rest is output_seconds less the named parts).
+  OutputSeconds output_parts() const;
 
  private:
   /// Advances to `target` unless interrupted; returns the interrupting signal or 0.
@@ -70,6 +73,7 @@ class TimeLoop {
   Snapshot snap_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints
   double output_seconds_ = 0;
+  OutputSeconds parts_;  ///< of output_seconds_; its `rest` is filled by output_parts()
 };
 
 }  // namespace tridem
