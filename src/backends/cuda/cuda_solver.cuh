@@ -156,7 +156,7 @@ class CudaSolver final : public Solver {
   PinnedBuffer<StepStatus> host_status_;
   std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
-  mutable std::vector<TouchingPair<Real>> touching_;  ///< a snapshot's contacts, as copied
+  mutable PinnedBuffer<TouchingPair<Real>> touching_;  ///< a snapshot's contacts, as copied
 };
 
 }  // namespace tridem::cuda
