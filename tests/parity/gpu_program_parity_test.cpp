@@ -5,7 +5,8 @@
 // step on the GPU when a servo is present), so they agree as the other GPU parity tests do
 // (support/gpu_compare.hpp); likewise a servo whose length follows a lid, on an unstable
 // pile, within a rounding twin's envelope (support/program_compare.hpp;
-// validation/unstable_parity_test.cpp proves that comparison on the CPU). Skipped without a GPU; label gpu.
+// validation/unstable_parity_test.cpp proves that comparison on the CPU). Skipped without a GPU;
+// label gpu.
 #include "support/backend_test.hpp"
 #include "support/body_scenes.hpp"
 #include "support/gpu_compare.hpp"

@@ -174,20 +174,20 @@ inline void expect_bonds_agree(const Scene& scene, const SolverChoice& reference
     // The pointwise twin's own energy differences (seed 12345: the one of twins_apart's
     // members that sets the pointwise envelope).
     const EnergyBudget ea = cpu->energy(), eb = tried.energy(), et = twin.energy();
-    twin_fracture = std::max(twin_fracture, std::abs(et.dissipated_fracture - ea.dissipated_fracture));
+    twin_fracture =
+        std::max(twin_fracture, std::abs(et.dissipated_fracture - ea.dissipated_fracture));
     twin_elastic = std::max(twin_elastic, std::abs(et.elastic - ea.elastic));
     const Difference d = max_difference(a, b);
     const Difference spread = twin.spread_from(a);
     const BondCount count = count_bonds(sa), tried_count = count_bonds(sb);
-    std::printf(
-        "%s: max |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s; damaged %zu/%zu, broken "
-        "%zu/%zu of %zu bonds; fracture %.6g/%.6g J/m, elastic %.6g/%.6g J/m, platen work "
-        "%.6g/%.6g J/m; rounding twin |dx| %.3g m, |dv| %.3g m/s, |d fracture| %.3g J/m, "
-        "|d elastic| %.3g J/m\n",
-        what.c_str(), d.position, d.angle, d.velocity, count.damaged, tried_count.damaged,
-        count.broken, tried_count.broken, sa.bonds(), ea.dissipated_fracture,
-        eb.dissipated_fracture, ea.elastic, eb.elastic, ea.wall_work, eb.wall_work,
-        spread.position, spread.velocity, twin_fracture, twin_elastic);
+    std::printf("%s: max |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s; damaged %zu/%zu, broken "
+                "%zu/%zu of %zu bonds; fracture %.6g/%.6g J/m, elastic %.6g/%.6g J/m, platen work "
+                "%.6g/%.6g J/m; rounding twin |dx| %.3g m, |dv| %.3g m/s, |d fracture| %.3g J/m, "
+                "|d elastic| %.3g J/m\n",
+                what.c_str(), d.position, d.angle, d.velocity, count.damaged, tried_count.damaged,
+                count.broken, tried_count.broken, sa.bonds(), ea.dissipated_fracture,
+                eb.dissipated_fracture, ea.elastic, eb.elastic, ea.wall_work, eb.wall_work,
+                spread.position, spread.velocity, twin_fracture, twin_elastic);
     // The same bonds, of the same triangles, whatever happened to them.
     EXPECT_EQ(a.bond_a, b.bond_a) << what;
     EXPECT_EQ(a.bond_b, b.bond_b) << what;
@@ -195,8 +195,7 @@ inline void expect_bonds_agree(const Scene& scene, const SolverChoice& reference
       for (int k = 0; k < BondStatistics::kCount; ++k) {
         std::printf("  %s: %.6g/%.6g, twins of other seeds up to %.3g apart\n",
                     BondStatistics::kNames[k], ref.value[k], got.value[k], twins_apart.value[k]);
-        EXPECT_LE(std::abs(got.value[k] - ref.value[k]),
-                  kStatisticsEnvelope * twins_apart.value[k])
+        EXPECT_LE(std::abs(got.value[k] - ref.value[k]), kStatisticsEnvelope * twins_apart.value[k])
             << what << ": " << BondStatistics::kNames[k];
       }
       continue;
@@ -223,7 +222,8 @@ inline void expect_bonds_agree(const Scene& scene, const SolverChoice& reference
     EXPECT_NEAR(eb.dissipated_fracture, ea.dissipated_fracture,
                 std::max(scale * (1e-6 + ea.dissipated_fracture), kEnvelope * twin_fracture))
         << what;
-    EXPECT_NEAR(eb.elastic, ea.elastic, std::max(scale * (1e-6 + ea.elastic), kEnvelope * twin_elastic))
+    EXPECT_NEAR(eb.elastic, ea.elastic,
+                std::max(scale * (1e-6 + ea.elastic), kEnvelope * twin_elastic))
         << what;
   }
   const BondCount end = count_bonds(sa);

@@ -74,15 +74,15 @@ inline void expect_runs_agree_within_rounding(Solver& reference, Solver& tried, 
                 "rounding twin |dx| %.3g m, |dtheta| %.3g rad, |dv| %.3g m/s, wall |dF| %.3g "
                 "N/m; contacts %zu/%zu\n",
                 what.c_str(), d.position, d.angle, d.velocity, max_wall_force_difference(a, b),
-                spread.position, spread.angle, spread.velocity, twin_wall_force,
-                a.contacts.size(), b.contacts.size());
+                spread.position, spread.angle, spread.velocity, twin_wall_force, a.contacts.size(),
+                b.contacts.size());
     EXPECT_LE(d.position, dx) << what;
     EXPECT_LE(d.angle, da) << what;
     EXPECT_LE(d.velocity, dv) << what;
     for (std::size_t i = 0; i < a.size(); ++i)
       if (a.motion[i] != Motion::Free) {
-        const double df = std::max(1e-6 * (1 + std::hypot(a.fx[i], a.fy[i])),
-                                   kProgramEnvelope * twin_wall_force);
+        const double df =
+            std::max(1e-6 * (1 + std::hypot(a.fx[i], a.fy[i])), kProgramEnvelope * twin_wall_force);
         EXPECT_NEAR(a.fx[i], b.fx[i], df) << what << ": wall " << i;
         EXPECT_NEAR(a.fy[i], b.fy[i], df) << what << ": wall " << i;
       }

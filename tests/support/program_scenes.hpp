@@ -41,9 +41,9 @@ struct ServoBox {
   static constexpr double kLidCentroid = 0.3;  ///< the lid's centroid above its bottom, m
 };
 
-/// `rows` (5 by default) rows of lattice triangles (side 0.1 m, each shrunk to 0.95 about its centroid: they
-/// start apart) under gravity in a box 0.6 m wide: the floor and the left wall fixed, the
-/// right wall a servo pushing left at ServoBox::kStress, and a wide lid 0.45 m above the
+/// `rows` (5 by default) rows of lattice triangles (side 0.1 m, each shrunk to 0.95 about its
+/// centroid: they start apart) under gravity in a box 0.6 m wide: the floor and the left wall
+/// fixed, the right wall a servo pushing left at ServoBox::kStress, and a wide lid 0.45 m above the
 /// floor (0.017 m above the grains) that comes down at 0.1 m/s, from 0.05 s to 0.8 s (its
 /// velocity ramped over 0.05 s at each end), by 0.07 m: the sample's height shrinks by 16 %
 /// and it spreads against the servo. With `follow`, the servo's length is the gap between

@@ -1,7 +1,8 @@
 // The comparisons of the GPU parity tests of unstable runs, checked on the CPU, where a run
 // of other rounding is the serial solver of the scene moved by an offset
 // (support/shifted_run.hpp): each comparison must let that run pass, and must fail a
-// solver that is wrong by a little (a servo of 1 % other gain, bonds 5 % weaker), so that the GPU tests built on them still catch a bug.
+// solver that is wrong by a little (a servo of 1 % other gain, bonds 5 % weaker), so that the GPU
+// tests built on them still catch a bug.
 //  - The servo box (support/program_scenes.hpp): its pile parts from any run of other
 //    rounding from its first contacts, tenfold per 50-100 steps (H200), so it is compared
 //    within a rounding twin's envelope (support/program_compare.hpp).
@@ -67,8 +68,10 @@ TEST(UnstableParity, ServoBoxPileComparisonPassesOtherRoundingAndFailsAWrongServ
       const auto compare = [&] {
         test::expect_runs_agree_within_rounding(*reference, *tried, twin, kServoSteps, 100);
       };
-      if (k < 0) compare();
-      else EXPECT_GT(failures_of(compare), 0u) << "other gain";
+      if (k < 0)
+        compare();
+      else
+        EXPECT_GT(failures_of(compare), 0u) << "other gain";
     }
   }
 }
@@ -86,7 +89,10 @@ TEST(UnstableParity, FloatBondComparisonPassesOtherRoundingAndFailsWeakerBonds) 
     Scene weaker = s;
     for (Material& m : weaker.materials) m.tensile_strength *= 0.95;
     auto tried = test::solver_for(weaker, serial);
-    EXPECT_GT(failures_of([&] { test::expect_bonds_agree(s, serial, *tried, test::kLoadedDiscSteps, 100); }), 0u);
+    EXPECT_GT(failures_of([&] {
+                test::expect_bonds_agree(s, serial, *tried, test::kLoadedDiscSteps, 100);
+              }),
+              0u);
   }
 }
 

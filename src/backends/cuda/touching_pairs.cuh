@@ -73,11 +73,11 @@ void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pair
   TRIDEM_CUDA_CHECK(
       cub::DeviceScan::ExclusiveSum(nullptr, bytes, first.data(), first.data(), n + 1, stream));
   DeviceBuffer<unsigned char> temp(bytes);
-  TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp.data(), bytes, first.data(), first.data(),
-                                                  n + 1, stream));
+  TRIDEM_CUDA_CHECK(
+      cub::DeviceScan::ExclusiveSum(temp.data(), bytes, first.data(), first.data(), n + 1, stream));
   int total = 0;
-  TRIDEM_CUDA_CHECK(cudaMemcpyAsync(&total, first.data() + n, sizeof total,
-                                    cudaMemcpyDeviceToHost, stream));
+  TRIDEM_CUDA_CHECK(
+      cudaMemcpyAsync(&total, first.data() + n, sizeof total, cudaMemcpyDeviceToHost, stream));
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   const auto count = static_cast<std::size_t>(total);
   if (host.size() < count) host.allocate(count + count / 8);
@@ -85,8 +85,8 @@ void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pair
     DeviceBuffer<TouchingPair<Real>> rows(static_cast<std::size_t>(total));
     fill_touching_kernel<Real><<<grid, kBlock, 0, stream>>>(n, pairs, first.data(), rows.data());
     TRIDEM_CUDA_CHECK_LAUNCH("fill_touching_kernel");
-    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host.data(), rows.data(), rows.bytes(),
-                                      cudaMemcpyDeviceToHost, stream));
+    TRIDEM_CUDA_CHECK(
+        cudaMemcpyAsync(host.data(), rows.data(), rows.bytes(), cudaMemcpyDeviceToHost, stream));
     TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   }
   const std::size_t before = out.contacts.size();
@@ -102,9 +102,8 @@ void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pair
     r.depth = t.depth;
     r.sliding = t.sliding != 0;
     r.touching = true;
-    out.contacts[before + static_cast<std::size_t>(k)] =
-        contact_record(static_cast<std::size_t>(t.emitter), static_cast<std::size_t>(t.partner),
-                       r, cx, cy);
+    out.contacts[before + static_cast<std::size_t>(k)] = contact_record(
+        static_cast<std::size_t>(t.emitter), static_cast<std::size_t>(t.partner), r, cx, cy);
   }
 }
 
