@@ -56,7 +56,7 @@ int run(const RunArgs& args) {
   RunOptions options;
   options.force = args.force;
   options.threads = args.threads;
-  options.device = args.device;
+  options.device = args.device.value_or(0);
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.started = started;
@@ -76,6 +76,13 @@ int run(const RunArgs& args) {
     if (args.live)
       throw Error(fmt::format("--live watches a run of one rank; this job has {} ranks: run it "
                               "without mpirun, or without --live",
+                              args.ranks));
+    // Each rank takes the GPU of its node-local rank (mpi/device_choice): one --device
+    // for every rank would put them all on one GPU, or be silently overridden.
+    if (args.device)
+      throw Error(fmt::format("--device picks the GPU of a run of one rank; this job has {} "
+                              "ranks, and each takes the GPU of its rank on its node "
+                              "(docs/scaling.md): leave --device out",
                               args.ranks));
     return mpi::run_on_ranks(read, options, report);
   }

@@ -18,7 +18,7 @@ struct RunArgs {
   std::optional<std::int64_t> steps;
   std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
-  int device = 0;
+  std::optional<int> device;  ///< --device; unset: the first GPU (one rank) or the rank's own
   bool force = false;
   bool quiet = false;
   /// --live [PORT]: the live view (docs/live-view.md); empty text for the default port.
