@@ -3,6 +3,7 @@
 #include "core/initial_overlaps.hpp"
 #include "core/solver_factory.hpp"
 #include "core/stage_report.hpp"
+#include "core/output_notes.hpp"
 #include "core/time_loop.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
@@ -78,19 +79,6 @@ void print_relaxation(std::FILE* log, const RelaxReport& r) {
              r.largest_move);
 }
 
-/// Outputs that will cost a large run more than its steps, named before it starts. The
-/// contacts CSV is 17-digit text, some 1.1 kB per triangle in a dense pile: at 10^6
-/// triangles its writing took longer than 1000 steps on the H200 (docs/performance.md).
-void print_output_notes(std::FILE* log, const OutputSettings& o, std::size_t particles) {
-  constexpr std::size_t kLargeContactsCsv = 100000;
-  if (o.every > 0 && o.contacts && o.contacts_csv && particles >= kLargeContactsCsv)
-    fmt::print(log,
-               "note: the contacts CSV of each frame will take about {:.0f} MB ({} triangles, "
-               "about 1 kB each in a dense packing); [output] contacts_csv = false leaves it "
-               "out (contacts/*.vtp holds the same network)\n",
-               1.1e-3 * static_cast<double>(particles), particles);
-}
-
 }  // namespace
 
 RunSummary run_scene(const Scene& input, const RunOptions& options) {
@@ -129,7 +117,8 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
   if (log) {
     print_start(log, *solver, ts, free, scene.simulation.backend, last);
     if (relaxed) print_relaxation(log, *relaxed);
-    print_output_notes(log, scene.output, model.size());
+    if (const std::string note = output_notes(scene.output, model.size()); !note.empty())
+      fmt::print(log, "{}", note);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
                  resume->step, resume->time);

@@ -1,5 +1,6 @@
 // The run's output time, part by part (RunSummary::outputs and the wall-time line of
 // tridem run): each part is measured where it is spent, and together they are the total.
+#include "core/output_notes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/run.hpp"
 #include "unit/io/io_test_support.hpp"
@@ -37,6 +38,23 @@ TEST(OutputSeconds, PartsAreMeasuredAndMakeTheTotal) {
   EXPECT_NE(log.find("(snapshots "), std::string::npos) << log;
   EXPECT_NE(log.find(", waiting for frames "), std::string::npos) << log;
   EXPECT_NE(log.find(", final.csv and bodies.csv "), std::string::npos) << log;
+}
+
+// A large run with frames and the contacts CSV is told its size and how to leave it out;
+// smaller runs, and runs without the CSV or without frames, are told nothing.
+TEST(OutputNotes, ContactsCsvOfALargeRunIsNamed) {
+  OutputSettings o;
+  o.every = 1000;
+  const std::string note = output_notes(o, 1000000);
+  EXPECT_NE(note.find("about 1100 MB"), std::string::npos) << note;
+  EXPECT_NE(note.find("contacts_csv = false"), std::string::npos) << note;
+  EXPECT_EQ(output_notes(o, kLargeContactsCsv - 1), "");
+  OutputSettings no_csv = o;
+  no_csv.contacts_csv = false;
+  EXPECT_EQ(output_notes(no_csv, 1000000), "");
+  OutputSettings no_frames = o;
+  no_frames.every = 0;
+  EXPECT_EQ(output_notes(no_frames, 1000000), "");
 }
 
 }  // namespace
