@@ -22,25 +22,73 @@ struct Tensor {
   double xx = 0, xy = 0, yx = 0, yy = 0;
 };
 
-/// Σ_c f_i (x_c − x_p)_j of every grain p over its triangle contacts: f on p, at x_c.
-std::vector<Tensor> contact_moments(const Snapshot& s, const measure::Grains& grains) {
-  std::vector<Tensor> m(grains.size());
+/// Each grain's triangle contacts in record order (a CSR built in two passes): for grain g,
+/// ends[first[g] .. first[g + 1]) name the contact record and the grain at its other end.
+/// A grain's sums over its own list are the serial loop's over all contacts, bit for bit,
+/// and the grains can be summed on the threads: at 10^6 triangles and 6 contacts each, a
+/// frame's grain stress took most of the frame on one core.
+struct GrainContactLists {
+  struct End {
+    std::size_t record;
+    std::size_t other;
+  };
+  std::vector<std::size_t> first;
+  std::vector<End> ends;
+};
+
+GrainContactLists grain_contact_lists(const Snapshot& s, std::size_t grains) {
+  const auto grain = [&s](std::int64_t i) {
+    return static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(i)));
+  };
+  GrainContactLists l;
+  l.first.assign(grains + 1, 0);
   for (const ContactRecord& c : s.contacts) {
-    const auto a = static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(c.i)));
-    const auto b = static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(c.j)));
+    const std::size_t a = grain(c.i), b = grain(c.j);
     if (a == b) continue;
-    // i (in grain a) receives +f, j (in grain b) −f.
-    for (const auto& [g, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
-      // j's grain is seen through its periodic image (0 without periodic boundaries).
-      const double sx = sign < 0 ? c.image_dx : 0.0, sy = sign < 0 ? c.image_dy : 0.0;
-      const double lx = c.px - (grains.centroid[g].x + sx), ly = c.py - (grains.centroid[g].y + sy);
-      const double fx = sign * c.fx, fy = sign * c.fy;
-      m[g].xx += fx * lx;
-      m[g].xy += fx * ly;
-      m[g].yx += fy * lx;
-      m[g].yy += fy * ly;
-    }
+    ++l.first[a + 1];
+    ++l.first[b + 1];
   }
+  for (std::size_t g = 0; g < grains; ++g) l.first[g + 1] += l.first[g];
+  l.ends.resize(l.first[grains]);
+  std::vector<std::size_t> at(l.first.begin(), l.first.end() - 1);
+  for (std::size_t k = 0; k < s.contacts.size(); ++k) {
+    const std::size_t a = grain(s.contacts[k].i), b = grain(s.contacts[k].j);
+    if (a == b) continue;
+    l.ends[at[a]++] = {k, b};
+    l.ends[at[b]++] = {k, a};
+  }
+  return l;
+}
+
+/// Σ_c f_i (x_c − x_p)_j of grain p over its triangle contacts: f on p, at x_c.
+Tensor contact_moment(const Snapshot& s, const measure::Grains& grains,
+                      const GrainContactLists& lists, std::size_t g) {
+  Tensor m;
+  for (std::size_t e = lists.first[g]; e < lists.first[g + 1]; ++e) {
+    const ContactRecord& c = s.contacts[lists.ends[e].record];
+    // i (in grain a) receives +f, j (in grain b) −f.
+    const double sign =
+        static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(c.i))) == g ? 1.0 : -1.0;
+    // j's grain is seen through its periodic image (0 without periodic boundaries).
+    const double sx = sign < 0 ? c.image_dx : 0.0, sy = sign < 0 ? c.image_dy : 0.0;
+    const double lx = c.px - (grains.centroid[g].x + sx), ly = c.py - (grains.centroid[g].y + sy);
+    const double fx = sign * c.fx, fy = sign * c.fy;
+    m.xx += fx * lx;
+    m.xy += fx * ly;
+    m.yx += fy * lx;
+    m.yy += fy * ly;
+  }
+  return m;
+}
+
+/// contact_moment of every grain, on the OpenMP threads.
+std::vector<Tensor> contact_moments(const Snapshot& s, const measure::Grains& grains,
+                                    const GrainContactLists& lists) {
+  std::vector<Tensor> m(grains.size());
+  const auto count = static_cast<std::ptrdiff_t>(grains.size());
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (std::ptrdiff_t g = 0; g < count; ++g)
+    m[static_cast<std::size_t>(g)] = contact_moment(s, grains, lists, static_cast<std::size_t>(g));
   return m;
 }
 
@@ -113,7 +161,8 @@ Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>
   for (std::size_t g = 0; g < grains.size(); ++g)
     inside[g] = grains.free[g] && (!region || region->contains(grains.centroid[g]));
 
-  const std::vector<Tensor> moment = contact_moments(s, grains);
+  const std::vector<Tensor> moment =
+      contact_moments(s, grains, grain_contact_lists(s, grains.size()));
   Tensor sum;
   std::int64_t grain_contact_ends = 0, mechanical_ends = 0, mechanical_grains = 0;
   for (std::size_t g = 0; g < grains.size(); ++g) {
@@ -181,38 +230,9 @@ Measurement measure_region(const Snapshot& s, const std::optional<MeasureRegion>
 }
 
 GrainStress grain_stress(const Snapshot& s) {
-  // Written with every frame: at 10^6 triangles and 6 contacts each, the sort of all
-  // contacts by grain pair that measure::grain_contacts does took most of a frame on one
-  // core. Here each grain's contacts are listed in record order (two passes, as a CSR),
-  // then each grain is summed on the OpenMP threads: its moment in record order, as
-  // contact_moments adds it (the same sums, bit for bit), and its distinct neighbours.
   const measure::Grains grains = measure::grains_of(s);
   const std::size_t n = grains.size();
-  const auto grain = [&s](std::int64_t i) {
-    return static_cast<std::size_t>(s.body_of(static_cast<std::size_t>(i)));
-  };
-  std::vector<std::size_t> first(n + 1, 0);
-  for (const ContactRecord& c : s.contacts) {
-    const std::size_t a = grain(c.i), b = grain(c.j);
-    if (a == b) continue;
-    ++first[a + 1];
-    ++first[b + 1];
-  }
-  for (std::size_t g = 0; g < n; ++g) first[g + 1] += first[g];
-  struct End {
-    std::size_t record;
-    std::size_t other;  ///< the grain at the contact's other end
-  };
-  std::vector<End> ends(first[n]);
-  {
-    std::vector<std::size_t> at(first.begin(), first.end() - 1);
-    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
-      const std::size_t a = grain(s.contacts[k].i), b = grain(s.contacts[k].j);
-      if (a == b) continue;
-      ends[at[a]++] = {k, b};
-      ends[at[b]++] = {k, a};
-    }
-  }
+  const GrainContactLists lists = grain_contact_lists(s, n);
   GrainStress out;
   for (auto* v : {&out.sxx, &out.sxy, &out.syx, &out.syy}) v->resize(n);
   out.coordination.resize(n);
@@ -223,23 +243,11 @@ GrainStress grain_stress(const Snapshot& s) {
 #pragma omp for schedule(dynamic, 4096)
     for (std::ptrdiff_t p = 0; p < grains_count; ++p) {
       const auto g = static_cast<std::size_t>(p);
-      Tensor m;
+      const Tensor m = contact_moment(s, grains, lists, g);
+      // The coordination: the distinct grains at the other ends.
       others.clear();
-      for (std::size_t e = first[g]; e < first[g + 1]; ++e) {
-        const ContactRecord& c = s.contacts[ends[e].record];
-        // i (in grain a) receives +f, j (in grain b) −f, j's grain seen through its
-        // periodic image: contact_moments' arithmetic.
-        const double sign = grain(c.i) == g ? 1.0 : -1.0;
-        const double sx = sign < 0 ? c.image_dx : 0.0, sy = sign < 0 ? c.image_dy : 0.0;
-        const double lx = c.px - (grains.centroid[g].x + sx),
-                     ly = c.py - (grains.centroid[g].y + sy);
-        const double fx = sign * c.fx, fy = sign * c.fy;
-        m.xx += fx * lx;
-        m.xy += fx * ly;
-        m.yx += fy * lx;
-        m.yy += fy * ly;
-        others.push_back(ends[e].other);
-      }
+      for (std::size_t e = lists.first[g]; e < lists.first[g + 1]; ++e)
+        others.push_back(lists.ends[e].other);
       std::sort(others.begin(), others.end());
       const auto distinct = std::unique(others.begin(), others.end()) - others.begin();
       const double scale = grains.area[g] > 0 ? -1.0 / grains.area[g] : 0.0;
