@@ -1,9 +1,9 @@
 #include "tridem/run.hpp"
 
 #include "core/initial_overlaps.hpp"
+#include "core/output_notes.hpp"
 #include "core/solver_factory.hpp"
 #include "core/stage_report.hpp"
-#include "core/output_notes.hpp"
 #include "core/time_loop.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
