@@ -12,6 +12,9 @@ class Solver;
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
+  /// Once, before the first step and inside the run's set-up (not its stepping time): what
+  /// the observer must allocate or take from the solver before it can watch.
+  virtual void run_starting(const Solver& /*solver*/) {}
   /// Before each advance of the loop: how many of the next `steps` (>= 1) may run before
   /// the next after_advance. `steps` when the observer has nothing to do sooner (the loop
   /// keeps its chunks, and the solver its fast multi-step path); fewer when it needs the

@@ -127,6 +127,7 @@ RunSummary run_scene(const Scene& input, const RunOptions& options) {
 
   OutputSet out(scene.output, scene.output.dir, scene.output.vtk_format(), resume);
   TimeLoop loop(*solver, out, scene, meta, options.interrupt, options.progress, options.observer);
+  if (options.observer) options.observer->run_starting(*solver);
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
   summary.setup_seconds = std::chrono::duration<double>(start - setup_start).count();

@@ -208,6 +208,8 @@ void LiveView::closed(int client) {
   }
 }
 
+void LiveView::run_starting(const Solver& solver) { prepare(solver); }
+
 void LiveView::run_ended(const Solver& solver) {
   // The last state to every client, whatever the frame rate, then the end.
   ended_.store(true);

@@ -60,6 +60,12 @@ class LiveView final : public StepObserver, private LiveServer::Events {
   std::int64_t steps_before_look(std::int64_t steps, double seconds_per_step) override;
   void after_advance(const Solver& solver, const std::atomic<int>* interrupt) override;
   /// Sends the last state and tells the clients the run has ended.
+  /// The first look, before the run's steps: the shapes and the staging of its copies
+  /// (pinned memory on the GPU); frames come after steps, as before (a paused start holds
+  /// after the first step). After the first step, as it was, the preparation counted
+  /// against the stepping rate: at 10^6 triangles on the H200 a --live run without a
+  /// client stepped 13 % slower than without --live over 6000 steps.
+  void run_starting(const Solver& solver) override;
   void run_ended(const Solver& solver) override;
 
  private:

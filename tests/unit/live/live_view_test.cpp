@@ -139,6 +139,26 @@ TEST(LiveView, AnUnwatchedRunKeepsItsChunks) {
   client.close();
 }
 
+// The run's set-up prepares the view (run_starting): its first look is not taken out of the
+// stepping, whose first chunk is then the loop's own; frames still come after steps.
+TEST(LiveView, PreparesBeforeTheFirstStep) {
+  LiveView view(WatchedRun::options(false), {0, -9.81}, nullptr);
+  Scene s = test::jostling_pile(4, 3);
+  s.simulation.backend = Backend::Cpu;
+  auto solver = make_solver(s, {});
+  view.run_starting(*solver);
+  EXPECT_EQ(view.steps_before_look(500, 1e-4), 500) << "prepared: the loop's chunk";
+  FrameClient client(view.port());
+  client.say("next");
+  solver->advance(1);
+  // The client's request reaches the server's thread in its own time: look until it has.
+  for (int k = 0; k < 200 && view.steps_before_look(500, 1e-4) == 500; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  view.after_advance(*solver, nullptr);
+  EXPECT_EQ(client.next_frame(), 1) << "the first frame, after the first step";
+  client.close();
+}
+
 TEST(LiveView, StopsItsServerBeforeItGoes) {
   // The last frame of a run is converted and delivered on the server's thread, maybe while
   // the view is being destroyed: the server must still be there for it (the server's
