@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 
 namespace tridem::io {
@@ -64,46 +65,34 @@ void VtkXmlWriter::emit(OutFile& out, std::string_view name, VtkWord word,
   if (!name.empty()) out.print(" Name=\"{}\"", name);
   if (format_.encoding == Encoding::Appended) {
     out.print(" {} format=\"appended\" offset=\"{}\"/>\n", size_attribute, appended_.size());
-    if (format_.compressed()) {
-      const std::size_t used = compress_raw(out);
-      const auto* header = reinterpret_cast<const std::uint8_t*>(header_.data());
-      appended_.insert(appended_.end(), header, header + header_.size() * sizeof(std::uint64_t));
-      appended_.insert(appended_.end(), compressed_.begin(),
-                       compressed_.begin() + static_cast<std::ptrdiff_t>(used));
-    } else {
-      const std::uint64_t count = raw_.size() - kCountBytes;
-      std::memcpy(raw_.data(), &count, sizeof count);
-      appended_.insert(appended_.end(), raw_.begin(), raw_.end());
-    }
+    for (const std::span<const std::uint8_t> part : binary_parts(out))
+      appended_.insert(appended_.end(), part.begin(), part.end());
     return;
   }
   const bool binary = format_.encoding == Encoding::Binary;
   out.print(" {} format=\"{}\">\n", size_attribute, binary ? "binary" : "ascii");
-  if (!binary)
+  if (binary) {
+    // Each part a base64 run of its own, as VTK's writer encodes them.
+    text_.clear();
+    for (const std::span<const std::uint8_t> part : binary_parts(out))
+      if (!part.empty()) base64_append(part, text_);
+    out.write(text_);
+  } else {
     write_ascii(out, word);
-  else if (format_.compressed())
-    write_compressed(out);
-  else
-    write_binary(out);
+  }
   out.print("\n{:{}}</DataArray>\n", "", indent);
 }
 
-void VtkXmlWriter::write_binary(OutFile& out) {
-  const std::uint64_t count = raw_.size() - kCountBytes;
-  std::memcpy(raw_.data(), &count, sizeof count);
-  text_.clear();
-  base64_append(raw_, text_);
-  out.write(text_);
-}
-
-void VtkXmlWriter::write_compressed(OutFile& out) {
+std::array<std::span<const std::uint8_t>, 2> VtkXmlWriter::binary_parts(const OutFile& out) {
+  if (!format_.compressed()) {
+    const std::uint64_t count = raw_.size() - kCountBytes;
+    std::memcpy(raw_.data(), &count, sizeof count);
+    return {std::span<const std::uint8_t>(raw_), std::span<const std::uint8_t>()};
+  }
   const std::size_t used = compress_raw(out);
-  text_.clear();
-  base64_append(std::span(reinterpret_cast<const std::uint8_t*>(header_.data()),
-                          header_.size() * sizeof(std::uint64_t)),
-                text_);
-  base64_append(std::span(compressed_.data(), used), text_);
-  out.write(text_);
+  return {std::span(reinterpret_cast<const std::uint8_t*>(header_.data()),
+                    header_.size() * sizeof(std::uint64_t)),
+          std::span<const std::uint8_t>(compressed_.data(), used)};
 }
 
 std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {

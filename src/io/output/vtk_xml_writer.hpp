@@ -8,6 +8,7 @@
 #include "io/output/out_file.hpp"
 #include "tridem/output.hpp"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -134,10 +135,10 @@ class VtkXmlWriter {
   /// ordinary arrays and NumberOfTuples for field data, which VTK requires there.
   void emit(OutFile&, std::string_view name, VtkWord word, std::string_view size_attribute,
             int indent);
-  /// Appended encoding: the element names its array's offset in the block end_file
-  /// writes, and the bytes wait in appended_.
-  void write_binary(OutFile&);
-  void write_compressed(OutFile&);
+  /// The array's bytes as VTK stores them, in two parts: [byte count][values] and nothing,
+  /// or the compression header and the blocks. Inline, each part is a base64 run; appended
+  /// (the element names its offset in the block end_file writes), they wait in appended_.
+  std::array<std::span<const std::uint8_t>, 2> binary_parts(const OutFile&);
   /// The compressed array's header_ and blocks, in compressed_ (its first `used` bytes).
   std::size_t compress_raw(const OutFile&);
   void write_ascii(OutFile&, VtkWord word);
