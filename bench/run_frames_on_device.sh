@@ -2,9 +2,9 @@
 # Issue 12's frame output on the GPU machine, in one device call (bundle from
 # scripts/device_bundle.sh, carried as .devbin): each part under its own time limit, logs
 # in OUT, summaries on stdout.
-#  1. the GPU tests but the slow validation suites (as bench/run_gpu_checks_on_device.sh
-#     part 2): the contact network a snapshot takes from the GPU is compared with the
-#     serial solver's in the parity suites, and pinned bit for bit by Gpu/StateHash;
+#  1. bench/run_gpu_checks_on_device.sh parts 1-2 (the CUDA state hashes, the GPU tests but
+#     the slow validation suites): the contact network a snapshot takes from the GPU is
+#     compared with the serial solver's in the parity suites, pinned by Gpu/StateHash;
 #  2. tridem_frame_bench on dense_pile(10^6) after 1000 steps on cuda: bytes per triangle
 #     and seconds per frame of each VTK format, and what the time loop waits per frame;
 #  3. tridem run against the benchmark (bench/run_cli_vs_bench_on_device.sh) at 10^6,
@@ -16,16 +16,11 @@ source "$(dirname "$0")/../scripts/device_env.sh"
 out="${1:?give an output folder}"
 mkdir -p "$out"
 skip=" ${SKIP:-} "
-bin="$root/.devbin/tests/tridem_tests"
-summary() { grep -E '^\[  (PASSED|FAILED|SKIPPED) |tests? from .* ran|FAILED TEST' "$1" | sort -u | head -40; }
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$out/gpu.txt"
 echo "cores: $(nproc)"
 if [[ $skip != *" 1 "* ]]; then
-  slow='Gpu/Incline.*:Gpu/PrecisionTest.*:Gpu/StepStability.*:Gpu/Friction.*:Gpu/MotionTest.*:Gpu/MotionProgramTest.*:Gpu/Resting.*'
-  start=$(date +%s)
-  timeout "${TEST_SECONDS:-200}" stdbuf -oL "$bin" \
-    --gtest_filter="Gpu*:*Cuda*:*Gpu*:Bonds.*:*StateCopy*-$slow" >"$out/tests.log" 2>&1
-  echo "== 1 GPU tests: exit $? after $(( $(date +%s) - start )) s"; summary "$out/tests.log"
+  # Parts 1-2 of the session's GPU checks (state hashes, the GPU tests but the slow suites).
+  SKIP="3 4 5" "$root/bench/run_gpu_checks_on_device.sh" "$out/gpu_checks"
 fi
 if [[ $skip != *" 2 "* ]]; then
   echo "== 2 frame bench, dense_pile(10^6) after 1000 steps on cuda"
