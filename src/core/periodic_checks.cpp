@@ -36,6 +36,35 @@ double gpu_exact_periodic_length(const Scene& scene, const ParticleModel& model)
   return 8 * farthest_reach(model).first + 2 * scene.simulation.skin * grid_cell;
 }
 
+GpuPeriodicLimit gpu_periodic_limit(const Scene& scene, const ParticleModel& model) {
+  if (!scene.simulation.periodic.any()) return {};
+  const std::string label = scene_label(scene);
+  const std::string cpu_backends =
+      fmt::format("backend = \"{}\", \"{}\" or \"{}\" (auto runs it on the CPU)",
+                  backend_name(Backend::OpenMP), backend_name(Backend::Cpu),
+                  backend_name(Backend::Auto));
+  const Method method = scene.simulation.method;
+  if (method == Method::Decomposition)
+    return {fmt::format("{}: [simulation] method = \"{}\" does not find pairs across periodic "
+                        "boundaries on backend '{}' yet (the CPU's does); use {}, or method = "
+                        "\"{}\" on the GPU",
+                        label, method_name(method), backend_name(Backend::Cuda), cpu_backends,
+                        method_name(Method::Grid)),
+            fmt::format("the GPU's method = \"{}\" does not find pairs across periodic "
+                        "boundaries yet",
+                        method_name(method))};
+  if (gpu_lists_periodic_cell_exactly(scene, model)) return {};
+  const double shortest = gpu_exact_periodic_length(scene, model);
+  return {fmt::format("{}: the periodic cell is too short for backend '{}': its pair list can "
+                      "miss a pair in cells shorter than {} (8 x the farthest vertex from a "
+                      "centroid, plus twice the skin); make periodic_x / periodic_y longer "
+                      "than that, or use {}",
+                      label, backend_name(Backend::Cuda), shortest, cpu_backends),
+          fmt::format("its cell is shorter than {}, under which the GPU's pair list could miss "
+                      "a pair",
+                      shortest)};
+}
+
 bool gpu_lists_periodic_cell_exactly(const Scene& scene, const ParticleModel& model) {
   const PeriodicCell& cell = scene.simulation.periodic;
   const double shortest = gpu_exact_periodic_length(scene, model);
@@ -48,13 +77,6 @@ void check_periodic_cell(const Scene& scene, const ParticleModel& model) {
   const PeriodicCell& cell = scene.simulation.periodic;
   if (!cell.any()) return;
   const std::string label = scene_label(scene);
-  const Method method = scene.simulation.method;
-  if (method == Method::Decomposition)
-    throw SceneError(fmt::format(
-        "{}: [simulation] method = \"{}\" does not find pairs across periodic boundaries yet; "
-        "use method = \"{}\", \"{}\" or \"{}\" with periodic_x / periodic_y",
-        label, method_name(method), method_name(Method::Grid), method_name(Method::AllPairs),
-        method_name(Method::SingleDomain)));
   // The farthest vertex of any triangle from its centroid: two touching triangles are at
   // most twice that apart, and the nearest image is the only one they can touch through
   // when that is under half a period.

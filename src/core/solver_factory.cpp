@@ -91,23 +91,16 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   // Bonded and periodic scenes too: the GPU computes bonds and periodic cells.
   Backend backend = resolve_backend(requested);
   check_periodic_cell(scene, model);
-  // The GPU's periodic pair list is exact only in cells of 8 reaches plus the skin: a
-  // shorter cell runs on the CPU, whose list is exact from 4 (never a missed pair).
-  if (backend == Backend::Cuda && !gpu_lists_periodic_cell_exactly(scene, model)) {
-    const double shortest = gpu_exact_periodic_length(scene, model);
-    if (requested != Backend::Auto)
-      throw SceneError(fmt::format(
-          "{}: the periodic cell is too short for backend '{}': its pair list can miss a pair "
-          "in cells shorter than {} (8 x the farthest vertex from a centroid, plus twice the "
-          "skin); make periodic_x / periodic_y longer than that, or use backend = \"{}\", "
-          "\"{}\" or \"{}\" (auto runs it on the CPU)",
-          scene_label(scene), backend_name(Backend::Cuda), shortest, backend_name(Backend::OpenMP),
-          backend_name(Backend::Cpu), backend_name(Backend::Auto)));
-    backend = fastest_cpu_backend();
-    fmt::print(stderr,
-               "note: backend = auto runs this periodic scene on {}: its cell is shorter than "
-               "{}, under which the GPU's pair list could miss a pair\n",
-               backend_name(backend), shortest);
+  // What the GPU cannot run in a periodic cell yet (a cell too short for its pair list,
+  // the decomposition method) runs on the CPU under auto, never risking a missed pair.
+  if (backend == Backend::Cuda) {
+    const GpuPeriodicLimit limit = gpu_periodic_limit(scene, model);
+    if (!limit.refusal.empty()) {
+      if (requested != Backend::Auto) throw SceneError(limit.refusal);
+      backend = fastest_cpu_backend();
+      fmt::print(stderr, "note: backend = auto runs this periodic scene on {}: {}\n",
+                 backend_name(backend), limit.reason);
+    }
   }
   if (config.threads > 0 && backend != Backend::OpenMP)
     throw RunError(fmt::format(

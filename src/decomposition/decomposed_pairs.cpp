@@ -22,8 +22,10 @@ DecomposedPairs<Real>::DecomposedPairs(const DecompositionSettings& settings,
 template <class Real>
 template <class Emit>
 void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
-                                        const TriangleArrays<Real>& g, Emit&& emit) const {
-  const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_);
+                                        const TriangleArrays<Real>& g,
+                                        const physics::PeriodicFrame* periodic,
+                                        Emit&& emit) const {
+  const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_, periodic);
   auto consider = [&](std::int32_t j) {
     if (passes(j)) emit(j);
   };
@@ -35,8 +37,9 @@ void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
 
 template <class Real>
 void DecomposedPairs<Real>::find(const double* x, const double* y, const TriangleArrays<Real>& g,
-                                 bool parallel, PairList& pairs) {
-  decomposition_.update({x, y, g.lo_x, g.lo_y, g.hi_x, g.hi_y}, parallel);
+                                 bool parallel, PairList& pairs,
+                                 const physics::PeriodicFrame* periodic) {
+  decomposition_.update({x, y, g.lo_x, g.lo_y, g.hi_x, g.hi_y}, parallel, periodic);
   const Decomposition<Real>& d = decomposition_;
   const int domains = d.count();
   if (found_.size() < static_cast<std::size_t>(domains))
@@ -51,7 +54,7 @@ void DecomposedPairs<Real>::find(const double* x, const double* y, const Triangl
     const auto staged = d.members(k);
     for (const std::int32_t i : d.owned(k)) {
       run_start_[i] = static_cast<std::int64_t>(found.size());
-      visit_pairs(i, staged, g, [&found](std::int32_t j) { found.push_back(j); });
+      visit_pairs(i, staged, g, periodic, [&found](std::int32_t j) { found.push_back(j); });
       row_count_[i] = static_cast<std::int64_t>(found.size()) - run_start_[i];
     }
   }

@@ -22,16 +22,17 @@ class DecomposedPairs {
                   const std::vector<Motion>& motion, ContactFilter filter);
 
   /// Brings the decomposition up to date for centroids (x, y) and the geometry (migration,
-  /// borders), then fills `pairs` with the pairs that pass the contact test.
+  /// borders), then fills `pairs` with the pairs that pass the contact test. In a periodic
+  /// cell (`periodic`, this step's frame) each partner is tested at its nearest image.
   void find(const double* x, const double* y, const TriangleArrays<Real>& geometry, bool parallel,
-            PairList& pairs);
+            PairList& pairs, const physics::PeriodicFrame* periodic = nullptr);
 
   const Decomposition<Real>& decomposition() const { return decomposition_; }
 
  private:
   template <class Emit>
-  void visit_pairs(std::int32_t i, ParticleRange staged,
-                   const TriangleArrays<Real>& g, Emit&& emit) const;
+  void visit_pairs(std::int32_t i, ParticleRange staged, const TriangleArrays<Real>& g,
+                   const physics::PeriodicFrame* periodic, Emit&& emit) const;
 
   ContactFilter filter_;
   std::vector<std::uint8_t> small_, free_;

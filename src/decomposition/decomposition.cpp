@@ -4,6 +4,7 @@
 #include "tridem/error.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -71,8 +72,20 @@ ParticleRange Decomposition<Real>::members(int k) const {
 }
 
 template <class Real>
-void Decomposition<Real>::update(const DomainInput<Real>& in, bool parallel) {
+void Decomposition<Real>::update(const DomainInput<Real>& in, bool parallel,
+                                 const physics::PeriodicFrame* periodic) {
   parallel_ = parallel;
+  periodic_ = periodic != nullptr;
+  if (periodic_) {
+    frame_ = *periodic;
+    extent_ = empty_hull<double>();
+    for (std::size_t p = 0; p < n_; ++p)
+      if (small_[p])
+        extent_ = {std::min<double>(extent_.lo_x, in.lo_x[p]),
+                   std::min<double>(extent_.lo_y, in.lo_y[p]),
+                   std::max<double>(extent_.hi_x, in.hi_x[p]),
+                   std::max<double>(extent_.hi_y, in.hi_y[p])};
+  }
   if (started_) compute_cells(in);
   else initial_partition(in);
   assign(in);
@@ -201,7 +214,10 @@ void Decomposition<Real>::assign(const DomainInput<Real>& in) {
         if (box_reaches(b.lo_x, b.lo_y, b.hi_x, b.hi_y, h)) staged.push_back(owned_[o]);
       }
     });
+    if (periodic_) stage_images(h, staged);
     std::sort(staged.begin(), staged.end());
+    // A particle can reach the hull as itself and as an image: it is staged once.
+    if (periodic_) staged.erase(std::unique(staged.begin(), staged.end()), staged.end());
   }
   member_offset_.resize(static_cast<std::size_t>(domains) + 1);
   member_offset_[0] = 0;
@@ -228,6 +244,97 @@ void Decomposition<Real>::visit_neighbours(int k, Visit&& visit) const {
     const int q_end = m.in_row(rr, above(col_hi));
     for (int q = m.in_row(rr, below(col_begin_[k])); q <= q_end; ++q) visit(q);
   }
+}
+
+namespace {
+
+/// The integers a with a * period in [lo, hi] (none when the range is empty).
+struct PeriodRange {
+  long long first, last;
+};
+
+PeriodRange periods_within(double lo, double hi, double period) {
+  return {static_cast<long long>(std::ceil(lo / period)),
+          static_cast<long long>(std::floor(hi / period))};
+}
+
+/// Calls image(sx, sy) for each translation (a·lx + b·shift, b·ly) of the cell's images,
+/// other than the identity, that moves some box of `extent` onto [lo_y - margin, hi_y +
+/// margin] along y and, through its x range, onto [lo_x, hi_x].
+template <class Image>
+void for_each_image(const physics::PeriodicFrame& f, const Hull<double>& extent, double lo_x,
+                    double lo_y, double hi_x, double hi_y, Image&& image) {
+  const PeriodRange rows =
+      f.py ? periods_within(lo_y - extent.hi_y, hi_y - extent.lo_y, f.ly) : PeriodRange{0, 0};
+  for (long long b = rows.first; b <= rows.last; ++b) {
+    const double base = static_cast<double>(b) * f.shift;
+    const PeriodRange columns =
+        f.px ? periods_within(lo_x - extent.hi_x - base, hi_x - extent.lo_x - base, f.lx)
+             : PeriodRange{0, 0};
+    for (long long a = columns.first; a <= columns.last; ++a)
+      if (a != 0 || b != 0)
+        image(base + static_cast<double>(a) * f.lx, static_cast<double>(b) * f.ly);
+  }
+}
+
+/// A margin of a few roundings of the cell and the coordinates: an image's box is a box
+/// moved by a sum of periods, and the pair test that follows (passes_periodic_contact_test)
+/// allows as much.
+double image_margin(const physics::PeriodicFrame& f, double a, double b, double c, double d) {
+  return 16 * DBL_EPSILON *
+         (std::fabs(f.lx) + std::fabs(f.ly) + std::fabs(a) + std::fabs(b) + std::fabs(c) +
+          std::fabs(d));
+}
+
+}  // namespace
+
+template <class Real>
+void Decomposition<Real>::stage_images(const Hull<Real>& h, std::vector<std::int32_t>& staged) const {
+  const double tol = image_margin(frame_, h.lo_x, h.lo_y, h.hi_x, h.hi_y);
+  const double lo_x = h.lo_x - tol, lo_y = h.lo_y - tol, hi_x = h.hi_x + tol, hi_y = h.hi_y + tol;
+  const DomainMap m = map();
+  for_each_image(frame_, extent_, lo_x, lo_y, hi_x, hi_y, [&](double sx, double sy) {
+    // The particles whose boxes moved by (sx, sy) reach the hull: those whose boxes reach
+    // the hull moved back. Their centroids lie within a cell of it (kReachCells).
+    const double rlo_x = lo_x - sx, rhi_x = hi_x - sx, rlo_y = lo_y - sy, rhi_y = hi_y - sy;
+    const int r_end =
+        m.row_of(decomposition_cell(rhi_y, origin_y_, cell_) + kReachCells);
+    const std::int64_t c_lo = decomposition_cell(rlo_x, origin_x_, cell_) - kReachCells;
+    const std::int64_t c_hi = decomposition_cell(rhi_x, origin_x_, cell_) + kReachCells;
+    for (int rr = m.row_of(decomposition_cell(rlo_y, origin_y_, cell_) - kReachCells);
+         rr <= r_end; ++rr) {
+      const int q_end = m.in_row(rr, c_hi);
+      for (int q = m.in_row(rr, c_lo); q <= q_end; ++q)
+        for (auto o = owned_offset_[q]; o < owned_offset_[q + 1]; ++o) {
+          const Hull<Real>& b = owned_box_[o];
+          if (b.lo_x <= rhi_x && b.hi_x >= rlo_x && b.lo_y <= rhi_y && b.hi_y >= rlo_y)
+            staged.push_back(owned_[o]);
+        }
+    }
+  });
+}
+
+template <class Real>
+void Decomposition<Real>::add_image_bands(Real y_lo, Real y_hi, const DomainInput<Real>& in,
+                                          BandCounter<Real>& band) const {
+  const double tol = image_margin(frame_, extent_.lo_x, extent_.lo_y, extent_.hi_x, extent_.hi_y);
+  // Every image that brings some box onto the row's y-extent, over the whole cell along x:
+  // the row's own band moved along x, and the boxes near the other side of a y boundary.
+  const std::size_t own = band.lo.size();
+  for_each_image(frame_, extent_, extent_.lo_x - tol, y_lo - tol, extent_.hi_x + tol, y_hi + tol,
+                 [&](double sx, double sy) {
+                   auto add = [&](double lo, double hi) {
+                     band.lo.push_back(static_cast<Real>(lo + sx));
+                     band.hi.push_back(static_cast<Real>(hi + sx));
+                   };
+                   if (sy == 0) {
+                     for (std::size_t e = 0; e < own; ++e) add(band.lo[e], band.hi[e]);
+                     return;
+                   }
+                   for (std::size_t p = 0; p < n_; ++p)
+                     if (small_[p] && in.lo_y[p] + sy <= y_hi + tol && in.hi_y[p] + sy >= y_lo - tol)
+                       add(in.lo_x[p], in.hi_x[p]);
+                 });
 }
 
 template <class Real>
@@ -345,6 +452,7 @@ void Decomposition<Real>::partition_row(int r, const DomainInput<Real>& in) {
         band.lo.push_back(in.lo_x[p]);
         band.hi.push_back(in.hi_x[p]);
       }
+    if (periodic_) add_image_bands(y_lo, y_hi, in, band);
     std::sort(band.lo.begin(), band.lo.end());
     std::sort(band.hi.begin(), band.hi.end());
     cut = cut_row(columns, band, settings_.columns, settings_.capacity);

@@ -20,6 +20,8 @@
 // it; when neither can, the row's borders are computed anew. A column that alone exceeds
 // the capacity is an error that says what to change.
 #include "decomposition/domain_map.hpp"
+#include "decomposition/row_cut.hpp"
+#include "physics/periodic_frame.hpp"
 #include "tridem/scene.hpp"
 
 #include <cstdint>
@@ -71,8 +73,12 @@ class Decomposition {
   /// Assigns owners and overlap bands for the current step; the first call computes the
   /// borders, later ones move them when a sub-domain overflows. Throws RunError when some
   /// cell column cannot fit in one sub-domain.
-  /// `parallel` runs it with OpenMP; the result is the same.
-  void update(const DomainInput<Real>& in, bool parallel = false);
+  /// `parallel` runs it with OpenMP; the result is the same. In a periodic cell
+  /// (`periodic`, the frame of this step) a sub-domain also stages the particles whose
+  /// images across the boundaries reach its hull, so that every pair through a boundary
+  /// has its partner staged with its emitter, at some image.
+  void update(const DomainInput<Real>& in, bool parallel = false,
+              const physics::PeriodicFrame* periodic = nullptr);
 
   int count() const { return static_cast<int>(col_begin_.size()); }
   int rows() const { return static_cast<int>(row_begin_.size()); }
@@ -107,6 +113,14 @@ class Decomposition {
   /// the only ones whose particles can reach k's hull.
   template <class Visit>
   void visit_neighbours(int k, Visit&& visit) const;
+  /// Appends to `staged` the particles owned anywhere whose boxes, moved by one of the
+  /// periodic cell's image translations, reach `h` (the frame's images that can: those
+  /// that bring some owned box near it).
+  void stage_images(const Hull<Real>& h, std::vector<std::int32_t>& staged) const;
+  /// In a periodic cell, the boxes of the particles whose images reach the y-extent of a
+  /// row, moved to those images, join the row's band (partition_row).
+  void add_image_bands(Real y_lo, Real y_hi, const DomainInput<Real>& in,
+                       BandCounter<Real>& band) const;
   int row_of_domain(int k) const;
   int staged(int k) const { return member_offset_[k + 1] - member_offset_[k]; }
 
@@ -117,6 +131,9 @@ class Decomposition {
   std::vector<std::int32_t> large_;
   bool started_ = false;
   bool parallel_ = false;
+  bool periodic_ = false;
+  physics::PeriodicFrame frame_{};  ///< this update's, when periodic_
+  Hull<double> extent_{};           ///< of every small particle's box, when periodic_
   double origin_x_ = 0, origin_y_ = 0;
 
   // Borders (see DomainMap).

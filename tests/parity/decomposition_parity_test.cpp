@@ -3,13 +3,16 @@
 // their history would be reset anyway), in the same rows, so the runs agree bit for bit;
 // small capacities force many sub-domains, migrations and border moves on the way. OpenMP
 // over sub-domains reproduces the serial run exactly.
+#include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 #include "tridem/scene_io.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <string>
+#include <utility>
 
 namespace tridem {
 namespace {
@@ -67,6 +70,38 @@ TEST(DecompositionParity, ExampleScenesReproduceGridBitForBit) {
       if (t.motion == Motion::Free) t.velocity.y -= 3;
     expect_same_as_grid(test::with_decomposition(s, DecompositionLayout::Grid, 48), 4000, name);
   }
+}
+
+// In periodic cells (along x; both ways; both ways with Lees-Edwards shear) sub-domains by
+// the boundaries stage the images of the particles across them: the grid's pairs, bit for
+// bit, with contacts through the boundaries, in strips and in rows and columns.
+TEST(DecompositionParity, PeriodicCellsReproduceGridBitForBit) {
+  const std::pair<const char*, Scene> cases[] = {{"periodic pile", test::periodic_pile(12, 6)},
+                                                 {"periodic gas", test::periodic_gas(10, 0.1, 0.49)},
+                                                 {"dense sheared gas", test::dense_sheared_gas(10)}};
+  for (const auto& [name, scene] : cases)
+    for (const auto layout : {DecompositionLayout::Strips, DecompositionLayout::Grid}) {
+      const Scene s = test::with_decomposition(scene, layout, 40);
+      const RunResult grid = run(s, Backend::Cpu, Method::Grid, 600);
+      const RunResult dd = run(s, Backend::Cpu, Method::Decomposition, 600);
+      SCOPED_TRACE(fmt::format("{}, {}", name, layout == DecompositionLayout::Grid ? "2d" : "1d"));
+      test::expect_identical(grid.snap, dd.snap);
+      EXPECT_GT(test::through_boundary(grid.snap), 0u) << "contacts through the boundaries";
+      EXPECT_EQ(dd.statistics.find("decomposition: 1 sub-domains"), std::string::npos)
+          << dd.statistics;
+      EXPECT_EQ(dd.statistics.find(" 0 migrations"), std::string::npos) << dd.statistics;
+    }
+}
+
+TEST(DecompositionParity, PeriodicFloatAndOpenMPReproduceTheirGrids) {
+  const Scene s = test::with_decomposition(test::dense_sheared_gas(10), DecompositionLayout::Grid, 40);
+  test::expect_identical(run(s, Backend::Cpu, Method::Grid, 300, Precision::Float).snap,
+                         run(s, Backend::Cpu, Method::Decomposition, 300, Precision::Float).snap);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(3);
+  test::expect_identical(run(s, Backend::Cpu, Method::Decomposition, 300).snap,
+                         run(s, Backend::OpenMP, Method::Decomposition, 300).snap);
+  omp_set_num_threads(saved);
 }
 
 TEST(DecompositionParity, FloatReproducesFloatGridBitForBit) {

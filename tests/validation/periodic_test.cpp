@@ -220,10 +220,23 @@ TEST(PeriodicRefusal, CellNotLongerThanFourReaches) {
   EXPECT_NE(why.find("particle id 9"), std::string::npos) << why;
 }
 
-TEST(PeriodicRefusal, MethodsThatDoNotSeeAcrossTheBoundary) {
-  Scene s = periodic_gas(4, 0.1);
+// The CPU's decomposition sees across the boundaries (decomposition_parity_test.cpp); the
+// GPU's does not yet: cuda refuses it, naming what runs it.
+TEST(PeriodicRefusal, DecompositionOnTheGpu) {
+  Scene s = periodic_gas(4, 0.1);  // long enough for the GPU's list
   s.simulation.method = Method::Decomposition;
-  EXPECT_NE(refusal(s).find("does not find pairs across periodic boundaries"), std::string::npos);
+  for (Backend b : {Backend::Cpu, Backend::OpenMP}) {
+    s.simulation.backend = b;
+    EXPECT_EQ(refusal(s), "") << backend_name(b);
+  }
+  s.simulation.backend = Backend::Cuda;
+  const std::string why = refusal(s);
+  EXPECT_NE(why.find("does not find pairs across periodic boundaries on backend 'cuda'"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("backend = \"openmp\""), std::string::npos) << why;
+  s.simulation.method = Method::Grid;
+  EXPECT_TRUE(gpu_periodic_limit(s, build_particle_model(s)).refusal.empty());
 }
 
 // Single-domain in a periodic cell tests each partner at its nearest image

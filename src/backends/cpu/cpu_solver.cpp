@@ -217,15 +217,17 @@ void CpuSolver<Real>::find_pairs() {
                                       {rel_y_[0].data(), rel_y_[1].data(), rel_y_[2].data()},
                                       lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data(),
                                       x_.data(), y_.data()};
-  if (method_ == Method::SingleDomain && periodic_) {
-    const physics::PeriodicFrame frame = frame_at(static_cast<double>(step_) * dt_);
-    single_domain_.find(geometry, parallel_, pairs_, &frame);
-  } else if (method_ == Method::SingleDomain) {
-    single_domain_.find(geometry, parallel_, pairs_);
+  // The frame of this step, in a periodic cell: each method sees partners at their
+  // nearest images through it.
+  const physics::PeriodicFrame frame =
+      periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
+  const physics::PeriodicFrame* through = periodic_ ? &frame : nullptr;
+  if (method_ == Method::SingleDomain) {
+    single_domain_.find(geometry, parallel_, pairs_, through);
   } else if (decomposed_)
-    decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_);
+    decomposed_->find(x_.data(), y_.data(), geometry, parallel_, pairs_, through);
   else if (periodic_) {
-    const PeriodicView view{frame_at(static_cast<double>(step_) * dt_), x_.data(), y_.data()};
+    const PeriodicView view{frame, x_.data(), y_.data()};
     finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                  pairs_, &view);
   } else {
