@@ -81,8 +81,11 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\")";
   else if (!scene.bonds.empty())
     what = "cohesive bonds (a bonded [[mesh]])";
-  else if (!model.programs.empty())
-    what = "motion programs and servo walls";
+  else if (std::any_of(model.programs.begin(), model.programs.end(),
+                       [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
+    // A servo moves by its whole load, which the ranks hold in parts; the other programs
+    // are functions of time, which every rank's copy of the wall follows alike.
+    what = "servo walls";
   else if (scene.simulation.periodic.any())
     what = "periodic boundaries (periodic_x, periodic_y)";
   else if (scene.simulation.method == Method::AllPairs)
