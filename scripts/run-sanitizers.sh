@@ -18,5 +18,5 @@ cmake --build build-asan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# Not the GPU tests, nor the longest validations (label long, tests/threaded_tests_run_alone.cmake).
+# Not the GPU tests, nor the longest validations (label long, tests/discovered_test_properties.cmake).
 ctest --test-dir build-asan --output-on-failure -LE "gpu|long"

@@ -59,14 +59,17 @@ class LiveView final : public StepObserver, private LiveServer::Events {
 
   std::int64_t steps_before_look(std::int64_t steps, double seconds_per_step) override;
   void after_advance(const Solver& solver, const std::atomic<int>* interrupt) override;
-  /// Sends the last state and tells the clients the run has ended.
   /// The first look, before the run's steps: the shapes and the staging of its copies
   /// (pinned memory on the GPU); frames come after steps, as before (a paused start holds
   /// after the first step). After the first step, as it was, the preparation counted
   /// against the stepping rate: at 10^6 triangles on the H200 a --live run without a
   /// client stepped 13 % slower than without --live over 6000 steps.
   void run_starting(const Solver& solver) override;
+  /// Sends the last state and tells the clients the run has ended.
   void run_ended(const Solver& solver) override;
+  /// Whether some client has asked for a frame newer than the last one taken: the next
+  /// due look takes it. Read on any thread (the server's thread sets it).
+  bool frame_wanted() const;
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -81,7 +84,6 @@ class LiveView final : public StepObserver, private LiveServer::Events {
   /// not finished the last one (then this frame is dropped).
   void take_frame(const Solver& solver);
   bool frame_due(Clock::time_point now) const;
-  bool frame_wanted() const;
   /// Server thread: the copy finished, converted, encoded, delivered.
   void convert();
   /// Server thread: the newest frame to every client that asked and has not had it.

@@ -10,6 +10,7 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
+#include <chrono>
 #include <cstring>
 #include <gtest/gtest.h>
 #include <thread>
@@ -151,9 +152,13 @@ TEST(LiveView, PreparesBeforeTheFirstStep) {
   FrameClient client(view.port());
   client.say("next");
   solver->advance(1);
-  // The client's request reaches the server's thread in its own time: look until it has.
-  for (int k = 0; k < 200 && view.steps_before_look(500, 1e-4) == 500; ++k)
+  // The request reaches the server's thread in its own time, slowly under the sanitizers on
+  // a busy machine: wait until it has (a look before would take no frame, and the client
+  // would wait for one forever), and fail, not hang, if it never does.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!view.frame_wanted() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(view.frame_wanted()) << "the client's request never reached the server";
   view.after_advance(*solver, nullptr);
   EXPECT_EQ(client.next_frame(), 1) << "the first frame, after the first step";
   client.close();
