@@ -62,6 +62,12 @@ class RankSolver {
   /// f for each pair of the last completed step, by local index, in slot order (none before
   /// the first step).
   virtual void for_each_last_pair(const PairVisitor& f) const = 0;
+  /// From the check hook: f for each pair of the step in progress, its forces computed, by
+  /// local index in slot order. CPU ranks only: GPU ranks are not given servo walls.
+  virtual void for_each_step_pair(const PairVisitor& f) const = 0;
+  /// From the check hook: local particle i's force and torque for the rest of the step
+  /// (a servo wall's load summed across ranks, which its program reads). CPU ranks only.
+  virtual void set_load(std::int32_t i, Vec2<Real> force, Real torque) = 0;
   /// The elastic energy in the terms the backend's energy() adds: f(emitter, partner, value)
   /// per pair (the CPU adds pair by pair), or f(emitter, -1, sum) per row (CUDA adds each
   /// row's sum). Added in ascending (emitter, partner) order they give that total.

@@ -77,15 +77,36 @@ void CpuRank<Real>::energy_sums(std::vector<double>& out) const {
     for (std::size_t k = 0; k < per; ++k) out[i * per + k] = energy[k][i];
 }
 
-template <class Real>
-void CpuRank<Real>::for_each_last_pair(const typename RankSolver<Real>::PairVisitor& f) const {
-  if (solver_.step() == 0) return;
-  const PairList& pl = solver_.last_pairs();
-  const auto& force = solver_.last_forces();
+namespace {
+
+/// f(emitter, partner, force) for each slot of a pair list, rows in order.
+template <class Real, class F>
+void visit_pairs(const PairList& pl, const std::vector<physics::PairForce<Real>>& force, F&& f) {
   for (std::size_t e = 0; e + 1 < pl.offset.size(); ++e)
     for (std::int64_t s = pl.offset[e]; s < pl.offset[e + 1]; ++s)
       f(static_cast<std::int32_t>(e), pl.partner[static_cast<std::size_t>(s)],
         force[static_cast<std::size_t>(s)]);
+}
+
+}  // namespace
+
+template <class Real>
+void CpuRank<Real>::for_each_last_pair(const typename RankSolver<Real>::PairVisitor& f) const {
+  if (solver_.step() == 0) return;
+  visit_pairs(solver_.last_pairs(), solver_.last_forces(), f);
+}
+
+template <class Real>
+void CpuRank<Real>::for_each_step_pair(const typename RankSolver<Real>::PairVisitor& f) const {
+  visit_pairs(solver_.step_pairs(), solver_.last_forces(), f);
+}
+
+template <class Real>
+void CpuRank<Real>::set_load(std::int32_t i, Vec2<Real> force, Real torque) {
+  const auto k = static_cast<std::size_t>(i);
+  solver_.column(particle_field::fx{})[k] = force.x;
+  solver_.column(particle_field::fy{})[k] = force.y;
+  solver_.column(particle_field::torque{})[k] = torque;
 }
 
 template <class Real>

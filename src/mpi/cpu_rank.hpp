@@ -29,6 +29,8 @@ class CpuRank final : public RankSolver<Real> {
   bool drifted(double limit) const override;
   void energy_sums(std::vector<double>& out) const override;
   void for_each_last_pair(const typename RankSolver<Real>::PairVisitor& f) const override;
+  void for_each_step_pair(const typename RankSolver<Real>::PairVisitor& f) const override;
+  void set_load(std::int32_t i, Vec2<Real> force, Real torque) override;
   void elastic_terms(
       const std::function<void(std::int32_t, std::int32_t, double)>& f) const override;
   std::string transport() const override { return "through host memory"; }

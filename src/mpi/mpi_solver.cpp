@@ -73,6 +73,36 @@ std::vector<double> collect(MPI_Comm comm, const std::vector<double>& mine, bool
 
 std::int32_t as_id(double v) { return static_cast<std::int32_t>(v); }
 
+/// Each wall's load from its pairs' rows (wall, 0 = as emitter | 1 = as partner, other,
+/// fx, fy, torque; six doubles each, any order): out(wall, force, torque) in Real as
+/// sum_pair_forces adds it, its own row then the rows it is the partner of, each ascending.
+template <class Real, class Out>
+void sum_wall_loads(std::vector<double>& rows, Out&& out) {
+  const std::size_t count = rows.size() / 6;
+  std::vector<std::size_t> order(count);
+  for (std::size_t r = 0; r < count; ++r) order[r] = r;
+  auto key = [&](std::size_t r) {
+    return std::tuple(as_id(rows[6 * r]), as_id(rows[6 * r + 1]), as_id(rows[6 * r + 2]));
+  };
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  for (std::size_t a = 0; a < count;) {
+    const std::int32_t w = as_id(rows[6 * order[a]]);
+    Vec2<Real> f{};
+    Real t = Real(0);
+    for (; a < count && as_id(rows[6 * order[a]]) == w; ++a) {
+      const double* l = &rows[6 * order[a]];
+      const Vec2<Real> fa{static_cast<Real>(l[3]), static_cast<Real>(l[4])};
+      if (l[1] == 0)
+        f += fa;
+      else
+        f -= fa;
+      t += static_cast<Real>(l[5]);
+    }
+    out(w, f, t);
+  }
+}
+
 }  // namespace
 
 std::string refusal(const Scene& scene, const ParticleModel& model) {
@@ -81,11 +111,12 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\")";
   else if (!scene.bonds.empty())
     what = "cohesive bonds (a bonded [[mesh]])";
-  else if (std::any_of(model.programs.begin(), model.programs.end(),
+  else if (scene.simulation.backend == Backend::Cuda &&
+           std::any_of(model.programs.begin(), model.programs.end(),
                        [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
-    // A servo moves by its whole load, which the ranks hold in parts; the other programs
-    // are functions of time, which every rank's copy of the wall follows alike.
-    what = "servo walls";
+    // A servo moves by its whole load, which the ranks hold in parts: CPU ranks sum it in
+    // their check (sum_servo_loads), GPU ranks do not yet.
+    what = "servo walls on GPU ranks (backend = \"cuda\")";
   else if (scene.simulation.periodic.any())
     what = "periodic boundaries (periodic_x, periodic_y)";
   else if (scene.simulation.method == Method::AllPairs)
@@ -138,6 +169,13 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   }
   // A skin of one particle radius: the plan lasts until something moves half of it.
   skin_ = largest;
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::int32_t k = model_.program[i];
+    if (k >= 0 && model_.programs[static_cast<std::size_t>(k)].kind == ProgramKind::Servo) {
+      servo_.resize(n_, 0);
+      servo_[i] = 1;
+    }
+  }
 
   char version[MPI_MAX_LIBRARY_VERSION_STRING] = {};
   int length = 0;
@@ -376,6 +414,7 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
       agreed_ = *m;
       throw RunError(agreed_);
     }
+    if (!servo_.empty()) sum_servo_loads();
   });
 
   SolverState ls;
@@ -456,19 +495,10 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     rows.push_back(ls.material[k]);
     rows.push_back(static_cast<double>(static_cast<int>(ls.motion[k])));
   }
-  // The walls' loads, pair by pair: (wall, 0 = as emitter | 1 = as partner, other, fx, fy,
-  // torque), summed on rank 0 in sum_pair_forces' order.
-  for_each_last_pair([&](std::int32_t ge, std::int32_t gj, const physics::PairForce<Real>& f) {
-    const bool we = model_.motion[static_cast<std::size_t>(ge)] != Motion::Free;
-    const bool wj = model_.motion[static_cast<std::size_t>(gj)] != Motion::Free;
-    if (!(we || wj) || authority(ge, gj) != rank_) return;
-    if (we)
-      loads.insert(loads.end(), {double(ge), 0.0, double(gj), double(f.force_a.x),
-                                 double(f.force_a.y), double(f.torque_a)});
-    if (wj)
-      loads.insert(loads.end(), {double(gj), 1.0, double(ge), double(f.force_a.x),
-                                 double(f.force_a.y), double(f.torque_b)});
-  });
+  // The walls' loads, pair by pair, summed on rank 0 in sum_pair_forces' order.
+  loads = wall_pair_loads(
+      [&](const auto& f) { for_each_last_pair(f); },
+      [&](std::int32_t g) { return model_.motion[static_cast<std::size_t>(g)] != Motion::Free; });
   for (const ContactRecord& c : ls.contacts) {
     const std::int32_t gi = global_[static_cast<std::size_t>(c.i)];
     const std::int32_t gj = global_[static_cast<std::size_t>(c.j)];
@@ -494,11 +524,7 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   s.bond_damage.clear();
   s.bond_broken.clear();
   for (auto* v : {&s.bond_x0, &s.bond_y0, &s.bond_x1, &s.bond_y1}) v->clear();
-  struct Load {
-    std::int32_t wall, role, other;
-    double fx, fy, t;
-  };
-  std::vector<Load> wall_loads;
+  std::vector<double> wall_loads;
   std::size_t at = 0;
   while (at < all.size()) {
     const auto nr = static_cast<std::size_t>(all[at]), nl = static_cast<std::size_t>(all[at + 1]),
@@ -514,9 +540,9 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
       s.material[g] = static_cast<int>(all[at++]);
       s.motion[g] = static_cast<Motion>(static_cast<int>(all[at++]));
     }
-    for (const std::size_t end = at + nl; at < end; at += 6)
-      wall_loads.push_back({as_id(all[at]), as_id(all[at + 1]), as_id(all[at + 2]), all[at + 3],
-                            all[at + 4], all[at + 5]});
+    wall_loads.insert(wall_loads.end(), all.begin() + static_cast<std::ptrdiff_t>(at),
+                      all.begin() + static_cast<std::ptrdiff_t>(at + nl));
+    at += nl;
     for (const std::size_t end = at + nc; at < end; at += 10) {
       ContactRecord c;
       c.i = as_id(all[at]);
@@ -537,30 +563,50 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
               return std::tie(a.i, a.j) < std::tie(b.i, b.j);
             });
   if (step() == 0) return;
-  std::sort(wall_loads.begin(), wall_loads.end(), [](const Load& a, const Load& b) {
-    return std::tie(a.wall, a.role, a.other) < std::tie(b.wall, b.role, b.other);
-  });
-  // Every wall's load, in Real as sum_pair_forces adds it: its own row, then the rows it
-  // is the partner of, each ascending (a wall no pair reaches has +0).
+  // A wall no pair reaches has +0.
   for (std::size_t i = 0; i < n_; ++i)
     if (model_.motion[i] != Motion::Free) s.fx[i] = s.fy[i] = s.torque[i] = 0;
-  for (std::size_t a = 0; a < wall_loads.size();) {
-    const std::int32_t w = wall_loads[a].wall;
-    Vec2<Real> f{};
-    Real t = Real(0);
-    for (; a < wall_loads.size() && wall_loads[a].wall == w; ++a) {
-      const Load& l = wall_loads[a];
-      const Vec2<Real> fa{static_cast<Real>(l.fx), static_cast<Real>(l.fy)};
-      if (l.role == 0)
-        f += fa;
-      else
-        f -= fa;
-      t += static_cast<Real>(l.t);
-    }
+  sum_wall_loads<Real>(wall_loads, [&](std::int32_t w, Vec2<Real> f, Real t) {
     s.fx[static_cast<std::size_t>(w)] = static_cast<double>(f.x);
     s.fy[static_cast<std::size_t>(w)] = static_cast<double>(f.y);
     s.torque[static_cast<std::size_t>(w)] = static_cast<double>(t);
-  }
+  });
+}
+
+template <class Real>
+template <class Visit, class IsWall>
+std::vector<double> MpiSolver<Real>::wall_pair_loads(Visit&& visit_pairs, IsWall&& is_wall) const {
+  std::vector<double> loads;
+  visit_pairs([&](std::int32_t ge, std::int32_t gj, const physics::PairForce<Real>& f) {
+    const bool we = is_wall(ge), wj = is_wall(gj);
+    if (!(we || wj) || authority(ge, gj) != rank_) return;
+    if (we)
+      loads.insert(loads.end(), {double(ge), 0.0, double(gj), double(f.force_a.x),
+                                 double(f.force_a.y), double(f.torque_a)});
+    if (wj)
+      loads.insert(loads.end(), {double(gj), 1.0, double(ge), double(f.force_a.x),
+                                 double(f.force_a.y), double(f.torque_b)});
+  });
+  return loads;
+}
+
+template <class Real>
+void MpiSolver<Real>::sum_servo_loads() {
+  const std::vector<double> mine = wall_pair_loads(
+      [&](const auto& f) {
+        local_->for_each_step_pair(
+            [&](std::int32_t e, std::int32_t j, const physics::PairForce<Real>& force) {
+              f(global_[static_cast<std::size_t>(e)], global_[static_cast<std::size_t>(j)], force);
+            });
+      },
+      [&](std::int32_t g) { return servo_[static_cast<std::size_t>(g)] != 0; });
+  std::vector<double> all = collect(comm_, mine, true);
+  // Every rank holds a servo wall that is not owned (large walls are everyone's); an owned
+  // one only where its strip is. A wall no pair reaches keeps the +0 its gather gave it.
+  sum_wall_loads<Real>(all, [&](std::int32_t w, Vec2<Real> f, Real t) {
+    const std::int32_t local = local_of_[static_cast<std::size_t>(w)];
+    if (local >= 0) local_->set_load(local, f, t);
+  });
 }
 
 template <class Real>

@@ -88,6 +88,13 @@ class MpiSolver final : public Solver {
     const int owner = plan_.owner[static_cast<std::size_t>(g)];
     return owner >= 0 ? owner == rank_ : rank_ == 0;
   }
+  /// The pairs' loads on the walls `is_wall` marks (by global id) that this rank is the
+  /// authority for, as (wall, 0 = as emitter | 1 = as partner, other, fx, fy, torque).
+  template <class Visit, class IsWall>
+  std::vector<double> wall_pair_loads(Visit&& visit_pairs, IsWall&& is_wall) const;
+  /// From the check hook: each servo wall's load of this step summed across ranks as one
+  /// solver sums it, written into the local solver before its programs read it.
+  void sum_servo_loads();
   std::string global_ids(const std::string& message) const;
   void measure_bandwidth();
   /// f(emitter, partner, result) for each pair of the local solver's last step, by global
@@ -114,6 +121,7 @@ class MpiSolver final : public Solver {
   StripPlan plan_;
   std::vector<std::int32_t> global_;    ///< local index -> global id (ascending)
   std::vector<std::int32_t> local_of_;  ///< global id -> local index, -1 when not held
+  std::vector<std::uint8_t> servo_;     ///< global id -> a servo wall (empty: none)
   bool gpu_ = false;                    ///< backend = "cuda": GPU ranks
   int device_ = 0;                      ///< this rank's GPU (GPU ranks)
   std::vector<int> devices_;            ///< every rank's GPU, on rank 0 (GPU ranks)

@@ -72,6 +72,9 @@ class CpuSolver final : public Solver {
   /// from them, in the order one solver would.
   const PairList& last_pairs() const { return old_pairs_; }
   const std::vector<physics::PairForce<Real>>& last_forces() const { return result_; }
+  /// The pairs of the step in progress, from its check hook on (last_forces() then holds
+  /// their forces): MPI ranks sum a servo wall's load across ranks there.
+  const PairList& step_pairs() const { return pairs_; }
   /// Called after every step's Check, before anything is written; it may throw RunError
   /// (MPI ranks agree there whether every rank's step is good, so that a blow-up on one
   /// leaves every rank at the last good state).

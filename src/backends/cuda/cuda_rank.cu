@@ -6,6 +6,7 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/cuda_solver.cuh"
 #include "core/rank_solver.hpp"
+#include "tridem/error.hpp"
 
 #include <type_traits>
 
@@ -177,6 +178,15 @@ class CudaRank final : public RankSolver<Real> {
       for (int s = offset[e]; s < offset[e + 1]; ++s)
         f(static_cast<std::int32_t>(e), partner[static_cast<std::size_t>(s)],
           result[static_cast<std::size_t>(s)]);
+  }
+
+  // Servo walls are refused on GPU ranks (mpi/mpi_solver.cpp, refusal): their loads are
+  // summed across CPU ranks only, so nothing calls these.
+  void for_each_step_pair(const typename RankSolver<Real>::PairVisitor&) const override {
+    throw RunError("internal error: a GPU rank was asked for a servo wall's pairs");
+  }
+  void set_load(std::int32_t, Vec2<Real>, Real) override {
+    throw RunError("internal error: a GPU rank was given a servo wall's load");
   }
 
   void elastic_terms(
