@@ -13,7 +13,7 @@ class CpuRank final : public RankSolver<Real> {
  public:
   CpuRank(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
           const SolverConfig& config)
-      : solver_(scene, model, ts, config, false) {}
+      : solver_(scene, model, ts, config, false), cell_(scene.simulation.periodic) {}
 
   Solver& solver() override { return solver_; }
   const Solver& solver() const override { return solver_; }
@@ -37,6 +37,7 @@ class CpuRank final : public RankSolver<Real> {
 
  private:
   CpuSolver<Real> solver_;
+  PeriodicCell cell_;  ///< a wrap is not a drift: moves are taken through the boundary
   std::vector<std::int32_t> send_, receive_, own_;
   std::vector<double> send_buf_, receive_buf_;
   std::vector<double> ref_x_, ref_y_;  ///< own particles' centroids at the plan (own_ order)

@@ -44,7 +44,9 @@ StripPlan plan_strips(const StripInput& in) {
     lo_y = std::min(lo_y, in.y[i]);
     hi_y = std::max(hi_y, in.y[i]);
   }
-  plan.axis = (hi_y - lo_y) > (hi_x - lo_x) ? 1 : 0;
+  plan.axis = in.sheared || (hi_y - lo_y) > (hi_x - lo_x) ? 1 : 0;
+  const bool ring = in.periodic[plan.axis];
+  const double period = in.period[plan.axis];
   plan.margin = 2 * radius + in.skin;
   const std::vector<double>& c = plan.axis == 0 ? in.x : in.y;
 
@@ -75,8 +77,13 @@ StripPlan plan_strips(const StripInput& in) {
       const auto id = static_cast<std::int32_t>(i);
       const bool wall = in.motion[i] != Motion::Free;
       const bool own = plan.owner[i] == static_cast<int>(r);
-      const bool near = plan.lo[r] <= plan.hi[r] && c[i] >= plan.lo[r] - plan.margin &&
-                        c[i] <= plan.hi[r] + plan.margin;
+      auto within = [&](double v) {
+        return v >= plan.lo[r] - plan.margin && v <= plan.hi[r] + plan.margin;
+      };
+      // Along a periodic axis, through the boundary too: the particle's images a period
+      // either side.
+      const bool near = plan.lo[r] <= plan.hi[r] &&
+                        (within(c[i]) || (ring && (within(c[i] - period) || within(c[i] + period))));
       if (wall || own || near || id == plan.cell_setter) held.push_back(id);
     }
   }

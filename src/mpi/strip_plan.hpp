@@ -12,6 +12,10 @@
 //    particle has moved half the skin from where the plan saw it;
 //  - the free particle with the longest edge: it sets the cell grid's size, so that every
 //    rank bins, and picks emitters, as one rank does;
+//  - in a periodic cell, distances along a periodic axis are taken through the boundary
+//    (the nearest image's): the strips form a ring along it. With Lees-Edwards shear the
+//    strips are cut along y, so that each runs the whole period in x, where the images
+//    across the y boundary slide;
 //  - every wall (fixed or prescribed particle): each rank steps them itself, identically.
 //    A wall no longer than the cell size emits its pairs with higher ids (emitter_rule.hpp):
 //    it is owned like a grain (its row, and the energy the row adds to it, then live on one
@@ -31,6 +35,10 @@ struct StripInput {
   std::vector<std::int32_t> contacts;  ///< pairs with history, per particle
   int ranks = 1;
   double skin = 0;
+  /// Periodic axes (x, y) and their periods; `sheared`: Lees-Edwards (both periodic).
+  bool periodic[2] = {false, false};
+  double period[2] = {0, 0};
+  bool sheared = false;
 };
 
 struct StripPlan {

@@ -120,5 +120,48 @@ TEST(MpiStripPlan, BordersBalanceContactsNotParticles) {
   EXPECT_LT(p.hi[0], 0.25);
 }
 
+// In a periodic cell the strips form a ring along the axis: two grains that can touch
+// through the boundary (their nearest images within R_i + R_j + skin) are held by each
+// other's owner, and the plan holds no more than a margin past each strip's ends either way.
+TEST(MpiStripPlan, AlongAPeriodicAxisTheStripsFormARing) {
+  for (int ranks : {2, 3, 5}) {
+    StripInput in = cloud(400, 1.0, 0.3, ranks, 21u + static_cast<unsigned>(ranks));
+    in.periodic[0] = true;
+    in.period[0] = 1.0;
+    const StripPlan p = plan_strips(in);
+    ASSERT_EQ(p.axis, 0);
+    std::size_t through = 0;
+    for (std::size_t i = 0; i < in.x.size(); ++i)
+      for (std::size_t j = 0; j < in.x.size(); ++j) {
+        if (in.motion[i] != Motion::Free || in.motion[j] != Motion::Free) continue;
+        const double dx = std::remainder(in.x[i] - in.x[j], 1.0);
+        if (std::hypot(dx, in.y[i] - in.y[j]) > in.radius[i] + in.radius[j] + in.skin) continue;
+        through += std::abs(in.x[i] - in.x[j]) > 0.5;
+        EXPECT_TRUE(holds(p, p.owner[i], static_cast<std::int32_t>(j)))
+            << ranks << " ranks: " << j << " near " << i << " through the boundary";
+      }
+    EXPECT_GT(through, 0u) << "the cloud has pairs through the boundary";
+    // Without the ring the first and last strips do not hold each other's grains there.
+    in.periodic[0] = false;
+    const StripPlan open = plan_strips(in);
+    std::size_t fewer = 0;
+    for (int r = 0; r < ranks; ++r)
+      fewer += p.held[static_cast<std::size_t>(r)].size() - open.held[static_cast<std::size_t>(r)].size();
+    EXPECT_GT(fewer, 0u);
+  }
+}
+
+// Under Lees-Edwards shear the images across the y boundary slide along x: the strips are
+// cut along y, each running the whole period in x, whatever the extent's shape.
+TEST(MpiStripPlan, UnderShearTheStripsAreCutAlongY) {
+  StripInput in = cloud(200, 1.0, 0.3, 3, 5u);
+  in.periodic[0] = in.periodic[1] = true;
+  in.period[0] = 1.0;
+  in.period[1] = 0.3;
+  EXPECT_EQ(plan_strips(in).axis, 0);
+  in.sheared = true;
+  EXPECT_EQ(plan_strips(in).axis, 1);
+}
+
 }  // namespace
 }  // namespace tridem::mpi
