@@ -787,9 +787,12 @@ std::string MpiSolver<Real>::description() const {
     for (std::size_t r = 0; r < devices_.size(); ++r)
       ranks_on += fmt::format("{}{}", r == 0 ? " " : ", ", devices_[r]);
   }
-  return fmt::format("{} ranks of {}; strips along {}, ghosts by MPI_Alltoallv {} ({}; {}), "
+  const std::string domains =
+      plan_.grid() ? fmt::format("a grid of {} x {} domains", plan_.cuts[0], plan_.cuts[1])
+                   : fmt::format("strips along {}", plan_.axis == 0 ? "x" : "y");
+  return fmt::format("{} ranks of {}; {}, ghosts by MPI_Alltoallv {} ({}; {}), "
                      "first exchange {:.3g} GB/s per rank",
-                     ranks_, local_->solver().description(), plan_.axis == 0 ? "x" : "y",
+                     ranks_, local_->solver().description(), domains,
                      local_->transport(), library_, ranks_on, bandwidth_ / 1e9);
 }
 

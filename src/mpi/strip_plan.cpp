@@ -1,6 +1,7 @@
 #include "mpi/strip_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -12,8 +13,9 @@ StripPlan plan_strips(const StripInput& in) {
   StripPlan plan;
   plan.owner.assign(n, -1);
   plan.held.assign(ranks, {});
-  plan.lo.assign(ranks, std::numeric_limits<double>::infinity());
-  plan.hi.assign(ranks, -std::numeric_limits<double>::infinity());
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  plan.lo.assign(ranks, {kInf, kInf});
+  plan.hi.assign(ranks, {-kInf, -kInf});
 
   // The cell grid's size, as classify_for_grid takes it: the longest edge of a free
   // particle (of any when none is free). A wall no longer than that is binned and emits
@@ -44,46 +46,81 @@ StripPlan plan_strips(const StripInput& in) {
     lo_y = std::min(lo_y, in.y[i]);
     hi_y = std::max(hi_y, in.y[i]);
   }
-  plan.axis = in.sheared || (hi_y - lo_y) > (hi_x - lo_x) ? 1 : 0;
-  const bool ring = in.periodic[plan.axis];
-  const double period = in.period[plan.axis];
-  plan.margin = 2 * radius + in.skin;
-  const std::vector<double>& c = plan.axis == 0 ? in.x : in.y;
-
-  // Free particles along the axis (ties by id), cut where the running weight passes k/N
-  // of the whole.
-  std::vector<std::int32_t> order = free;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::int32_t a, std::int32_t b) { return c[a] < c[b]; });
-  double total = 0;
-  for (std::int32_t i : order) total += 1.0 + in.contacts[i];
-  if (total <= 0) total = 1;
-  double running = 0;
-  for (std::int32_t i : order) {
-    const double w = 1.0 + in.contacts[i];
-    // The particle's strip is that of the middle of its weight, so that a heavy particle
-    // goes where most of it lies.
-    auto r = static_cast<std::size_t>((running + 0.5 * w) / total * static_cast<double>(ranks));
-    r = std::min(r, ranks - 1);
-    running += w;
-    plan.owner[i] = static_cast<int>(r);
-    plan.lo[r] = std::min(plan.lo[r], c[i]);
-    plan.hi[r] = std::max(plan.hi[r], c[i]);
+  // The factoring of N with the shortest inner borders across the grains' extent: nx
+  // columns put nx - 1 borders as long as the extent's height, and their ny rows ny - 1
+  // as long as its width in all. Under Lees-Edwards shear the images across y slide along
+  // x: strips along y.
+  const double width = std::isfinite(hi_x - lo_x) ? hi_x - lo_x : 0;
+  const double height = std::isfinite(hi_y - lo_y) ? hi_y - lo_y : 0;
+  const auto n_ranks = static_cast<int>(ranks);
+  double best = std::numeric_limits<double>::infinity();
+  for (int nx = n_ranks; nx >= 1; --nx) {
+    if (n_ranks % nx != 0 || (in.sheared && nx > 1)) continue;
+    const int ny = n_ranks / nx;
+    const double cost = (nx - 1) * height + (ny - 1) * width;
+    if (cost < best) {
+      best = cost;
+      plan.cuts[0] = nx;
+      plan.cuts[1] = ny;
+    }
   }
+  plan.axis = plan.cuts[0] == 1 && plan.cuts[1] > 1 ? 1 : 0;
+  plan.margin = 2 * radius + in.skin;
+  const std::vector<double>* coord[2] = {&in.x, &in.y};
+
+  // Cuts `ids` (any order) along `axis` into `parts` runs of about equal weight (ties by
+  // id): part(i, k) for each. A particle's part is that of the middle of its weight, so
+  // that a heavy particle goes where most of it lies.
+  auto cut = [&](std::vector<std::int32_t> ids, int axis, int parts, auto&& part) {
+    const std::vector<double>& c = *coord[axis];
+    std::stable_sort(ids.begin(), ids.end(),
+                     [&](std::int32_t a, std::int32_t b) { return c[a] < c[b]; });
+    double total = 0;
+    for (std::int32_t i : ids) total += 1.0 + in.contacts[i];
+    if (total <= 0) total = 1;
+    double running = 0;
+    for (std::int32_t i : ids) {
+      const double w = 1.0 + in.contacts[i];
+      const int k = std::min(
+          parts - 1, static_cast<int>((running + 0.5 * w) / total * static_cast<double>(parts)));
+      running += w;
+      part(i, k);
+    }
+  };
+  std::vector<std::vector<std::int32_t>> columns(static_cast<std::size_t>(plan.cuts[0]));
+  cut(free, 0, plan.cuts[0], [&](std::int32_t i, int k) {
+    columns[static_cast<std::size_t>(k)].push_back(i);
+  });
+  for (int col = 0; col < plan.cuts[0]; ++col)
+    cut(columns[static_cast<std::size_t>(col)], 1, plan.cuts[1], [&](std::int32_t i, int row) {
+      const int r = col * plan.cuts[1] + row;
+      plan.owner[i] = r;
+      for (int a = 0; a < 2; ++a) {
+        plan.lo[static_cast<std::size_t>(r)][a] =
+            std::min(plan.lo[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
+        plan.hi[static_cast<std::size_t>(r)][a] =
+            std::max(plan.hi[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
+      }
+    });
 
   for (std::size_t r = 0; r < ranks; ++r) {
     std::vector<std::int32_t>& held = plan.held[r];
+    const std::array<double, 2>& lo = plan.lo[r];
+    const std::array<double, 2>& hi = plan.hi[r];
+    // Along each cut axis: within the margin of the own particles' extent, and along a
+    // periodic axis through the boundary too (the particle's images a period either
+    // side). An axis that is not cut is the whole extent.
+    auto near_along = [&](int a, double v) {
+      if (plan.cuts[a] == 1) return true;
+      auto within = [&](double u) { return u >= lo[a] - plan.margin && u <= hi[a] + plan.margin; };
+      return within(v) ||
+             (in.periodic[a] && (within(v - in.period[a]) || within(v + in.period[a])));
+    };
     for (std::size_t i = 0; i < n; ++i) {
       const auto id = static_cast<std::int32_t>(i);
       const bool wall = in.motion[i] != Motion::Free;
       const bool own = plan.owner[i] == static_cast<int>(r);
-      auto within = [&](double v) {
-        return v >= plan.lo[r] - plan.margin && v <= plan.hi[r] + plan.margin;
-      };
-      // Along a periodic axis, through the boundary too: the particle's images a period
-      // either side.
-      const bool near = plan.lo[r] <= plan.hi[r] &&
-                        (within(c[i]) || (ring && (within(c[i] - period) || within(c[i] + period))));
+      const bool near = lo[0] <= hi[0] && near_along(0, in.x[i]) && near_along(1, in.y[i]);
       if (wall || own || near || id == plan.cell_setter) held.push_back(id);
     }
   }

@@ -1,13 +1,16 @@
 #pragma once
 // Where each particle lives on N ranks (pure host code, no MPI: tested on its own).
 //
-// The free particles are cut into N strips across the longer side of their extent, each
-// holding about the same work: a particle weighs 1 + its contacts (the pairs with contact
-// history), so the borders move to balance contacts, not particles. Each rank owns (steps
-// and reports) the particles of its strip and holds besides them, as ghosts whose state
-// its owner sends every step:
+// The free particles are cut into N domains, each holding about the same work: a particle
+// weighs 1 + its contacts (the pairs with contact history), so the borders move to balance
+// contacts, not particles. The domains are strips, or a grid of nx × ny = N (columns cut
+// along x, each column's rows along y) where its borders are shorter: of the factorings of
+// N, the one whose inner borders across the grains' extent are the shortest (strips across
+// the longer side on a tie, and for a prime N). Each rank owns (steps and reports) the
+// particles of its domain and holds besides them, as ghosts whose state its owner sends
+// every step:
 //  - every free particle whose centroid is within `margin` = 2 R + skin of its own
-//    particles' extent along the axis (R: the largest distance of a vertex from its
+//    particles' extent along each cut axis (R: the largest distance of a vertex from its
 //    centroid), so that every particle that can touch one of its own is there until some
 //    particle has moved half the skin from where the plan saw it;
 //  - the free particle with the longest edge: it sets the cell grid's size, so that every
@@ -22,6 +25,7 @@
 //    rank); rank 0 reports the other walls.
 #include "tridem/scene.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -42,15 +46,18 @@ struct StripInput {
 };
 
 struct StripPlan {
-  int axis = 0;       ///< 0: strips across x (cut at x = const), 1: across y
+  int axis = 0;       ///< strips: 0 across x (cut at x = const), 1 across y; a grid: 0
+  int cuts[2] = {1, 1};  ///< domains along x and along y (their product is N)
   double margin = 0;  ///< 2 R + skin
   /// Per particle: its rank; -1 for a wall that emits nothing (rank 0 reports it).
   std::vector<int> owner;
   /// Per rank: every particle it holds (own, ghosts, walls), ascending.
   std::vector<std::vector<std::int32_t>> held;
-  /// Per rank: the lowest and highest centroid coordinate of its own particles along the
-  /// axis (lo > hi for a rank that owns none).
-  std::vector<double> lo, hi;
+  /// Per rank and axis: the lowest and highest centroid coordinate of its own particles
+  /// (lo > hi for a rank that owns none).
+  std::vector<std::array<double, 2>> lo, hi;
+
+  bool grid() const { return cuts[0] > 1 && cuts[1] > 1; }
   std::int32_t cell_setter = -1;  ///< the free particle of the longest edge (-1: none free)
 
   bool owns(int rank, std::int32_t i) const { return owner[static_cast<std::size_t>(i)] == rank; }

@@ -31,6 +31,9 @@ case "$mode" in
       grep -q "solver $np ranks of" "$work/many.log" || fail "no '$np ranks' in the start line: $(head -3 "$work/many.log")"
       [ "$(grep -c '^tridem ' "$work/many.log")" = 1 ] || fail "the start line is not printed once"
       grep -q "first exchange .* GB/s" "$work/many.log" || fail "no measured bandwidth in the start line"
+      # EXPECT_DOMAINS: how the start line must say the ranks cut the scene.
+      [ -z "${EXPECT_DOMAINS:-}" ] || grep -qF "$EXPECT_DOMAINS" "$work/many.log" ||
+        fail "the start line does not say '$EXPECT_DOMAINS': $(head -3 "$work/many.log")"
     fi
     diff -r "$work/one" "$work/many" || fail "$np ranks differ from one rank"
     grep "plans" "$work/many.log"

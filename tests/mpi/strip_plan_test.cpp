@@ -80,7 +80,7 @@ TEST(MpiStripPlan, StripsRunAcrossTheLongerSideAndTheCellSetterIsTheLongestEdge)
   EXPECT_EQ(p.cell_setter, 42);
   // Strips are ordered along y: rank r's own particles lie below rank r+1's.
   for (int r = 0; r + 1 < 3; ++r)
-    EXPECT_LE(p.hi[static_cast<std::size_t>(r)], p.lo[static_cast<std::size_t>(r + 1)]);
+    EXPECT_LE(p.hi[static_cast<std::size_t>(r)][1], p.lo[static_cast<std::size_t>(r + 1)][1]);
 }
 
 TEST(MpiStripPlan, AWallAsSmallAsAGrainIsOwnedLikeOneAndHeldEverywhere) {
@@ -117,7 +117,7 @@ TEST(MpiStripPlan, BordersBalanceContactsNotParticles) {
   }
   EXPECT_LT(count[0], count[1] / 3);
   EXPECT_NEAR(weight[0], weight[1], 2 * 21.0);
-  EXPECT_LT(p.hi[0], 0.25);
+  EXPECT_LT(p.hi[0][0], 0.25);
 }
 
 // In a periodic cell the strips form a ring along the axis: two grains that can touch
@@ -149,6 +149,37 @@ TEST(MpiStripPlan, AlongAPeriodicAxisTheStripsFormARing) {
       fewer += p.held[static_cast<std::size_t>(r)].size() - open.held[static_cast<std::size_t>(r)].size();
     EXPECT_GT(fewer, 0u);
   }
+}
+
+// On a square extent 4 and 6 ranks cut a grid (2 x 2, 3 x 2 or 2 x 3: shorter borders than
+// strips), a wide one and a prime count cut strips. In a grid too every particle has one
+// owner and the owner of a grain holds every grain that can touch it, through a periodic
+// boundary as well.
+TEST(MpiStripPlan, ASquareExtentIsCutIntoAGrid) {
+  EXPECT_FALSE(plan_strips(cloud(300, 1.0, 0.3, 4, 3u)).grid());
+  EXPECT_FALSE(plan_strips(cloud(300, 1.0, 1.0, 5, 3u)).grid());
+  for (bool periodic : {false, true})
+    for (int ranks : {4, 6, 9}) {
+      StripInput in = cloud(600, 1.0, 1.0, ranks, 31u + static_cast<unsigned>(ranks));
+      in.periodic[0] = in.periodic[1] = periodic;
+      in.period[0] = in.period[1] = 1.0;
+      const StripPlan p = plan_strips(in);
+      ASSERT_TRUE(p.grid()) << ranks;
+      EXPECT_EQ(p.cuts[0] * p.cuts[1], ranks);
+      std::vector<int> owned(static_cast<std::size_t>(ranks), 0);
+      for (std::size_t i = 0; i < in.x.size(); ++i)
+        if (in.motion[i] == Motion::Free) ++owned[static_cast<std::size_t>(p.owner[i])];
+      for (int r = 0; r < ranks; ++r) EXPECT_GT(owned[static_cast<std::size_t>(r)], 600 / ranks / 2);
+      auto apart = [&](double d) { return periodic ? std::remainder(d, 1.0) : d; };
+      for (std::size_t i = 0; i < in.x.size(); ++i)
+        for (std::size_t j = 0; j < in.x.size(); ++j) {
+          if (in.motion[i] != Motion::Free || in.motion[j] != Motion::Free) continue;
+          const double d = std::hypot(apart(in.x[i] - in.x[j]), apart(in.y[i] - in.y[j]));
+          if (d > in.radius[i] + in.radius[j] + in.skin) continue;
+          EXPECT_TRUE(holds(p, p.owner[i], static_cast<std::int32_t>(j)))
+              << ranks << " ranks: " << j << " near " << i;
+        }
+    }
 }
 
 // Under Lees-Edwards shear the images across the y boundary slide along x: the strips are
