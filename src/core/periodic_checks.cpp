@@ -39,10 +39,9 @@ double gpu_exact_periodic_length(const Scene& scene, const ParticleModel& model)
 GpuPeriodicLimit gpu_periodic_limit(const Scene& scene, const ParticleModel& model) {
   if (!scene.simulation.periodic.any()) return {};
   const std::string label = scene_label(scene);
-  const std::string cpu_backends =
-      fmt::format("backend = \"{}\", \"{}\" or \"{}\" (auto runs it on the CPU)",
-                  backend_name(Backend::OpenMP), backend_name(Backend::Cpu),
-                  backend_name(Backend::Auto));
+  const std::string cpu_backends = fmt::format(
+      "backend = \"{}\", \"{}\" or \"{}\" (auto runs it on the CPU)", backend_name(Backend::OpenMP),
+      backend_name(Backend::Cpu), backend_name(Backend::Auto));
   const Method method = scene.simulation.method;
   if (method == Method::Decomposition)
     return {fmt::format("{}: [simulation] method = \"{}\" does not find pairs across periodic "

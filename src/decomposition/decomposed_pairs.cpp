@@ -23,8 +23,7 @@ template <class Real>
 template <class Emit>
 void DecomposedPairs<Real>::visit_pairs(std::int32_t i, ParticleRange staged,
                                         const TriangleArrays<Real>& g,
-                                        const physics::PeriodicFrame* periodic,
-                                        Emit&& emit) const {
+                                        const physics::PeriodicFrame* periodic, Emit&& emit) const {
   const EmitterTest<Real> passes(g, i, small_.data(), free_.data(), filter_, periodic);
   auto consider = [&](std::int32_t j) {
     if (passes(j)) emit(j);

@@ -81,10 +81,9 @@ void Decomposition<Real>::update(const DomainInput<Real>& in, bool parallel,
     extent_ = empty_hull<double>();
     for (std::size_t p = 0; p < n_; ++p)
       if (small_[p])
-        extent_ = {std::min<double>(extent_.lo_x, in.lo_x[p]),
-                   std::min<double>(extent_.lo_y, in.lo_y[p]),
-                   std::max<double>(extent_.hi_x, in.hi_x[p]),
-                   std::max<double>(extent_.hi_y, in.hi_y[p])};
+        extent_ = {
+            std::min<double>(extent_.lo_x, in.lo_x[p]), std::min<double>(extent_.lo_y, in.lo_y[p]),
+            std::max<double>(extent_.hi_x, in.hi_x[p]), std::max<double>(extent_.hi_y, in.hi_y[p])};
   }
   if (started_) compute_cells(in);
   else initial_partition(in);
@@ -289,7 +288,8 @@ double image_margin(const physics::PeriodicFrame& f, double a, double b, double 
 }  // namespace
 
 template <class Real>
-void Decomposition<Real>::stage_images(const Hull<Real>& h, std::vector<std::int32_t>& staged) const {
+void Decomposition<Real>::stage_images(const Hull<Real>& h,
+                                       std::vector<std::int32_t>& staged) const {
   const double tol = image_margin(frame_, h.lo_x, h.lo_y, h.hi_x, h.hi_y);
   const double lo_x = h.lo_x - tol, lo_y = h.lo_y - tol, hi_x = h.hi_x + tol, hi_y = h.hi_y + tol;
   const DomainMap m = map();
@@ -297,12 +297,11 @@ void Decomposition<Real>::stage_images(const Hull<Real>& h, std::vector<std::int
     // The particles whose boxes moved by (sx, sy) reach the hull: those whose boxes reach
     // the hull moved back. Their centroids lie within a cell of it (kReachCells).
     const double rlo_x = lo_x - sx, rhi_x = hi_x - sx, rlo_y = lo_y - sy, rhi_y = hi_y - sy;
-    const int r_end =
-        m.row_of(decomposition_cell(rhi_y, origin_y_, cell_) + kReachCells);
+    const int r_end = m.row_of(decomposition_cell(rhi_y, origin_y_, cell_) + kReachCells);
     const std::int64_t c_lo = decomposition_cell(rlo_x, origin_x_, cell_) - kReachCells;
     const std::int64_t c_hi = decomposition_cell(rhi_x, origin_x_, cell_) + kReachCells;
-    for (int rr = m.row_of(decomposition_cell(rlo_y, origin_y_, cell_) - kReachCells);
-         rr <= r_end; ++rr) {
+    for (int rr = m.row_of(decomposition_cell(rlo_y, origin_y_, cell_) - kReachCells); rr <= r_end;
+         ++rr) {
       const int q_end = m.in_row(rr, c_hi);
       for (int q = m.in_row(rr, c_lo); q <= q_end; ++q)
         for (auto o = owned_offset_[q]; o < owned_offset_[q + 1]; ++o) {
@@ -332,7 +331,8 @@ void Decomposition<Real>::add_image_bands(Real y_lo, Real y_hi, const DomainInpu
                      return;
                    }
                    for (std::size_t p = 0; p < n_; ++p)
-                     if (small_[p] && in.lo_y[p] + sy <= y_hi + tol && in.hi_y[p] + sy >= y_lo - tol)
+                     if (small_[p] && in.lo_y[p] + sy <= y_hi + tol &&
+                         in.hi_y[p] + sy >= y_lo - tol)
                        add(in.lo_x[p], in.hi_x[p]);
                  });
 }

@@ -792,8 +792,8 @@ std::string MpiSolver<Real>::description() const {
                    : fmt::format("strips along {}", plan_.axis == 0 ? "x" : "y");
   return fmt::format("{} ranks of {}; {}, ghosts by MPI_Alltoallv {} ({}; {}), "
                      "first exchange {:.3g} GB/s per rank",
-                     ranks_, local_->solver().description(), domains,
-                     local_->transport(), library_, ranks_on, bandwidth_ / 1e9);
+                     ranks_, local_->solver().description(), domains, local_->transport(), library_,
+                     ranks_on, bandwidth_ / 1e9);
 }
 
 template <class Real>

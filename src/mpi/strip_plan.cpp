@@ -88,9 +88,8 @@ StripPlan plan_strips(const StripInput& in) {
     }
   };
   std::vector<std::vector<std::int32_t>> columns(static_cast<std::size_t>(plan.cuts[0]));
-  cut(free, 0, plan.cuts[0], [&](std::int32_t i, int k) {
-    columns[static_cast<std::size_t>(k)].push_back(i);
-  });
+  cut(free, 0, plan.cuts[0],
+      [&](std::int32_t i, int k) { columns[static_cast<std::size_t>(k)].push_back(i); });
   for (int col = 0; col < plan.cuts[0]; ++col)
     cut(columns[static_cast<std::size_t>(col)], 1, plan.cuts[1], [&](std::int32_t i, int row) {
       const int r = col * plan.cuts[1] + row;

@@ -46,7 +46,7 @@ struct StripInput {
 };
 
 struct StripPlan {
-  int axis = 0;       ///< strips: 0 across x (cut at x = const), 1 across y; a grid: 0
+  int axis = 0;          ///< strips: 0 across x (cut at x = const), 1 across y; a grid: 0
   int cuts[2] = {1, 1};  ///< domains along x and along y (their product is N)
   double margin = 0;  ///< 2 R + skin
   /// Per particle: its rank; -1 for a wall that emits nothing (rank 0 reports it).

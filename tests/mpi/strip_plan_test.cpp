@@ -146,7 +146,8 @@ TEST(MpiStripPlan, AlongAPeriodicAxisTheStripsFormARing) {
     const StripPlan open = plan_strips(in);
     std::size_t fewer = 0;
     for (int r = 0; r < ranks; ++r)
-      fewer += p.held[static_cast<std::size_t>(r)].size() - open.held[static_cast<std::size_t>(r)].size();
+      fewer += p.held[static_cast<std::size_t>(r)].size() -
+               open.held[static_cast<std::size_t>(r)].size();
     EXPECT_GT(fewer, 0u);
   }
 }
@@ -169,7 +170,8 @@ TEST(MpiStripPlan, ASquareExtentIsCutIntoAGrid) {
       std::vector<int> owned(static_cast<std::size_t>(ranks), 0);
       for (std::size_t i = 0; i < in.x.size(); ++i)
         if (in.motion[i] == Motion::Free) ++owned[static_cast<std::size_t>(p.owner[i])];
-      for (int r = 0; r < ranks; ++r) EXPECT_GT(owned[static_cast<std::size_t>(r)], 600 / ranks / 2);
+      for (int r = 0; r < ranks; ++r)
+        EXPECT_GT(owned[static_cast<std::size_t>(r)], 600 / ranks / 2);
       auto apart = [&](double d) { return periodic ? std::remainder(d, 1.0) : d; };
       for (std::size_t i = 0; i < in.x.size(); ++i)
         for (std::size_t j = 0; j < in.x.size(); ++j) {

@@ -76,9 +76,10 @@ TEST(DecompositionParity, ExampleScenesReproduceGridBitForBit) {
 // the boundaries stage the images of the particles across them: the grid's pairs, bit for
 // bit, with contacts through the boundaries, in strips and in rows and columns.
 TEST(DecompositionParity, PeriodicCellsReproduceGridBitForBit) {
-  const std::pair<const char*, Scene> cases[] = {{"periodic pile", test::periodic_pile(12, 6)},
-                                                 {"periodic gas", test::periodic_gas(10, 0.1, 0.49)},
-                                                 {"dense sheared gas", test::dense_sheared_gas(10)}};
+  const std::pair<const char*, Scene> cases[] = {
+      {"periodic pile", test::periodic_pile(12, 6)},
+      {"periodic gas", test::periodic_gas(10, 0.1, 0.49)},
+      {"dense sheared gas", test::dense_sheared_gas(10)}};
   for (const auto& [name, scene] : cases)
     for (const auto layout : {DecompositionLayout::Strips, DecompositionLayout::Grid}) {
       const Scene s = test::with_decomposition(scene, layout, 40);
@@ -94,7 +95,8 @@ TEST(DecompositionParity, PeriodicCellsReproduceGridBitForBit) {
 }
 
 TEST(DecompositionParity, PeriodicFloatAndOpenMPReproduceTheirGrids) {
-  const Scene s = test::with_decomposition(test::dense_sheared_gas(10), DecompositionLayout::Grid, 40);
+  const Scene s =
+      test::with_decomposition(test::dense_sheared_gas(10), DecompositionLayout::Grid, 40);
   test::expect_identical(run(s, Backend::Cpu, Method::Grid, 300, Precision::Float).snap,
                          run(s, Backend::Cpu, Method::Decomposition, 300, Precision::Float).snap);
   const int saved = omp_get_max_threads();
