@@ -52,6 +52,15 @@ class RankSolver {
   /// receive_buffer() into the received particles' State, and what follows from it (a GPU
   /// rank's geometry of the new state).
   virtual void unpack() = 0;
+  /// Bodies of several triangles (CPU ranks only; GPU ranks are not given bodies): the
+  /// local bodies whose State leaves this rank at each exchange and those whose State
+  /// arrives, in buffer order, and their buffers, kBodyStateArrays doubles per body; pack
+  /// and unpack carry them with the particles'.
+  static constexpr int kBodyStateArrays = 6;
+  virtual void set_body_plan(const std::vector<std::int32_t>& send,
+                             const std::vector<std::int32_t>& receive) = 0;
+  virtual double* body_send_buffer() = 0;
+  virtual double* body_receive_buffer() = 0;
   /// Whether an owned particle has moved more than `limit` since set_plan, or is not finite.
   virtual bool drifted(double limit) const = 0;
 

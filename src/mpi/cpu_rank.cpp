@@ -16,7 +16,24 @@ void for_each_state_array(Storage& s, F&& f) {
   });
 }
 
+/// Calls f(array) for each State array of a solver's bodies (body_x, ..., body_w).
+template <class Storage, class F>
+void for_each_body_state_array(Storage& s, F&& f) {
+  for_each_body_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::State) f(s.column(field));
+  });
+}
+
 }  // namespace
+
+template <class Real>
+void CpuRank<Real>::set_body_plan(const std::vector<std::int32_t>& send,
+                                  const std::vector<std::int32_t>& receive) {
+  body_send_ = send;
+  body_receive_ = receive;
+  body_send_buf_.assign(RankSolver<Real>::kBodyStateArrays * send.size(), 0.0);
+  body_receive_buf_.assign(RankSolver<Real>::kBodyStateArrays * receive.size(), 0.0);
+}
 
 template <class Real>
 void CpuRank<Real>::set_plan(const std::vector<std::int32_t>& send,
@@ -45,6 +62,11 @@ void CpuRank<Real>::pack() {
     for_each_state_array(solver_, [&](const std::vector<double>& v) {
       send_buf_[at++] = v[static_cast<std::size_t>(i)];
     });
+  at = 0;
+  for (std::int32_t b : body_send_)
+    for_each_body_state_array(solver_, [&](const std::vector<double>& v) {
+      body_send_buf_[at++] = v[static_cast<std::size_t>(b)];
+    });
 }
 
 template <class Real>
@@ -53,6 +75,11 @@ void CpuRank<Real>::unpack() {
   for (std::int32_t i : receive_)
     for_each_state_array(solver_, [&](std::vector<double>& v) {
       v[static_cast<std::size_t>(i)] = receive_buf_[at++];
+    });
+  at = 0;
+  for (std::int32_t b : body_receive_)
+    for_each_body_state_array(solver_, [&](std::vector<double>& v) {
+      v[static_cast<std::size_t>(b)] = body_receive_buf_[at++];
     });
 }
 

@@ -24,6 +24,10 @@ class CpuRank final : public RankSolver<Real> {
                 const std::vector<std::int32_t>& own) override;
   double* send_buffer() override { return send_buf_.data(); }
   double* receive_buffer() override { return receive_buf_.data(); }
+  void set_body_plan(const std::vector<std::int32_t>& send,
+                     const std::vector<std::int32_t>& receive) override;
+  double* body_send_buffer() override { return body_send_buf_.data(); }
+  double* body_receive_buffer() override { return body_receive_buf_.data(); }
   void pack() override;
   void unpack() override;
   bool drifted(double limit) const override;
@@ -40,6 +44,8 @@ class CpuRank final : public RankSolver<Real> {
   PeriodicCell cell_;  ///< a wrap is not a drift: moves are taken through the boundary
   std::vector<std::int32_t> send_, receive_, own_;
   std::vector<double> send_buf_, receive_buf_;
+  std::vector<std::int32_t> body_send_, body_receive_;
+  std::vector<double> body_send_buf_, body_receive_buf_;
   std::vector<double> ref_x_, ref_y_;  ///< own particles' centroids at the plan (own_ order)
 };
 

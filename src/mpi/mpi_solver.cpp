@@ -3,6 +3,7 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "core/particle_columns.hpp"
 #include "mpi/agreement.hpp"
+#include "physics/rigid_body.hpp"
 #include "mpi/cpu_rank.hpp"
 #include "mpi/device_choice.hpp"
 #include "tridem/error.hpp"
@@ -41,7 +42,7 @@ ParticleModel slice(const ParticleModel& m, const std::vector<std::int32_t>& ids
   take(out.program, m.program);
   out.programs = m.programs;
   out.program_knots = m.program_knots;
-  return out;  // bodies of several triangles are refused on more than one rank
+  return out;  // the bodies: slice_bodies
 }
 
 /// Every rank's `mine`, one after the other in rank order: on every rank (`all`) or on
@@ -72,6 +73,69 @@ std::vector<double> collect(MPI_Comm comm, const std::vector<double>& mine, bool
 }
 
 std::int32_t as_id(double v) { return static_cast<std::int32_t>(v); }
+
+/// An Alltoallv's counts and displacements (doubles), `per` doubles per item, from the
+/// items sent to and received from each rank, and the items in buffer order.
+struct ExchangeLayout {
+  std::vector<int> send_counts, send_displs, recv_counts, recv_displs;
+  std::vector<std::int32_t> send_all, recv_all;
+};
+
+ExchangeLayout exchange_layout(const std::vector<std::vector<std::int32_t>>& send,
+                               const std::vector<std::vector<std::int32_t>>& recv, int per) {
+  ExchangeLayout l;
+  const std::size_t ranks = send.size();
+  l.send_counts.assign(ranks, 0);
+  l.send_displs.assign(ranks, 0);
+  l.recv_counts.assign(ranks, 0);
+  l.recv_displs.assign(ranks, 0);
+  int sent = 0, received = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    l.send_counts[r] = per * static_cast<int>(send[r].size());
+    l.recv_counts[r] = per * static_cast<int>(recv[r].size());
+    l.send_displs[r] = sent;
+    l.recv_displs[r] = received;
+    sent += l.send_counts[r];
+    received += l.recv_counts[r];
+    l.send_all.insert(l.send_all.end(), send[r].begin(), send[r].end());
+    l.recv_all.insert(l.recv_all.end(), recv[r].begin(), recv[r].end());
+  }
+  return l;
+}
+
+/// The bodies of `m` whose members are `ids` (ascending, each body whole): a rank's
+/// BodyModel, and each local body's global body in `bodies`.
+BodyModel slice_bodies(const BodyModel& m, const std::vector<std::int32_t>& ids,
+                       std::vector<std::int32_t>& bodies) {
+  BodyModel out;
+  bodies.clear();
+  if (m.empty()) return out;
+  out.first.push_back(0);
+  for (std::size_t k = 0; k < ids.size();) {
+    const auto gb = static_cast<std::size_t>(m.body[static_cast<std::size_t>(ids[k])]);
+    const auto count = static_cast<std::size_t>(m.first[gb + 1] - m.first[gb]);
+    if (ids[k] != m.first[gb] || k + count > ids.size() ||
+        ids[k + count - 1] != m.first[gb + 1] - 1)
+      throw RunError(fmt::format("internal error: rank holds body {} in part", gb));
+    const auto lb = static_cast<std::int32_t>(bodies.size());
+    bodies.push_back(static_cast<std::int32_t>(gb));
+    out.centroid.push_back(m.centroid[gb]);
+    out.mass.push_back(m.mass[gb]);
+    out.inertia.push_back(m.inertia[gb]);
+    out.half_size.push_back(m.half_size[gb]);
+    out.motion.push_back(m.motion[gb]);
+    out.velocity.push_back(m.velocity[gb]);
+    out.angular_velocity.push_back(m.angular_velocity[gb]);
+    out.program.push_back(m.program[gb]);
+    for (std::size_t j = 0; j < count; ++j) {
+      out.body.push_back(lb);
+      out.member_offset.push_back(m.member_offset[static_cast<std::size_t>(ids[k + j])]);
+    }
+    k += count;
+    out.first.push_back(static_cast<std::int64_t>(k));
+  }
+  return out;
+}
 
 /// Doubles of a contact record in a gather: i, j, force, point, normal, sliding, depth,
 /// the partner image's translation.
@@ -109,10 +173,30 @@ void sum_wall_loads(std::vector<double>& rows, Out&& out) {
 
 }  // namespace
 
+namespace {
+
+bool moving_wall_body(const BodyModel& m) {
+  for (std::size_t b = 0; b < m.size(); ++b)
+    if (m.motion[b] == Motion::Prescribed && m.first[b + 1] - m.first[b] > 1) return true;
+  return false;
+}
+
+}  // namespace
+
 std::string refusal(const Scene& scene, const ParticleModel& model) {
   const char* what = nullptr;
-  if (!model.bodies.empty())
-    what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\")";
+  if (!model.bodies.empty() && scene.simulation.backend == Backend::Cuda)
+    what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
+           "ranks (backend = \"cuda\")";
+  else if (!model.bodies.empty() &&
+           std::any_of(model.programs.begin(), model.programs.end(),
+                       [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
+    // A body's program reads the body's load, gathered from its members before the
+    // check where the ranks sum a servo's load.
+    what = "servo walls in a scene with bodies of several triangles";
+  else if (moving_wall_body(model.bodies))
+    what = "moving wall bodies of several triangles (their load in bodies.csv is summed "
+           "from their members at the step's start poses)";
   else if (!scene.bonds.empty())
     what = "cohesive bonds (a bonded [[mesh]])";
   else if (scene.simulation.backend == Backend::Cuda &&
@@ -197,6 +281,10 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
       v = initial_column<double>(field, model_, k);
     });
   });
+  if (!model_.bodies.empty())
+    SolverState::for_each_body_column([&](auto field) {
+      whole.column(field) = initial_body_column(field, model_.bodies, model_.bodies.size());
+    });
   decompose(whole);
 }
 
@@ -278,6 +366,10 @@ void MpiSolver<Real>::exchange_ghosts() {
   MPI_Alltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
                 local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
                 comm_);
+  if (!model_.bodies.empty())  // on every rank, even one that holds none
+    MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(),
+                  body_send_displs_.data(), MPI_DOUBLE, local_->body_receive_buffer(),
+                  body_recv_counts_.data(), body_recv_displs_.data(), MPI_DOUBLE, comm_);
   local_->unpack();
 }
 
@@ -309,8 +401,12 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
     if (authority(global_[static_cast<std::size_t>(ls.pair_emitter[p])],
                   global_[static_cast<std::size_t>(ls.pair_partner[p])]) == rank_)
       ++pairs;
+  std::vector<std::size_t> own_bodies;
+  for (std::size_t b = 0; b < global_body_.size(); ++b)
+    if (reports_body(b)) own_bodies.push_back(b);
   mine.push_back(static_cast<double>(own.size()));
   mine.push_back(static_cast<double>(pairs));
+  mine.push_back(static_cast<double>(own_bodies.size()));
   for (std::size_t k : own) {
     mine.push_back(global_[k]);
     SolverState::for_each_field([&](auto field) {
@@ -327,6 +423,10 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
     mine.push_back(j);
     for (double s : ls.pair_slip[p]) mine.push_back(s);
   }
+  for (std::size_t b : own_bodies) {
+    mine.push_back(global_body_[b]);
+    SolverState::for_each_body_column([&](auto field) { mine.push_back(ls.column(field)[b]); });
+  }
   const std::vector<double> all = collect(comm_, mine, true);
 
   out = SolverState{};
@@ -335,13 +435,16 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   SolverState::for_each_field([&](auto field) {
     for_each_array(out.column(field), [&](std::vector<double>& v, int) { v.assign(n_, 0.0); });
   });
+  SolverState::for_each_body_column(
+      [&](auto field) { out.column(field).assign(model_.bodies.size(), 0.0); });
   using Slip = std::decay_t<decltype(out.pair_slip[0])>;
   std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
   std::size_t at = 0;
   while (at < all.size()) {
     const auto particles = static_cast<std::size_t>(all[at]),
-               rank_pairs = static_cast<std::size_t>(all[at + 1]);
-    at += 2;
+               rank_pairs = static_cast<std::size_t>(all[at + 1]),
+               rank_bodies = static_cast<std::size_t>(all[at + 2]);
+    at += 3;
     for (std::size_t q = 0; q < particles; ++q) {
       const auto g = static_cast<std::size_t>(all[at++]);
       SolverState::for_each_field([&](auto field) {
@@ -354,6 +457,10 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
       at += 2;
       for (double& s : slip) s = all[at++];
       history.emplace_back(e, j, slip);
+    }
+    for (std::size_t q = 0; q < rank_bodies; ++q) {
+      const auto gb = static_cast<std::size_t>(all[at++]);
+      SolverState::for_each_body_column([&](auto field) { out.column(field)[gb] = all[at++]; });
     }
   }
   std::sort(history.begin(), history.end(), [](const auto& a, const auto& b) {
@@ -399,6 +506,16 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
       in.period[axis] = range->length();
     }
   in.sheared = cell.shear_rate != 0;
+  // A free body's members go together; a wall body's are walls, held everywhere.
+  const BodyModel& bm = model_.bodies;
+  if (!bm.empty()) {
+    in.unit.resize(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      const auto b = static_cast<std::size_t>(bm.body[i]);
+      in.unit[i] = bm.motion[b] == Motion::Free ? static_cast<std::int32_t>(bm.first[b])
+                                                : static_cast<std::int32_t>(i);
+    }
+  }
   plan_ = plan_strips(in);
   global_ = plan_.held[static_cast<std::size_t>(rank_)];
   local_of_.assign(n_, -1);
@@ -418,7 +535,9 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     local_.reset();  // its GPU memory first
     local_ = make_cuda_rank<Real>(scene_, slice(model_, global_), ts_, config);
   } else {
-    local_ = std::make_unique<CpuRank<Real>>(scene_, slice(model_, global_), ts_, config);
+    ParticleModel local_model = slice(model_, global_);
+    local_model.bodies = slice_bodies(model_.bodies, global_, global_body_);
+    local_ = std::make_unique<CpuRank<Real>>(scene_, local_model, ts_, config);
   }
   local_->solver().set_stage_timing(timing_);
   local_->set_check_hook([this] {
@@ -440,6 +559,13 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
       for (std::size_t q = 0; q < global_.size(); ++q)
         v[q] = from.empty() ? 0.0 : from[static_cast<std::size_t>(global_[q])];
     });
+  });
+  SolverState::for_each_body_column([&](auto field) {
+    const std::vector<double>& from = whole.column(field);
+    std::vector<double>& v = ls.column(field);
+    v.resize(global_body_.size());
+    for (std::size_t b = 0; b < global_body_.size(); ++b)
+      v[b] = from[static_cast<std::size_t>(global_body_[b])];
   });
   // Global ids keep their order in the local numbering: the history stays sorted.
   for (std::size_t p = 0; p < whole.pairs(); ++p) {
@@ -469,24 +595,38 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
       recv[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(k));
     if (owner == rank_) own.push_back(static_cast<std::int32_t>(k));
   }
-  const int per = state_array_count();
-  send_counts_.assign(ranks, 0);
-  send_displs_.assign(ranks, 0);
-  recv_counts_.assign(ranks, 0);
-  recv_displs_.assign(ranks, 0);
-  int sent = 0, received = 0;
-  std::vector<std::int32_t> send_all, recv_all;  // rank by rank: the buffers' order
-  for (std::size_t r = 0; r < ranks; ++r) {
-    send_counts_[r] = per * static_cast<int>(send[r].size());
-    recv_counts_[r] = per * static_cast<int>(recv[r].size());
-    send_displs_[r] = sent;
-    recv_displs_[r] = received;
-    sent += send_counts_[r];
-    received += recv_counts_[r];
-    send_all.insert(send_all.end(), send[r].begin(), send[r].end());
-    recv_all.insert(recv_all.end(), recv[r].begin(), recv[r].end());
-  }
+  ExchangeLayout l = exchange_layout(send, recv, state_array_count());
+  send_counts_ = std::move(l.send_counts);
+  send_displs_ = std::move(l.send_displs);
+  recv_counts_ = std::move(l.recv_counts);
+  recv_displs_ = std::move(l.recv_displs);
+  const std::vector<std::int32_t>& send_all = l.send_all;
+  const std::vector<std::int32_t>& recv_all = l.recv_all;
   local_->set_plan(send_all, recv_all, own);
+  // A free body's State goes with its members: from the owner of its first member to the
+  // ranks that hold it.
+  std::vector<std::vector<std::int32_t>> body_send(ranks), body_recv(ranks);
+  for (std::size_t lb = 0; lb < global_body_.size(); ++lb) {
+    const auto gb = static_cast<std::size_t>(global_body_[lb]);
+    if (bm.motion[gb] != Motion::Free) continue;
+    const auto head = static_cast<std::int32_t>(bm.first[gb]);
+    const int owner = plan_.owner[static_cast<std::size_t>(head)];
+    if (owner != rank_) {
+      body_recv[static_cast<std::size_t>(owner)].push_back(static_cast<std::int32_t>(lb));
+      continue;
+    }
+    for (std::size_t r = 0; r < ranks; ++r) {
+      const auto& h = plan_.held[r];
+      if (static_cast<int>(r) != rank_ && std::binary_search(h.begin(), h.end(), head))
+        body_send[r].push_back(static_cast<std::int32_t>(lb));
+    }
+  }
+  ExchangeLayout b = exchange_layout(body_send, body_recv, RankSolver<Real>::kBodyStateArrays);
+  body_send_counts_ = std::move(b.send_counts);
+  body_send_displs_ = std::move(b.send_displs);
+  body_recv_counts_ = std::move(b.recv_counts);
+  body_recv_displs_ = std::move(b.recv_displs);
+  local_->set_body_plan(b.send_all, b.recv_all);
   ++plans_;
 }
 
@@ -519,11 +659,19 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     contacts.insert(contacts.end(), {double(gi), double(gj), c.fx, c.fy, c.px, c.py, c.nx, c.ny,
                                      c.sliding ? 1.0 : 0.0, c.depth, c.image_dx, c.image_dy});
   }
+  std::vector<double> body_rows;
+  for (std::size_t b = 0; b < global_body_.size(); ++b) {
+    if (!reports_body(b)) continue;
+    body_rows.push_back(global_body_[b]);
+    Snapshot::for_each_body_column([&](auto field) { body_rows.push_back(ls.column(field)[b]); });
+  }
   std::vector<double> mine;
   mine.push_back(static_cast<double>(rows.size()));
   mine.push_back(static_cast<double>(loads.size()));
   mine.push_back(static_cast<double>(contacts.size()));
-  for (const auto* v : {&rows, &loads, &contacts}) mine.insert(mine.end(), v->begin(), v->end());
+  mine.push_back(static_cast<double>(body_rows.size()));
+  for (const auto* v : {&rows, &loads, &contacts, &body_rows})
+    mine.insert(mine.end(), v->begin(), v->end());
   const std::vector<double> all = collect(comm_, mine, false);
   if (rank_ != 0 || !out) return;
 
@@ -531,7 +679,21 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   s.step = ls.step;
   s.time = ls.time;
   s.resize(n_);
-  s.resize_bodies(0);
+  s.resize_bodies(model_.bodies.size());
+  if (!model_.bodies.empty()) {
+    // What the snapshot derives from the bodies' model, as snapshot_fill does.
+    const BodyModel& m = model_.bodies;
+    const std::size_t nb = m.size();
+    s.member_body = m.body;
+    const auto inv_mass = initial_body_column(body_field::body_inv_mass{}, m, nb);
+    const auto inv_inertia = initial_body_column(body_field::body_inv_inertia{}, m, nb);
+    for (std::size_t b = 0; b < nb; ++b) {
+      s.body_mass[b] = inv_mass[b] > 0 ? 1.0 / inv_mass[b] : 0.0;
+      s.body_inertia[b] = inv_inertia[b] > 0 ? 1.0 / inv_inertia[b] : 0.0;
+      s.body_first[b] = m.first[b];
+    }
+    s.body_first[nb] = m.first[nb];
+  }
   s.contacts.clear();
   for (auto* v : {&s.bond_a, &s.bond_b}) v->clear();
   s.bond_damage.clear();
@@ -541,8 +703,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   std::size_t at = 0;
   while (at < all.size()) {
     const auto nr = static_cast<std::size_t>(all[at]), nl = static_cast<std::size_t>(all[at + 1]),
-               nc = static_cast<std::size_t>(all[at + 2]);
-    at += 3;
+               nc = static_cast<std::size_t>(all[at + 2]), nb = static_cast<std::size_t>(all[at + 3]);
+    at += 4;
     for (const std::size_t end = at + nr; at < end;) {
       const auto g = static_cast<std::size_t>(all[at++]);
       Snapshot::for_each_field([&](auto field) {
@@ -572,6 +734,10 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
       c.image_dy = all[at + 11];
       s.contacts.push_back(c);
     }
+    for (const std::size_t end = at + nb; at < end;) {
+      const auto gb = static_cast<std::size_t>(all[at++]);
+      Snapshot::for_each_body_column([&](auto field) { s.column(field)[gb] = all[at++]; });
+    }
   }
   std::sort(s.contacts.begin(), s.contacts.end(),
             [](const ContactRecord& a, const ContactRecord& b) {
@@ -586,6 +752,22 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     s.fy[static_cast<std::size_t>(w)] = static_cast<double>(f.y);
     s.torque[static_cast<std::size_t>(w)] = static_cast<double>(t);
   });
+  // A wall body's load from its members', as gather_bodies sums it (its members' arms at
+  // the step's start: the poses now for a wall body that does not move, refusal() keeps
+  // the others to one member, whose arm is zero).
+  const BodyModel& bm = model_.bodies;
+  for (std::size_t b = 0; b < bm.size(); ++b) {
+    if (bm.motion[b] == Motion::Free) continue;
+    Vec2d f{};
+    double t = 0;
+    for (auto i = static_cast<std::size_t>(bm.first[b]); i < static_cast<std::size_t>(bm.first[b + 1]); ++i)
+      physics::add_member_load(
+          f, t, Vec2<Real>{static_cast<Real>(s.fx[i]), static_cast<Real>(s.fy[i])},
+          static_cast<Real>(s.torque[i]), Vec2d{s.x[i] - s.body_x[b], s.y[i] - s.body_y[b]});
+    s.body_fx[b] = f.x;
+    s.body_fy[b] = f.y;
+    s.body_torque[b] = t;
+  }
 }
 
 template <class Real>
@@ -692,7 +874,7 @@ EnergyBudget MpiSolver<Real>::energy() const {
 
 template <class Real>
 void MpiSolver<Real>::load_state(const SolverState& in) {
-  validate_solver_state(in, n_, 0, description());
+  validate_solver_state(in, n_, model_.bodies.size(), description());
   order(kLoad, 0);
   SolverState whole = in;
   broadcast_state(whole);
@@ -717,6 +899,10 @@ void MpiSolver<Real>::broadcast_state(SolverState& s) const {
       data.push_back(s.pair_partner[p]);
       for (double v : s.pair_slip[p]) data.push_back(v);
     }
+    SolverState::for_each_body_column([&](auto field) {
+      const std::vector<double>& v = s.column(field);
+      data.insert(data.end(), v.begin(), v.end());
+    });
   }
   long long size = static_cast<long long>(data.size());
   MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm_);
@@ -742,6 +928,12 @@ void MpiSolver<Real>::broadcast_state(SolverState& s) const {
     for (double& v : slip) v = data[at++];
     s.pair_slip.push_back(slip);
   }
+  const std::size_t bodies = model_.bodies.size();
+  SolverState::for_each_body_column([&](auto field) {
+    s.column(field).assign(data.begin() + static_cast<std::ptrdiff_t>(at),
+                           data.begin() + static_cast<std::ptrdiff_t>(at + bodies));
+    at += bodies;
+  });
 }
 
 template <class Real>

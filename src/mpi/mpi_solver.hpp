@@ -95,6 +95,11 @@ class MpiSolver final : public Solver {
   /// From the check hook: each servo wall's load of this step summed across ranks as one
   /// solver sums it, written into the local solver before its programs read it.
   void sum_servo_loads();
+  /// Whether this rank reports local body b (state, snapshot row): as its first member.
+  bool reports_body(std::size_t b) const {
+    return reports(static_cast<std::int32_t>(
+        model_.bodies.first[static_cast<std::size_t>(global_body_[b])]));
+  }
   std::string global_ids(const std::string& message) const;
   void measure_bandwidth();
   /// f(emitter, partner, result) for each pair of the local solver's last step, by global
@@ -134,6 +139,10 @@ class MpiSolver final : public Solver {
   // Ghost exchange, sized at each plan: the counts and displacements of each rank's part
   // of the local solver's buffers (RankSolver::set_plan).
   std::vector<int> send_counts_, send_displs_, recv_counts_, recv_displs_;
+  // Bodies of several triangles (CPU ranks): each local body's global body, and the body
+  // exchange's layout, as the particles'.
+  std::vector<std::int32_t> global_body_;
+  std::vector<int> body_send_counts_, body_send_displs_, body_recv_counts_, body_recv_displs_;
 
   StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
   std::int64_t plans_ = 0;

@@ -68,6 +68,18 @@ StripPlan plan_strips(const StripInput& in) {
   plan.margin = 2 * radius + in.skin;
   const std::vector<double>* coord[2] = {&in.x, &in.y};
 
+  // A body's members go with its first member (its head): only heads are cut, each
+  // weighing its members' weights together.
+  auto head = [&](std::size_t i) {
+    return in.unit.empty() ? static_cast<std::int32_t>(i) : in.unit[i];
+  };
+  std::vector<double> weight(n, 0.0);
+  for (const std::int32_t i : free)
+    weight[static_cast<std::size_t>(head(static_cast<std::size_t>(i)))] += 1.0 + in.contacts[i];
+  std::vector<std::int32_t> heads;
+  for (const std::int32_t i : free)
+    if (head(static_cast<std::size_t>(i)) == i) heads.push_back(i);
+
   // Cuts `ids` (any order) along `axis` into `parts` runs of about equal weight (ties by
   // id): part(i, k) for each. A particle's part is that of the middle of its weight, so
   // that a heavy particle goes where most of it lies.
@@ -76,11 +88,11 @@ StripPlan plan_strips(const StripInput& in) {
     std::stable_sort(ids.begin(), ids.end(),
                      [&](std::int32_t a, std::int32_t b) { return c[a] < c[b]; });
     double total = 0;
-    for (std::int32_t i : ids) total += 1.0 + in.contacts[i];
+    for (std::int32_t i : ids) total += weight[static_cast<std::size_t>(i)];
     if (total <= 0) total = 1;
     double running = 0;
     for (std::int32_t i : ids) {
-      const double w = 1.0 + in.contacts[i];
+      const double w = weight[static_cast<std::size_t>(i)];
       const int k = std::min(
           parts - 1, static_cast<int>((running + 0.5 * w) / total * static_cast<double>(parts)));
       running += w;
@@ -88,19 +100,21 @@ StripPlan plan_strips(const StripInput& in) {
     }
   };
   std::vector<std::vector<std::int32_t>> columns(static_cast<std::size_t>(plan.cuts[0]));
-  cut(free, 0, plan.cuts[0],
+  cut(heads, 0, plan.cuts[0],
       [&](std::int32_t i, int k) { columns[static_cast<std::size_t>(k)].push_back(i); });
   for (int col = 0; col < plan.cuts[0]; ++col)
-    cut(columns[static_cast<std::size_t>(col)], 1, plan.cuts[1], [&](std::int32_t i, int row) {
-      const int r = col * plan.cuts[1] + row;
-      plan.owner[i] = r;
-      for (int a = 0; a < 2; ++a) {
-        plan.lo[static_cast<std::size_t>(r)][a] =
-            std::min(plan.lo[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
-        plan.hi[static_cast<std::size_t>(r)][a] =
-            std::max(plan.hi[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
-      }
-    });
+    cut(columns[static_cast<std::size_t>(col)], 1, plan.cuts[1],
+        [&](std::int32_t i, int row) { plan.owner[i] = col * plan.cuts[1] + row; });
+  for (const std::int32_t i : free) {
+    const int r = plan.owner[static_cast<std::size_t>(head(static_cast<std::size_t>(i)))];
+    plan.owner[i] = r;
+    for (int a = 0; a < 2; ++a) {
+      plan.lo[static_cast<std::size_t>(r)][a] =
+          std::min(plan.lo[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
+      plan.hi[static_cast<std::size_t>(r)][a] =
+          std::max(plan.hi[static_cast<std::size_t>(r)][a], (*coord[a])[i]);
+    }
+  }
 
   for (std::size_t r = 0; r < ranks; ++r) {
     std::vector<std::int32_t>& held = plan.held[r];
@@ -115,13 +129,19 @@ StripPlan plan_strips(const StripInput& in) {
       return within(v) ||
              (in.periodic[a] && (within(v - in.period[a]) || within(v + in.period[a])));
     };
+    // A body is held whole where any of its members is: its members follow its pose.
+    std::vector<std::uint8_t> hold(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
       const auto id = static_cast<std::int32_t>(i);
       const bool wall = in.motion[i] != Motion::Free;
       const bool own = plan.owner[i] == static_cast<int>(r);
       const bool near = lo[0] <= hi[0] && near_along(0, in.x[i]) && near_along(1, in.y[i]);
-      if (wall || own || near || id == plan.cell_setter) held.push_back(id);
+      if (wall || own || near || id == plan.cell_setter)
+        hold[static_cast<std::size_t>(head(i))] = hold[i] = 1;
     }
+    for (std::size_t i = 0; i < n; ++i)
+      if (hold[i] || hold[static_cast<std::size_t>(head(i))])
+        held.push_back(static_cast<std::int32_t>(i));
   }
   return plan;
 }

@@ -37,6 +37,11 @@ struct StripInput {
   std::vector<double> radius;  ///< farthest vertex from the centroid
   std::vector<double> longest_edge;
   std::vector<std::int32_t> contacts;  ///< pairs with history, per particle
+  /// Bodies of several triangles: per particle, the first member of its body (itself for
+  /// a lone triangle); empty when there are none. A body's members are consecutive ids;
+  /// they are owned together (by the rank of the first member's centroid) and held
+  /// together (all of them where any of them is).
+  std::vector<std::int32_t> unit;
   int ranks = 1;
   double skin = 0;
   /// Periodic axes (x, y) and their periods; `sheared`: Lees-Edwards (both periodic).

@@ -44,5 +44,29 @@ TEST(MpiRefusal, CudaIsNoLongerRefusedOnRanks) {
   EXPECT_NE(refusal(scene, model).find("all-pairs"), std::string::npos);
 }
 
+// Bodies on CPU ranks: a servo (its body's load is gathered before the ranks sum it) and a
+// moving wall body of several triangles (bodies.csv sums its load from its members' start
+// poses) are refused; a fixed wall body of several triangles is not.
+TEST(MpiRefusal, WhatBodiesOnCpuRanksCannotDo) {
+  Scene scene;
+  scene.source = "grains.toml";
+  ParticleModel model;
+  BodyModel& b = model.bodies;
+  b.first = {0, 3, 4};
+  b.centroid.resize(2);
+  b.motion = {Motion::Fixed, Motion::Free};
+  EXPECT_EQ(refusal(scene, model), "");
+  b.motion[0] = Motion::Prescribed;
+  EXPECT_NE(refusal(scene, model).find("moving wall bodies"), std::string::npos);
+  b.motion[0] = Motion::Fixed;
+  MotionProgram servo;
+  servo.kind = ProgramKind::Servo;
+  model.programs.push_back(servo);
+  EXPECT_NE(refusal(scene, model).find("servo walls in a scene with bodies"), std::string::npos);
+  model.programs.clear();
+  scene.simulation.backend = Backend::Cuda;
+  EXPECT_NE(refusal(scene, model).find("on GPU ranks"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tridem::mpi

@@ -180,6 +180,15 @@ class CudaRank final : public RankSolver<Real> {
           result[static_cast<std::size_t>(s)]);
   }
 
+  // Bodies of several triangles are refused on GPU ranks (mpi/mpi_solver.cpp, refusal).
+  void set_body_plan(const std::vector<std::int32_t>& send,
+                     const std::vector<std::int32_t>& receive) override {
+    if (!send.empty() || !receive.empty())
+      throw RunError("internal error: a GPU rank was given bodies to exchange");
+  }
+  double* body_send_buffer() override { return nullptr; }
+  double* body_receive_buffer() override { return nullptr; }
+
   // Servo walls are refused on GPU ranks (mpi/mpi_solver.cpp, refusal): their loads are
   // summed across CPU ranks only, so nothing calls these.
   void for_each_step_pair(const typename RankSolver<Real>::PairVisitor&) const override {
