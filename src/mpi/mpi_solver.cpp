@@ -197,8 +197,8 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
   else if (moving_wall_body(model.bodies))
     what = "moving wall bodies of several triangles (their load in bodies.csv is summed "
            "from their members at the step's start poses)";
-  else if (!scene.bonds.empty())
-    what = "cohesive bonds (a bonded [[mesh]])";
+  else if (!scene.bonds.empty() && scene.simulation.backend == Backend::Cuda)
+    what = "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
   else if (scene.simulation.backend == Backend::Cuda &&
            std::any_of(model.programs.begin(), model.programs.end(),
                        [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
@@ -259,6 +259,12 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   }
   // A skin of one particle radius: the plan lasts until something moves half of it.
   skin_ = largest;
+  // What a CPU rank's solver reads of the scene: its settings and materials, and its own
+  // bonds (build_local); not the scene's triangles.
+  rank_scene_ = scene_;
+  rank_scene_.triangles.clear();
+  rank_scene_.triangles.shrink_to_fit();
+  rank_scene_.bonds.clear();
   for (std::size_t i = 0; i < n_; ++i) {
     const std::int32_t k = model_.program[i];
     if (k >= 0 && model_.programs[static_cast<std::size_t>(k)].kind == ProgramKind::Servo) {
@@ -285,6 +291,9 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
     SolverState::for_each_body_column([&](auto field) {
       whole.column(field) = initial_body_column(field, model_.bodies, model_.bodies.size());
     });
+  // Bonds start intact, having released nothing.
+  whole.bond_damage.assign(SolverState::kBondStatePoints * scene_.bonds.size(), 0.0);
+  whole.bond_dissipated.assign(scene_.bonds.size(), 0.0);
   decompose(whole);
 }
 
@@ -404,9 +413,13 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   std::vector<std::size_t> own_bodies;
   for (std::size_t b = 0; b < global_body_.size(); ++b)
     if (reports_body(b)) own_bodies.push_back(b);
+  std::vector<std::size_t> own_bonds;
+  for (std::size_t k = 0; k < global_bond_.size(); ++k)
+    if (reports_bond(static_cast<std::size_t>(global_bond_[k]))) own_bonds.push_back(k);
   mine.push_back(static_cast<double>(own.size()));
   mine.push_back(static_cast<double>(pairs));
   mine.push_back(static_cast<double>(own_bodies.size()));
+  mine.push_back(static_cast<double>(own_bonds.size()));
   for (std::size_t k : own) {
     mine.push_back(global_[k]);
     SolverState::for_each_field([&](auto field) {
@@ -427,6 +440,12 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
     mine.push_back(global_body_[b]);
     SolverState::for_each_body_column([&](auto field) { mine.push_back(ls.column(field)[b]); });
   }
+  constexpr std::size_t kPoints = SolverState::kBondStatePoints;
+  for (std::size_t k : own_bonds) {
+    mine.push_back(global_bond_[k]);
+    for (std::size_t q = 0; q < kPoints; ++q) mine.push_back(ls.bond_damage[kPoints * k + q]);
+    mine.push_back(ls.bond_dissipated[k]);
+  }
   const std::vector<double> all = collect(comm_, mine, true);
 
   out = SolverState{};
@@ -437,14 +456,17 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   });
   SolverState::for_each_body_column(
       [&](auto field) { out.column(field).assign(model_.bodies.size(), 0.0); });
+  out.bond_damage.assign(kPoints * scene_.bonds.size(), 0.0);
+  out.bond_dissipated.assign(scene_.bonds.size(), 0.0);
   using Slip = std::decay_t<decltype(out.pair_slip[0])>;
   std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
   std::size_t at = 0;
   while (at < all.size()) {
     const auto particles = static_cast<std::size_t>(all[at]),
                rank_pairs = static_cast<std::size_t>(all[at + 1]),
-               rank_bodies = static_cast<std::size_t>(all[at + 2]);
-    at += 3;
+               rank_bodies = static_cast<std::size_t>(all[at + 2]),
+               rank_bonds = static_cast<std::size_t>(all[at + 3]);
+    at += 4;
     for (std::size_t q = 0; q < particles; ++q) {
       const auto g = static_cast<std::size_t>(all[at++]);
       SolverState::for_each_field([&](auto field) {
@@ -461,6 +483,11 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
     for (std::size_t q = 0; q < rank_bodies; ++q) {
       const auto gb = static_cast<std::size_t>(all[at++]);
       SolverState::for_each_body_column([&](auto field) { out.column(field)[gb] = all[at++]; });
+    }
+    for (std::size_t q = 0; q < rank_bonds; ++q) {
+      const auto gk = static_cast<std::size_t>(all[at++]);
+      for (std::size_t p = 0; p < kPoints; ++p) out.bond_damage[kPoints * gk + p] = all[at++];
+      out.bond_dissipated[gk] = all[at++];
     }
   }
   std::sort(history.begin(), history.end(), [](const auto& a, const auto& b) {
@@ -506,6 +533,8 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
       in.period[axis] = range->length();
     }
   in.sheared = cell.shear_rate != 0;
+  for (const BondSpec& b : scene_.bonds)
+    in.bonds.push_back({static_cast<std::int32_t>(b.a), static_cast<std::int32_t>(b.b)});
   // A free body's members go together; a wall body's are walls, held everywhere.
   const BodyModel& bm = model_.bodies;
   if (!bm.empty()) {
@@ -537,7 +566,19 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
   } else {
     ParticleModel local_model = slice(model_, global_);
     local_model.bodies = slice_bodies(model_.bodies, global_, global_body_);
-    local_ = std::make_unique<CpuRank<Real>>(scene_, local_model, ts_, config);
+    // The bonds between particles this rank holds, in the scene's order.
+    rank_scene_.bonds.clear();
+    global_bond_.clear();
+    for (std::size_t k = 0; k < scene_.bonds.size(); ++k) {
+      BondSpec b = scene_.bonds[k];
+      const std::int32_t la = local_of_[b.a], lb = local_of_[b.b];
+      if (la < 0 || lb < 0) continue;
+      b.a = static_cast<std::size_t>(la);
+      b.b = static_cast<std::size_t>(lb);
+      rank_scene_.bonds.push_back(b);
+      global_bond_.push_back(static_cast<std::int32_t>(k));
+    }
+    local_ = std::make_unique<CpuRank<Real>>(rank_scene_, local_model, ts_, config);
   }
   local_->solver().set_stage_timing(timing_);
   local_->set_check_hook([this] {
@@ -567,6 +608,15 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     for (std::size_t b = 0; b < global_body_.size(); ++b)
       v[b] = from[static_cast<std::size_t>(global_body_[b])];
   });
+  if (!whole.bond_dissipated.empty()) {
+    constexpr std::size_t kPoints = SolverState::kBondStatePoints;
+    for (const std::int32_t gk : global_bond_) {
+      const auto k = static_cast<std::size_t>(gk);
+      ls.bond_damage.insert(ls.bond_damage.end(), whole.bond_damage.begin() + kPoints * k,
+                            whole.bond_damage.begin() + kPoints * (k + 1));
+      ls.bond_dissipated.push_back(whole.bond_dissipated[k]);
+    }
+  }
   // Global ids keep their order in the local numbering: the history stays sorted.
   for (std::size_t p = 0; p < whole.pairs(); ++p) {
     const std::int32_t e = local_of_[static_cast<std::size_t>(whole.pair_emitter[p])];
@@ -659,6 +709,13 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     contacts.insert(contacts.end(), {double(gi), double(gj), c.fx, c.fy, c.px, c.py, c.nx, c.ny,
                                      c.sliding ? 1.0 : 0.0, c.depth, c.image_dx, c.image_dy});
   }
+  std::vector<double> bond_rows;
+  for (std::size_t k = 0; k < global_bond_.size(); ++k) {
+    if (!reports_bond(static_cast<std::size_t>(global_bond_[k]))) continue;
+    bond_rows.insert(bond_rows.end(),
+                     {double(global_bond_[k]), double(ls.bond_broken[k]), ls.bond_damage[k],
+                      ls.bond_x0[k], ls.bond_y0[k], ls.bond_x1[k], ls.bond_y1[k]});
+  }
   std::vector<double> body_rows;
   for (std::size_t b = 0; b < global_body_.size(); ++b) {
     if (!reports_body(b)) continue;
@@ -670,7 +727,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   mine.push_back(static_cast<double>(loads.size()));
   mine.push_back(static_cast<double>(contacts.size()));
   mine.push_back(static_cast<double>(body_rows.size()));
-  for (const auto* v : {&rows, &loads, &contacts, &body_rows})
+  mine.push_back(static_cast<double>(bond_rows.size()));
+  for (const auto* v : {&rows, &loads, &contacts, &body_rows, &bond_rows})
     mine.insert(mine.end(), v->begin(), v->end());
   const std::vector<double> all = collect(comm_, mine, false);
   if (rank_ != 0 || !out) return;
@@ -695,16 +753,23 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     s.body_first[nb] = m.first[nb];
   }
   s.contacts.clear();
-  for (auto* v : {&s.bond_a, &s.bond_b}) v->clear();
-  s.bond_damage.clear();
-  s.bond_broken.clear();
-  for (auto* v : {&s.bond_x0, &s.bond_y0, &s.bond_x1, &s.bond_y1}) v->clear();
+  const std::size_t n_bonds = scene_.bonds.size();
+  s.bond_a.resize(n_bonds);
+  s.bond_b.resize(n_bonds);
+  for (std::size_t k = 0; k < n_bonds; ++k) {
+    s.bond_a[k] = static_cast<std::int32_t>(scene_.bonds[k].a);
+    s.bond_b[k] = static_cast<std::int32_t>(scene_.bonds[k].b);
+  }
+  s.bond_broken.assign(n_bonds, 0);
+  for (auto* v : {&s.bond_damage, &s.bond_x0, &s.bond_y0, &s.bond_x1, &s.bond_y1})
+    v->assign(n_bonds, 0.0);
   std::vector<double> wall_loads;
   std::size_t at = 0;
   while (at < all.size()) {
     const auto nr = static_cast<std::size_t>(all[at]), nl = static_cast<std::size_t>(all[at + 1]),
-               nc = static_cast<std::size_t>(all[at + 2]), nb = static_cast<std::size_t>(all[at + 3]);
-    at += 4;
+               nc = static_cast<std::size_t>(all[at + 2]), nb = static_cast<std::size_t>(all[at + 3]),
+               nk = static_cast<std::size_t>(all[at + 4]);
+    at += 5;
     for (const std::size_t end = at + nr; at < end;) {
       const auto g = static_cast<std::size_t>(all[at++]);
       Snapshot::for_each_field([&](auto field) {
@@ -737,6 +802,15 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     for (const std::size_t end = at + nb; at < end;) {
       const auto gb = static_cast<std::size_t>(all[at++]);
       Snapshot::for_each_body_column([&](auto field) { s.column(field)[gb] = all[at++]; });
+    }
+    for (const std::size_t end = at + nk; at < end; at += 7) {
+      const auto k = static_cast<std::size_t>(all[at]);
+      s.bond_broken[k] = static_cast<std::uint8_t>(all[at + 1]);
+      s.bond_damage[k] = all[at + 2];
+      s.bond_x0[k] = all[at + 3];
+      s.bond_y0[k] = all[at + 4];
+      s.bond_x1[k] = all[at + 5];
+      s.bond_y1[k] = all[at + 6];
     }
   }
   std::sort(s.contacts.begin(), s.contacts.end(),
@@ -826,22 +900,37 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
     const int who = gj < 0 ? plan_.owner[static_cast<std::size_t>(ge)] : authority(ge, gj);
     if (value != 0 && who == rank_) elastic.insert(elastic.end(), {double(ge), double(gj), value});
   });
-  std::vector<double> mine{static_cast<double>(sums.size()), static_cast<double>(elastic.size())};
+  // Each bond's elastic energy and the energy it released, from the authority of its pair.
+  std::vector<double> bonds;
+  if (!global_bond_.empty())
+    local_->bond_terms([&](std::size_t k, double bond_elastic, double released) {
+      const auto gk = static_cast<std::size_t>(global_bond_[k]);
+      if (reports_bond(gk)) bonds.insert(bonds.end(), {double(gk), bond_elastic, released});
+    });
+  std::vector<double> mine{static_cast<double>(sums.size()), static_cast<double>(elastic.size()),
+                           static_cast<double>(bonds.size())};
   mine.insert(mine.end(), sums.begin(), sums.end());
   mine.insert(mine.end(), elastic.begin(), elastic.end());
+  mine.insert(mine.end(), bonds.begin(), bonds.end());
   const std::vector<double> all = collect(comm_, mine, false);
   EnergyBudget b;
   if (rank_ != 0) return b;
   std::vector<double> by_particle(n_ * per, 0.0);
   std::vector<std::tuple<std::int32_t, std::int32_t, double>> pairs;
+  std::vector<double> bond_elastic(scene_.bonds.size(), 0.0), released(scene_.bonds.size(), 0.0);
   for (std::size_t at = 0; at < all.size();) {
-    const auto ns = static_cast<std::size_t>(all[at]), ne = static_cast<std::size_t>(all[at + 1]);
-    at += 2;
+    const auto ns = static_cast<std::size_t>(all[at]), ne = static_cast<std::size_t>(all[at + 1]),
+               nk = static_cast<std::size_t>(all[at + 2]);
+    at += 3;
     for (const std::size_t end = at + ns; at < end; at += 1 + per)
       for (std::size_t k = 0; k < per; ++k)
         by_particle[static_cast<std::size_t>(all[at]) * per + k] = all[at + 1 + k];
     for (const std::size_t end = at + ne; at < end; at += 3)
       pairs.emplace_back(as_id(all[at]), as_id(all[at + 1]), all[at + 2]);
+    for (const std::size_t end = at + nk; at < end; at += 3) {
+      bond_elastic[static_cast<std::size_t>(all[at])] = all[at + 1];
+      released[static_cast<std::size_t>(all[at])] = all[at + 2];
+    }
   }
   std::sort(pairs.begin(), pairs.end());
   for (const auto& p : pairs) b.elastic += std::get<2>(p);
@@ -851,6 +940,9 @@ EnergyBudget MpiSolver<Real>::gather_energy() const {
     b.dissipated_local += by_particle[i * per + kDissipatedLocal];
     b.wall_work += by_particle[i * per + kWallWork];
   }
+  // As CpuSolver::energy adds them: the bonds' elastic energy after the pairs', in order.
+  for (const double e : bond_elastic) b.elastic += e;
+  for (const double d : released) b.dissipated_fracture += d;
   return b;
 }
 
@@ -875,6 +967,7 @@ EnergyBudget MpiSolver<Real>::energy() const {
 template <class Real>
 void MpiSolver<Real>::load_state(const SolverState& in) {
   validate_solver_state(in, n_, model_.bodies.size(), description());
+  validate_bond_state(in, scene_.bonds.size(), description());
   order(kLoad, 0);
   SolverState whole = in;
   broadcast_state(whole);
@@ -903,6 +996,8 @@ void MpiSolver<Real>::broadcast_state(SolverState& s) const {
       const std::vector<double>& v = s.column(field);
       data.insert(data.end(), v.begin(), v.end());
     });
+    data.insert(data.end(), s.bond_damage.begin(), s.bond_damage.end());
+    data.insert(data.end(), s.bond_dissipated.begin(), s.bond_dissipated.end());
   }
   long long size = static_cast<long long>(data.size());
   MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm_);
@@ -934,6 +1029,12 @@ void MpiSolver<Real>::broadcast_state(SolverState& s) const {
                            data.begin() + static_cast<std::ptrdiff_t>(at + bodies));
     at += bodies;
   });
+  const std::size_t bonds = scene_.bonds.size(), points = SolverState::kBondStatePoints * bonds;
+  s.bond_damage.assign(data.begin() + static_cast<std::ptrdiff_t>(at),
+                       data.begin() + static_cast<std::ptrdiff_t>(at + points));
+  at += points;
+  s.bond_dissipated.assign(data.begin() + static_cast<std::ptrdiff_t>(at),
+                           data.begin() + static_cast<std::ptrdiff_t>(at + bonds));
 }
 
 template <class Real>

@@ -139,6 +139,12 @@ StripPlan plan_strips(const StripInput& in) {
       if (wall || own || near || id == plan.cell_setter)
         hold[static_cast<std::size_t>(head(i))] = hold[i] = 1;
     }
+    for (const auto& [a, b] : in.bonds) {
+      if (plan.owner[static_cast<std::size_t>(a)] == static_cast<int>(r))
+        hold[static_cast<std::size_t>(head(static_cast<std::size_t>(b)))] = 1;
+      if (plan.owner[static_cast<std::size_t>(b)] == static_cast<int>(r))
+        hold[static_cast<std::size_t>(head(static_cast<std::size_t>(a)))] = 1;
+    }
     for (std::size_t i = 0; i < n; ++i)
       if (hold[i] || hold[static_cast<std::size_t>(head(i))])
         held.push_back(static_cast<std::int32_t>(i));

@@ -42,6 +42,9 @@ struct StripInput {
   /// they are owned together (by the rank of the first member's centroid) and held
   /// together (all of them where any of them is).
   std::vector<std::int32_t> unit;
+  /// Cohesive bonds (a, b): a rank holds the bond partners of every particle it owns, so
+  /// that each of its particles has all its bonds.
+  std::vector<std::array<std::int32_t, 2>> bonds;
   int ranks = 1;
   double skin = 0;
   /// Periodic axes (x, y) and their periods; `sheared`: Lees-Edwards (both periodic).

@@ -187,6 +187,10 @@ class CudaRank final : public RankSolver<Real> {
       throw RunError("internal error: a GPU rank was given bodies to exchange");
   }
   double* body_send_buffer() override { return nullptr; }
+  // Bonds are refused on GPU ranks (mpi/mpi_solver.cpp, refusal).
+  void bond_terms(const std::function<void(std::size_t, double, double)>&) const override {
+    throw RunError("internal error: a GPU rank was asked for its bonds");
+  }
   double* body_receive_buffer() override { return nullptr; }
 
   // Servo walls are refused on GPU ranks (mpi/mpi_solver.cpp, refusal): their loads are
