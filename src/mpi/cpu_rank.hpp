@@ -38,8 +38,7 @@ class CpuRank final : public RankSolver<Real> {
   void bond_terms(const std::function<void(std::size_t, double, double)>& f) const override {
     const HostBondColumns<Real>& c = solver_.bond_columns();
     for (std::size_t k = 0; k < c.size(); ++k)
-      f(k, solver_.step() > 0 ? static_cast<double>(c.result[k].elastic) : 0.0,
-        c.dissipated[k]);
+      f(k, solver_.step() > 0 ? static_cast<double>(c.result[k].elastic) : 0.0, c.dissipated[k]);
   }
   void elastic_terms(
       const std::function<void(std::int32_t, std::int32_t, double)>& f) const override;

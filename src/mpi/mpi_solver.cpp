@@ -3,9 +3,9 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "core/particle_columns.hpp"
 #include "mpi/agreement.hpp"
-#include "physics/rigid_body.hpp"
 #include "mpi/cpu_rank.hpp"
 #include "mpi/device_choice.hpp"
+#include "physics/rigid_body.hpp"
 #include "tridem/error.hpp"
 
 #include <algorithm>
@@ -376,9 +376,9 @@ void MpiSolver<Real>::exchange_ghosts() {
                 local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
                 comm_);
   if (!model_.bodies.empty())  // on every rank, even one that holds none
-    MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(),
-                  body_send_displs_.data(), MPI_DOUBLE, local_->body_receive_buffer(),
-                  body_recv_counts_.data(), body_recv_displs_.data(), MPI_DOUBLE, comm_);
+    MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(), body_send_displs_.data(),
+                  MPI_DOUBLE, local_->body_receive_buffer(), body_recv_counts_.data(),
+                  body_recv_displs_.data(), MPI_DOUBLE, comm_);
   local_->unpack();
 }
 
@@ -767,7 +767,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
   std::size_t at = 0;
   while (at < all.size()) {
     const auto nr = static_cast<std::size_t>(all[at]), nl = static_cast<std::size_t>(all[at + 1]),
-               nc = static_cast<std::size_t>(all[at + 2]), nb = static_cast<std::size_t>(all[at + 3]),
+               nc = static_cast<std::size_t>(all[at + 2]),
+               nb = static_cast<std::size_t>(all[at + 3]),
                nk = static_cast<std::size_t>(all[at + 4]);
     at += 5;
     for (const std::size_t end = at + nr; at < end;) {
@@ -834,7 +835,8 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     if (bm.motion[b] == Motion::Free) continue;
     Vec2d f{};
     double t = 0;
-    for (auto i = static_cast<std::size_t>(bm.first[b]); i < static_cast<std::size_t>(bm.first[b + 1]); ++i)
+    for (auto i = static_cast<std::size_t>(bm.first[b]);
+         i < static_cast<std::size_t>(bm.first[b + 1]); ++i)
       physics::add_member_load(
           f, t, Vec2<Real>{static_cast<Real>(s.fx[i]), static_cast<Real>(s.fy[i])},
           static_cast<Real>(s.torque[i]), Vec2d{s.x[i] - s.body_x[b], s.y[i] - s.body_y[b]});

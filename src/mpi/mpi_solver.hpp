@@ -97,8 +97,8 @@ class MpiSolver final : public Solver {
   void sum_servo_loads();
   /// Whether this rank reports local body b (state, snapshot row): as its first member.
   bool reports_body(std::size_t b) const {
-    return reports(static_cast<std::int32_t>(
-        model_.bodies.first[static_cast<std::size_t>(global_body_[b])]));
+    return reports(
+        static_cast<std::int32_t>(model_.bodies.first[static_cast<std::size_t>(global_body_[b])]));
   }
   std::string global_ids(const std::string& message) const;
   void measure_bandwidth();
@@ -142,7 +142,7 @@ class MpiSolver final : public Solver {
   // Bodies of several triangles (CPU ranks): each local body's global body, and the body
   // exchange's layout, as the particles'.
   std::vector<std::int32_t> global_body_;
-  Scene rank_scene_;                    ///< a CPU rank's scene: settings and its bonds
+  Scene rank_scene_;                       ///< a CPU rank's scene: settings and its bonds
   std::vector<std::int32_t> global_bond_;  ///< each local bond's index in the scene
   /// Whether this rank reports bond k (of the scene): the authority of its pair.
   bool reports_bond(std::size_t k) const {
