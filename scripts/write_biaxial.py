@@ -118,6 +118,9 @@ def main():
     p.add_argument("--dest", default=os.path.join(tx.ROOT, "examples"),
                    help="folder of biaxial.toml and biaxial_grains.csv")
     p.add_argument("--scale", type=float, default=1.0, help="the sample's sides, x WIDTH, HEIGHT")
+    p.add_argument("--axial-strain", type=float, default=AXIAL_STRAIN,
+                   help="how far the top wall compresses, of the height (a critical state: "
+                        "0.4 with --scale 2, docs/experiments.md)")
     a = p.parse_args()
     name = "biaxial_prepare" + ("" if a.seed == SEED else f"_seed{a.seed}") + \
         ("" if a.scale == 1 else f"_scale{a.scale:g}")
@@ -128,7 +131,7 @@ def main():
     d = 0.5 * (SIZES[0] + SIZES[1])
     rate = INERTIAL / (d * (DENSITY / CONFINING) ** 0.5)   # axial strain rate, 1/s
     speed = rate * h
-    duration = AXIAL_STRAIN / rate
+    duration = a.axial_strain / rate
     walls = tx.box_walls(w, h, "wall", {
         # The side walls hold sigma_3 over the sample's current height, the gap between
         # the bottom and top walls, as the top comes down.
@@ -146,7 +149,7 @@ def main():
 #   tridem run examples/biaxial.toml --backend cpu
 #   scripts/biaxial_curves.py out/biaxial      (curves, friction angles: docs/experiments.md)
 # Box {w:.4f} m x {h:.4f} m; axial strain rate {rate:.3g} /s (inertial number {INERTIAL:g}:
-# quasi-static) to {AXIAL_STRAIN:g} axial strain. walls.csv's x, y give the box's faces: each
+# quasi-static) to {a.axial_strain:g} axial strain. walls.csv's x, y give the box's faces: each
 # wall's face is {tx.WALL_THICKNESS / 3:.6g} m from its centroid (a third of its thickness).
 
 [simulation]
