@@ -65,7 +65,7 @@ def summary(c, target, late_from=2 / 3):
     }
 
 
-def plot(c, s, png, others=()):
+def plot(c, s, png, others=(), name="the example", scene="examples/biaxial.toml"):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -75,7 +75,7 @@ def plot(c, s, png, others=()):
         label = f"{len(others)} other samples" if k == 0 else None
         ax[0].plot(100 * o["eps_a"], smooth(o["phi"], 5), lw=0.7, color="0.75", label=label)
         ax[1].plot(100 * o["eps_a"], 100 * o["eps_v"], lw=0.7, color="0.75", label=label)
-    ax[0].plot(e, smooth(c["phi"], 5), color="C0", label="the example (running mean, 5 rows)")
+    ax[0].plot(e, smooth(c["phi"], 5), color="C0", label=f"{name} (running mean, 5 rows)")
     ax[0].axhline(s["late_phi_mean"], color="C3", ls="--",
                   label=f"its late mean {s['late_phi_mean']:.1f}°")
     ax[0].plot(100 * s["peak_eps_a"], s["peak_phi"], "o", color="C1",
@@ -83,7 +83,7 @@ def plot(c, s, png, others=()):
     ax[0].set_xlabel("axial strain ε_a (%)")
     ax[0].set_ylabel("mobilised friction angle φ (°)")
     ax[0].legend(fontsize=7, loc="lower right")
-    ax[1].plot(e, 100 * c["eps_v"], color="C2", label="the example")
+    ax[1].plot(e, 100 * c["eps_v"], color="C2", label=name)
     ax[1].set_xlabel("axial strain ε_a (%)")
     ax[1].set_ylabel("volumetric strain ε_v (%, contraction +)")
     ax[1].axhline(0, color="0.8", lw=0.5)
@@ -98,7 +98,7 @@ def plot(c, s, png, others=()):
     for a in ax:
         a.grid(alpha=0.3)
     fig.suptitle("Biaxial test of angular grains at constant confining stress "
-                 "(examples/biaxial.toml)", fontsize=10)
+                 f"({scene})", fontsize=10)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
 
@@ -122,6 +122,8 @@ def main():
     p.add_argument("out", nargs="*", default=[os.path.join(tx.ROOT, "out", "biaxial")])
     p.add_argument("--png", default=None, help="plot to this PNG (e.g. docs/images/biaxial.png)")
     p.add_argument("--target", type=float, default=1e4, help="the servos' stress, Pa")
+    p.add_argument("--name", default="the example", help="the first sample's name in the legends")
+    p.add_argument("--scene", default="examples/biaxial.toml", help="the scene named in the title")
     a = p.parse_args()
     samples = [curves(out) for out in a.out]
     sums = [summary(c, a.target) for c in samples]
@@ -135,7 +137,7 @@ def main():
             print(f"{len(v)} samples: {what} {v.mean():.2f} +- {v.std():.2f} deg "
                   f"(mean, std of samples; {v.min():.2f}-{v.max():.2f})")
     if a.png:
-        plot(samples[0], sums[0], a.png, samples[1:])
+        plot(samples[0], sums[0], a.png, samples[1:], a.name, a.scene)
         print("wrote", a.png)
 
 
