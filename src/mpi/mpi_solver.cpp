@@ -171,14 +171,16 @@ void sum_wall_loads(std::vector<double>& rows, Out&& out) {
   }
 }
 
-}  // namespace
-
-namespace {
-
 bool moving_wall_body(const BodyModel& m) {
   for (std::size_t b = 0; b < m.size(); ++b)
     if (m.motion[b] == Motion::Prescribed && m.first[b + 1] - m.first[b] > 1) return true;
   return false;
+}
+
+bool is_servo(const MotionProgram& p) { return p.kind == ProgramKind::Servo; }
+
+bool has_servo(const ParticleModel& m) {
+  return std::any_of(m.programs.begin(), m.programs.end(), is_servo);
 }
 
 }  // namespace
@@ -188,9 +190,7 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
   if (!model.bodies.empty() && scene.simulation.backend == Backend::Cuda)
     what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
            "ranks (backend = \"cuda\")";
-  else if (!model.bodies.empty() &&
-           std::any_of(model.programs.begin(), model.programs.end(),
-                       [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
+  else if (!model.bodies.empty() && has_servo(model))
     // A body's program reads the body's load, gathered from its members before the
     // check where the ranks sum a servo's load.
     what = "servo walls in a scene with bodies of several triangles";
@@ -199,9 +199,7 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
            "from their members at the step's start poses)";
   else if (!scene.bonds.empty() && scene.simulation.backend == Backend::Cuda)
     what = "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
-  else if (scene.simulation.backend == Backend::Cuda &&
-           std::any_of(model.programs.begin(), model.programs.end(),
-                       [](const MotionProgram& p) { return p.kind == ProgramKind::Servo; }))
+  else if (scene.simulation.backend == Backend::Cuda && has_servo(model))
     // A servo moves by its whole load, which the ranks hold in parts: CPU ranks sum it in
     // their check (sum_servo_loads), GPU ranks do not yet.
     what = "servo walls on GPU ranks (backend = \"cuda\")";
@@ -267,7 +265,7 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   rank_scene_.bonds.clear();
   for (std::size_t i = 0; i < n_; ++i) {
     const std::int32_t k = model_.program[i];
-    if (k >= 0 && model_.programs[static_cast<std::size_t>(k)].kind == ProgramKind::Servo) {
+    if (k >= 0 && is_servo(model_.programs[static_cast<std::size_t>(k)])) {
       servo_.resize(n_, 0);
       servo_[i] = 1;
     }
