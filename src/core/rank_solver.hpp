@@ -7,6 +7,7 @@
 // (mpi/cpu_rank.hpp) and GPU ranks (backends/cuda/cuda_rank.cu) implement it. Plain C++:
 // no MPI and no CUDA types, so that either side compiles without the other.
 #include "physics/contact_force.hpp"
+#include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/solver.hpp"
 
@@ -56,7 +57,7 @@ class RankSolver {
   /// local bodies whose State leaves this rank at each exchange and those whose State
   /// arrives, in buffer order, and their buffers, kBodyStateArrays doubles per body; pack
   /// and unpack carry them with the particles'.
-  static constexpr int kBodyStateArrays = 6;
+  static constexpr int kBodyStateArrays = 0 TRIDEM_BODY_STATE_FIELDS(TRIDEM_PLUS_COUNT);
   virtual void set_body_plan(const std::vector<std::int32_t>& send,
                              const std::vector<std::int32_t>& receive) = 0;
   virtual double* body_send_buffer() = 0;
