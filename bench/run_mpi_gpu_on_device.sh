@@ -52,6 +52,9 @@ done
 # Three ranks on one GPU, and the start line's GPUs.
 run_case jostling_pile_double_np3 parity 3 tests/mpi/jostling_pile.toml --backend cuda
 grep -h "GPU ranks" "$out"/work/jostling_pile_double_np3/many.log | head -1 | sed 's/^/# /'
+# A grid of 2 x 2 domains (mpi/strip_plan's grid plan) on GPU ranks, in both precisions.
+EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_double_np4 parity 4 tests/mpi/square.toml --backend cuda
+EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_float_np4 parity 4 "$(float_copy tests/mpi/square.toml)" --backend cuda
 # 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
 # (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"
