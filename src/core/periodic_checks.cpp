@@ -37,22 +37,11 @@ double gpu_exact_periodic_length(const Scene& scene, const ParticleModel& model)
 }
 
 GpuPeriodicLimit gpu_periodic_limit(const Scene& scene, const ParticleModel& model) {
-  if (!scene.simulation.periodic.any()) return {};
+  if (!scene.simulation.periodic.any() || gpu_lists_periodic_cell_exactly(scene, model)) return {};
   const std::string label = scene_label(scene);
   const std::string cpu_backends = fmt::format(
       "backend = \"{}\", \"{}\" or \"{}\" (auto runs it on the CPU)", backend_name(Backend::OpenMP),
       backend_name(Backend::Cpu), backend_name(Backend::Auto));
-  const Method method = scene.simulation.method;
-  if (method == Method::Decomposition)
-    return {fmt::format("{}: [simulation] method = \"{}\" does not find pairs across periodic "
-                        "boundaries on backend '{}' yet (the CPU's does); use {}, or method = "
-                        "\"{}\" on the GPU",
-                        label, method_name(method), backend_name(Backend::Cuda), cpu_backends,
-                        method_name(Method::Grid)),
-            fmt::format("the GPU's method = \"{}\" does not find pairs across periodic "
-                        "boundaries yet",
-                        method_name(method))};
-  if (gpu_lists_periodic_cell_exactly(scene, model)) return {};
   const double shortest = gpu_exact_periodic_length(scene, model);
   return {fmt::format("{}: the periodic cell is too short for backend '{}': its pair list can "
                       "miss a pair in cells shorter than {} (8 x the farthest vertex from a "

@@ -91,8 +91,8 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
   // Bonded and periodic scenes too: the GPU computes bonds and periodic cells.
   Backend backend = resolve_backend(requested);
   check_periodic_cell(scene, model);
-  // What the GPU cannot run in a periodic cell yet (a cell too short for its pair list,
-  // the decomposition method) runs on the CPU under auto, never risking a missed pair.
+  // A periodic cell too short for the GPU's pair list runs on the CPU under auto, never
+  // risking a missed pair.
   if (backend == Backend::Cuda) {
     const GpuPeriodicLimit limit = gpu_periodic_limit(scene, model);
     if (!limit.refusal.empty()) {

@@ -1,5 +1,6 @@
 #include "decomposition/decomposition.hpp"
 
+#include "decomposition/periodic_images.hpp"
 #include "decomposition/row_cut.hpp"
 #include "tridem/error.hpp"
 
@@ -245,48 +246,6 @@ void Decomposition<Real>::visit_neighbours(int k, Visit&& visit) const {
   }
 }
 
-namespace {
-
-/// The integers a with a * period in [lo, hi] (none when the range is empty).
-struct PeriodRange {
-  long long first, last;
-};
-
-PeriodRange periods_within(double lo, double hi, double period) {
-  return {static_cast<long long>(std::ceil(lo / period)),
-          static_cast<long long>(std::floor(hi / period))};
-}
-
-/// Calls image(sx, sy) for each translation (a·lx + b·shift, b·ly) of the cell's images,
-/// other than the identity, that moves some box of `extent` onto [lo_y - margin, hi_y +
-/// margin] along y and, through its x range, onto [lo_x, hi_x].
-template <class Image>
-void for_each_image(const physics::PeriodicFrame& f, const Hull<double>& extent, double lo_x,
-                    double lo_y, double hi_x, double hi_y, Image&& image) {
-  const PeriodRange rows =
-      f.py ? periods_within(lo_y - extent.hi_y, hi_y - extent.lo_y, f.ly) : PeriodRange{0, 0};
-  for (long long b = rows.first; b <= rows.last; ++b) {
-    const double base = static_cast<double>(b) * f.shift;
-    const PeriodRange columns =
-        f.px ? periods_within(lo_x - extent.hi_x - base, hi_x - extent.lo_x - base, f.lx)
-             : PeriodRange{0, 0};
-    for (long long a = columns.first; a <= columns.last; ++a)
-      if (a != 0 || b != 0)
-        image(base + static_cast<double>(a) * f.lx, static_cast<double>(b) * f.ly);
-  }
-}
-
-/// A margin of a few roundings of the cell and the coordinates: an image's box is a box
-/// moved by a sum of periods, and the pair test that follows (passes_periodic_contact_test)
-/// allows as much.
-double image_margin(const physics::PeriodicFrame& f, double a, double b, double c, double d) {
-  return 16 * DBL_EPSILON *
-         (std::fabs(f.lx) + std::fabs(f.ly) + std::fabs(a) + std::fabs(b) + std::fabs(c) +
-          std::fabs(d));
-}
-
-}  // namespace
-
 template <class Real>
 void Decomposition<Real>::stage_images(const Hull<Real>& h,
                                        std::vector<std::int32_t>& staged) const {
@@ -306,7 +265,7 @@ void Decomposition<Real>::stage_images(const Hull<Real>& h,
       for (int q = m.in_row(rr, c_lo); q <= q_end; ++q)
         for (auto o = owned_offset_[q]; o < owned_offset_[q + 1]; ++o) {
           const Hull<Real>& b = owned_box_[o];
-          if (b.lo_x <= rhi_x && b.hi_x >= rlo_x && b.lo_y <= rhi_y && b.hi_y >= rlo_y)
+          if (image_reaches(frame_, h, b.lo_x, b.lo_y, b.hi_x, b.hi_y, sx, sy))
             staged.push_back(owned_[o]);
         }
     }

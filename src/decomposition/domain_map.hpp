@@ -83,6 +83,22 @@ struct DomainMap {
   TRIDEM_HD int owner(std::int64_t cell_row, std::int64_t cell_column) const {
     return in_row(row_of(cell_row), cell_column);
   }
+  /// The row holding sub-domain k.
+  TRIDEM_HD int row_holding(int k) const {
+    int lo = 0, hi = rows;  // row_first[lo] <= k < row_first[hi]
+    while (hi - lo > 1) {
+      const int mid = lo + (hi - lo) / 2;
+      if (row_first[mid] <= k) lo = mid;
+      else hi = mid;
+    }
+    return lo;
+  }
+  /// Whether visit_near(cell_row, cell_column, ...) visits sub-domain k.
+  TRIDEM_HD bool near(std::int64_t cell_row, std::int64_t cell_column, int k) const {
+    const int r = row_holding(k);
+    if (r < row_of(cell_row - kReachCells) || r > row_of(cell_row + kReachCells)) return false;
+    return k >= in_row(r, cell_column - kReachCells) && k <= in_row(r, cell_column + kReachCells);
+  }
   /// Calls visit(k) for every sub-domain that owns a cell within kReachCells of the
   /// centroid's cell: the only ones whose hull the particle's box can reach. Ascending k.
   template <class Visit>

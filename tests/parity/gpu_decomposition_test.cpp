@@ -4,12 +4,15 @@
 // moves; the agreement is the CUDA backend's usual one (support/gpu_compare.hpp).
 #include "support/gpu.hpp"
 #include "support/gpu_compare.hpp"
+#include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 #include "tridem/error.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <string>
+#include <utility>
 
 namespace tridem {
 namespace {
@@ -73,6 +76,38 @@ TEST(GpuDecomposition, DirectAreaTestMissesTheEdgeCrossingPair) {
   EXPECT_EQ(test::run_to(s, Backend::Cuda, 1, Precision::Double, Method::Decomposition)
                 .contacts.size(),
             0u);
+}
+
+// In periodic cells (along x; both ways; both ways with Lees-Edwards shear) the GPU's
+// sub-domains by a boundary stage the images of the particles across it
+// (assignment_kernels.cuh's visit_bands: the host's rule, from the particle's side, each
+// particle once): the CUDA grid's state bit for bit, in strips and in rows and columns, in
+// double and float, with contacts through the boundaries and particles migrating between
+// sub-domains (decomposition_parity_test.cpp's PeriodicCellsReproduceGridBitForBit on the
+// CPU). Without the images the pairs through the boundaries are missed.
+TEST(GpuDecomposition, PeriodicCellsReproduceTheCudaGridBitForBit) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const std::pair<const char*, Scene> cases[] = {
+      {"periodic pile", test::periodic_pile(12, 6)},
+      {"periodic gas", test::periodic_gas(10, 0.1, 0.49)},
+      {"dense sheared gas", test::dense_sheared_gas(10)}};
+  for (const auto& [name, scene] : cases)
+    for (const auto layout : {DecompositionLayout::Strips, DecompositionLayout::Grid})
+      for (const Precision precision : {Precision::Double, Precision::Float}) {
+        const Scene s = test::with_decomposition(scene, layout, 40);
+        SCOPED_TRACE(fmt::format("{}, {}, {}", name, layout == DecompositionLayout::Grid ? "2d" : "1d",
+                                 precision == Precision::Float ? "float" : "double"));
+        const Snapshot grid = test::run_to(s, Backend::Cuda, 600, precision, Method::Grid);
+        const auto dd = test::advanced_solver(s, Backend::Cuda, 600, precision,
+                                              Method::Decomposition);
+        Snapshot snap;
+        dd->snapshot(snap, true);
+        test::expect_identical(grid, snap);
+        EXPECT_GT(test::through_boundary(grid), 0u) << "contacts through the boundaries";
+        const std::string stats = dd->statistics();
+        EXPECT_EQ(stats.find("decomposition: 1 sub-domains"), std::string::npos) << stats;
+        EXPECT_EQ(stats.find(" 0 migrations"), std::string::npos) << stats;
+      }
 }
 
 TEST(GpuDecomposition, CapacityBeyondSharedMemoryIsRefused) {

@@ -3,33 +3,17 @@
 // (decomposition/domain_map.hpp, the same code as the host's): each particle's owner from
 // its centroid's cell, the hull of each sub-domain's owned boxes, and the overlap bands
 // (every particle whose box reaches a hull, found from the particle's side with
-// DomainMap::visit_near). Lists come out of CUB's stable radix sort keyed by sub-domain, so
-// each holds its particles ascending, as the host's do. Integer atomics only count.
+// DomainMap::visit_near; in a periodic cell also through the particle's images:
+// decomposition/periodic_images.hpp). Lists come out of CUB's stable radix sort keyed by
+// sub-domain, so each holds its particles ascending, as the host's do. Integer atomics
+// only count.
 #include "backends/cuda/device_views.cuh"
-#include "decomposition/domain_map.hpp"
+#include "decomposition/band_visit.hpp"
 
 #include <cfloat>
 #include <cstdint>
 
 namespace tridem::cuda {
-
-/// What the bookkeeping kernels read.
-template <class Real>
-struct AssignmentView {
-  int n;
-  int domains;
-  DomainMap map;  ///< device pointers
-  const std::uint8_t* small;
-  const double *x, *y;  ///< centroids: double in every precision
-  const Real *lo_x, *lo_y, *hi_x, *hi_y;
-
-  __device__ std::int64_t cell_row(int i) const {
-    return decomposition_cell(y[i], map.origin_y, map.cell);
-  }
-  __device__ std::int64_t cell_column(int i) const {
-    return decomposition_cell(x[i], map.origin_x, map.cell);
-  }
-};
 
 template <class Real>
 __device__ inline Real largest_real();
@@ -73,14 +57,33 @@ __global__ void hull_kernel(AssignmentView<Real> v, const int* owned_offset, con
   hull[k] = h;
 }
 
-/// Calls reached(k) for every sub-domain whose hull particle i's box reaches, ascending k.
-template <class Real, class Reached>
-__device__ inline void visit_bands(const AssignmentView<Real>& v, const Hull<Real>* hull, int i,
-                                   Reached&& reached) {
-  const Real lx = v.lo_x[i], ly = v.lo_y[i], hx = v.hi_x[i], hy = v.hi_y[i];
-  v.map.visit_near(v.cell_row(i), v.cell_column(i), [&](int k) {
-    if (box_reaches(lx, ly, hx, hy, hull[k])) reached(k);
-  });
+/// The extent of the non-empty hulls, in double: one block.
+template <class Real>
+__global__ void extent_kernel(const Hull<Real>* hull, int domains, Hull<double>* extent) {
+  constexpr int kThreads = 256;
+  __shared__ double part[4][kThreads];
+  Hull<double> e{DBL_MAX, DBL_MAX, -DBL_MAX, -DBL_MAX};
+  for (int k = threadIdx.x; k < domains; k += kThreads) {
+    const Hull<Real> h = hull[k];
+    if (h.lo_x > h.hi_x) continue;  // owns nothing
+    e = {fmin(e.lo_x, static_cast<double>(h.lo_x)), fmin(e.lo_y, static_cast<double>(h.lo_y)),
+         fmax(e.hi_x, static_cast<double>(h.hi_x)), fmax(e.hi_y, static_cast<double>(h.hi_y))};
+  }
+  part[0][threadIdx.x] = e.lo_x;
+  part[1][threadIdx.x] = e.lo_y;
+  part[2][threadIdx.x] = e.hi_x;
+  part[3][threadIdx.x] = e.hi_y;
+  __syncthreads();
+  for (int half = kThreads / 2; half > 0; half /= 2) {
+    if (threadIdx.x < half)
+      for (int a = 0; a < 4; ++a) {
+        const double other = part[a][threadIdx.x + half];
+        part[a][threadIdx.x] =
+            a < 2 ? fmin(part[a][threadIdx.x], other) : fmax(part[a][threadIdx.x], other);
+      }
+    __syncthreads();
+  }
+  if (threadIdx.x == 0) *extent = {part[0][0], part[1][0], part[2][0], part[3][0]};
 }
 
 /// How many bands each particle joins (count[n] stays 0 for the scan), and how many

@@ -228,7 +228,8 @@ void CudaSolver<Real>::run_stage(Stage stage) {
   switch (stage) {
     case Stage::PairList:
       if (decomposed_) {
-        decomposed_->build(p, *pairs_);  // the paper's sub-domains, every step
+        // The paper's sub-domains, every step; in a periodic cell at this step's frame.
+        decomposed_->build(p, *pairs_, periodic_ ? &params_.frame : nullptr);
       } else if (rebuild_ || pairs_->single_step() || images_slid()) {
         // A single-domain list holds the pairs that pass the contact test at this step's
         // positions only: no skin can keep it valid, so it is rebuilt every step.

@@ -34,7 +34,8 @@ DecomposedRows<Real>::DecomposedRows(const SimulationSettings& settings,
         settings.decomposition.capacity, shared_bytes_ / 1024,
         StagedParticles<Real>::bytes(1), allowed / 1024));
   // Past the default 48 KiB a kernel must ask for its shared memory.
-  for (auto kernel : {domain_rows_kernel<Real, false>, domain_rows_kernel<Real, true>})
+  for (auto kernel : {domain_rows_kernel<Real, false>, domain_rows_kernel<Real, true>,
+                      domain_rows_kernel<Real, false, true>, domain_rows_kernel<Real, true, true>})
     TRIDEM_CUDA_CHECK(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                            static_cast<int>(shared_bytes_)));
   centroids_.allocate(2 * n_);
@@ -43,7 +44,8 @@ DecomposedRows<Real>::DecomposedRows(const SimulationSettings& settings,
 }
 
 template <class Real>
-void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p) {
+void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p,
+                                          const physics::PeriodicFrame* periodic) {
   const double* centroid[2] = {p.x, p.y};
   double* host_c[2];
   for (int a = 0; a < 2; ++a) {
@@ -62,36 +64,52 @@ void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p) {
   }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   // OpenMP on the host; the result does not depend on it.
-  decomposition_.update({host_c[0], host_c[1], host[0], host[1], host[2], host[3]}, true);
+  decomposition_.update({host_c[0], host_c[1], host[0], host[1], host[2], host[3]}, true,
+                        periodic);
   assignment_.take_from_host(decomposition_);
 }
 
 template <class Real>
-void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list) {
+void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list,
+                                 const physics::PeriodicFrame* periodic) {
   // The first grouping on the host; afterwards the GPU, with the host's borders, unless a
   // sub-domain overflows them.
-  if (builds_ == 0 || !assignment_.assign(p, decomposition_.capacity())) update_on_host(p);
+  if (builds_ == 0 || !assignment_.assign(p, decomposition_.capacity(), periodic))
+    update_on_host(p, periodic);
   if (assignment_.largest_staged() > decomposition_.capacity())
     throw RunError("internal error: a sub-domain stages more particles than its capacity");
   assignment_.count_migrations();
   ++builds_;
 
-  const DomainLists lists{decomposition_.capacity(), assignment_.member_offset(),
-                          assignment_.members(),     assignment_.owned_offset(),
-                          assignment_.owned(),       large_.data(),
-                          static_cast<int>(decomposition_.large().size()), filter_};
+  DomainLists lists{decomposition_.capacity(), assignment_.member_offset(),
+                    assignment_.members(),     assignment_.owned_offset(),
+                    assignment_.owned(),       large_.data(),
+                    static_cast<int>(decomposition_.large().size()), filter_};
+  if (periodic) {
+    lists.frame = *periodic;
+    fill_rows<true>(p, list, lists);
+  } else {
+    fill_rows<false>(p, list, lists);
+  }
+}
+
+template <class Real>
+template <bool kPeriodic>
+void DecomposedRows<Real>::fill_rows(const ParticleArrays<Real>& p, PairListBuilder<Real>& list,
+                                     const DomainLists& lists) {
   const int blocks = decomposition_.count();
   list.rebuild_with(
       [&](int* row_count) {
         // Particles that no sub-domain owns (walls) emit nothing: their rows stay empty.
         TRIDEM_CUDA_CHECK(cudaMemsetAsync(row_count, 0, n_ * sizeof(int), stream_));
-        domain_rows_kernel<Real, false><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
-            p, lists, row_count, RowHistory<Real>{});
+        domain_rows_kernel<Real, false, kPeriodic>
+            <<<blocks, kDomainThreads, shared_bytes_, stream_>>>(p, lists, row_count,
+                                                                 RowHistory<Real>{});
         TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (count)");
       },
       [&](const RowHistory<Real>& history) {
-        domain_rows_kernel<Real, true><<<blocks, kDomainThreads, shared_bytes_, stream_>>>(
-            p, lists, nullptr, history);
+        domain_rows_kernel<Real, true, kPeriodic>
+            <<<blocks, kDomainThreads, shared_bytes_, stream_>>>(p, lists, nullptr, history);
         TRIDEM_CUDA_CHECK_LAUNCH("domain_rows_kernel (fill)");
       });
 }

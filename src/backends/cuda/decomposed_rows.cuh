@@ -26,14 +26,19 @@ class DecomposedRows {
                  cudaStream_t stream);
 
   /// Brings owners, bands and (on the host, when needed) borders up to date for the
-  /// current state, and builds the pair list.
-  void build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list);
+  /// current state, and builds the pair list; in a periodic cell (`periodic`, the frame of
+  /// this step) with the pairs through its boundaries.
+  void build(const ParticleArrays<Real>& p, PairListBuilder<Real>& list,
+             const physics::PeriodicFrame* periodic = nullptr);
 
   /// The decomposition's line of the run summary.
   std::string summary() const;
 
  private:
-  void update_on_host(const ParticleArrays<Real>& p);
+  void update_on_host(const ParticleArrays<Real>& p, const physics::PeriodicFrame* periodic);
+  template <bool kPeriodic>
+  void fill_rows(const ParticleArrays<Real>& p, PairListBuilder<Real>& list,
+                 const DomainLists& lists);
 
   Decomposition<Real> decomposition_;
   DomainAssignment<Real> assignment_;

@@ -95,7 +95,9 @@ void DomainAssignment<Real>::sort(const int* keys_in, int* keys_out, const int* 
 }
 
 template <class Real>
-bool DomainAssignment<Real>::assign(const ParticleArrays<Real>& p, int capacity) {
+bool DomainAssignment<Real>::assign(const ParticleArrays<Real>& p, int capacity,
+                                    const physics::PeriodicFrame* periodic) {
+  if (periodic && extent_.size() == 0) extent_.allocate(1);
   const AssignmentView<Real> v{
       n_,
       domains_,
@@ -106,7 +108,9 @@ bool DomainAssignment<Real>::assign(const ParticleArrays<Real>& p, int capacity)
       p.lo_x,
       p.lo_y,
       p.hi_x,
-      p.hi_y};
+      p.hi_y,
+      periodic ? *periodic : physics::PeriodicFrame{},
+      periodic ? extent_.data() : nullptr};
   // Owners, then the owned lists: particles sorted by owner (stable: ascending in each).
   owner_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(v, owner_.data(), owner_key_.data(),
                                                           index_.data());
@@ -118,6 +122,10 @@ bool DomainAssignment<Real>::assign(const ParticleArrays<Real>& p, int capacity)
   hull_kernel<Real><<<blocks(domains_), kBlock, 0, stream_>>>(v, owned_offset_.data(),
                                                                owned_.data(), hull_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("hull_kernel");
+  if (periodic) {
+    extent_kernel<Real><<<1, 256, 0, stream_>>>(hull_.data(), domains_, extent_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("extent_kernel");
+  }
   // Bands: counted per particle and per sub-domain, placed by a scan.
   TRIDEM_CUDA_CHECK(cudaMemsetAsync(staged_.data(), 0, staged_.bytes(), stream_));
   TRIDEM_CUDA_CHECK(cudaMemsetAsync(largest_.data(), 0, sizeof(int), stream_));

@@ -23,8 +23,11 @@ class DomainAssignment {
   void take_from_host(const Decomposition<Real>& d);
   /// Owners, hulls and bands on the GPU with the borders last taken from the host; false
   /// (lists unusable) when some sub-domain would stage more than `capacity` particles.
-  /// Synchronises once, to learn the number of memberships and the largest sub-domain.
-  bool assign(const ParticleArrays<Real>& p, int capacity);
+  /// In a periodic cell (`periodic`, the frame of this step) the bands take the images of
+  /// the particles across the boundaries, as the host's do. Synchronises once, to learn
+  /// the number of memberships and the largest sub-domain.
+  bool assign(const ParticleArrays<Real>& p, int capacity,
+              const physics::PeriodicFrame* periodic = nullptr);
   /// Counts the particles whose owner changed since the last call.
   void count_migrations();
 
@@ -55,6 +58,7 @@ class DomainAssignment {
   DeviceBuffer<int> band_count_, band_position_;  ///< n + 1
   // Per sub-domain.
   DeviceBuffer<Hull<Real>> hull_;
+  DeviceBuffer<Hull<double>> extent_;  ///< of the hulls, in a periodic cell
   DeviceBuffer<int> staged_, owned_offset_, member_offset_;
   // Lists, and the memberships they are sorted from.
   DeviceBuffer<int> owned_, members_, band_key_, sorted_band_key_, band_value_;

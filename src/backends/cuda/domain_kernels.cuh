@@ -25,6 +25,7 @@ struct DomainLists {
   const int* large;          ///< particles larger than L: partners of every sub-domain
   int n_large;
   ContactFilter filter;
+  physics::PeriodicFrame frame;  ///< the periodic cell at this step (kPeriodic kernels only)
 };
 
 constexpr int kDomainThreads = 128;
@@ -77,8 +78,10 @@ __device__ inline TriangleArrays<Real> geometry_of(const ParticleArrays<Real>& p
 }
 
 /// kFill = false: row_count[i] for every owned emitter i; true: its row, sorted, with its
-/// contact history (carry_history).
-template <class Real, bool kFill>
+/// contact history (carry_history). kPeriodic: each partner is tested at its nearest image
+/// in d.frame (passes_periodic_contact_test, the CPU's); the bands hold those that can
+/// touch an owned emitter through a boundary.
+template <class Real, bool kFill, bool kPeriodic = false>
 __global__ void __launch_bounds__(kDomainThreads)
     domain_rows_kernel(ParticleArrays<Real> p, DomainLists d, int* row_count,
                        RowHistory<Real> t) {
@@ -113,11 +116,17 @@ __global__ void __launch_bounds__(kDomainThreads)
     // Fill: the next free slot of i's row; count: how many partners so far.
     int at = 0;
     if constexpr (kFill) at = t.offset[i];
-    auto consider = [&](int j, const physics::Triangle<Real>& b, const physics::Aabb<Real>& box_b,
-                        bool small_j, bool free_j) {
-      if (!emits_pair(i, j, true, small_j, free_i, free_j) ||
-          !passes_contact_test(a, box_a, b, box_b, d.filter))
+    // Partner j, slot `at` of geometry `from` (the staged copy or the global arrays).
+    auto consider = [&](int j, const TriangleArrays<Real>& from, int at_from, bool small_j,
+                        bool free_j) {
+      if (!emits_pair(i, j, true, small_j, free_i, free_j)) return;
+      if constexpr (kPeriodic) {
+        if (!passes_periodic_contact_test(d.frame, origin, a, box_a, from, at_from, d.filter))
+          return;
+      } else if (!passes_contact_test(a, box_a, from.triangle(at_from, origin), from.box(at_from),
+                                      d.filter)) {
         return;
+      }
       if constexpr (kFill) t.partner[at] = j;
       ++at;
     };
@@ -128,11 +137,10 @@ __global__ void __launch_bounds__(kDomainThreads)
       if (s.index[mid] <= i) lo = mid + 1;
       else hi = mid;
     }
-    for (int m = lo; m < staged; ++m)
-      consider(s.index[m], staged_g.triangle(m, origin), staged_g.box(m), true, s.free[m] != 0);
+    for (int m = lo; m < staged; ++m) consider(s.index[m], staged_g, m, true, s.free[m] != 0);
     for (int w = 0; w < d.n_large; ++w) {
       const int j = d.large[w];
-      consider(j, g.triangle(j, origin), g.box(j), false, p.free[j] != 0);
+      consider(j, g, j, false, p.free[j] != 0);
     }
     if constexpr (kFill) {
       insertion_sort(t.partner, t.offset[i], at);  // the walls come after the staged

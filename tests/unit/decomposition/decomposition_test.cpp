@@ -1,10 +1,13 @@
 // The decomposition's bookkeeping on its own: ownership is unique, each sub-domain stays
 // within its capacity, every pair the cell grid finds is a candidate of exactly one
 // sub-domain, borders move when a sub-domain overflows, particles migrate as they move,
-// and a column that cannot fit is refused with a message that says what to change.
+// and a column that cannot fit is refused with a message that says what to change; the
+// GPU's rule for the bands (decomposition/band_visit.hpp) finds the host's lists, in
+// periodic cells too.
 #include "unit/decomposition/triangle_cloud.hpp"
 
 #include "broadphase/candidate_pairs.hpp"
+#include "decomposition/band_visit.hpp"
 #include "tridem/error.hpp"
 
 #include <algorithm>
@@ -52,8 +55,54 @@ PairSet decomposition_pairs(const Decomposition<double>& d, const TriangleCloud&
   return out;
 }
 
-/// Every check of the bookkeeping at one step.
-void expect_consistent(const Decomposition<double>& d, const TriangleCloud& c) {
+/// The hull of each sub-domain's owned boxes (empty: lo above hi).
+std::vector<Hull<double>> hulls_of(const Decomposition<double>& d, const TriangleCloud& c) {
+  std::vector<Hull<double>> hull(static_cast<std::size_t>(d.count()));
+  for (int k = 0; k < d.count(); ++k) {
+    hull[k] = {1e300, 1e300, -1e300, -1e300};
+    for (const std::int32_t p : d.owned(k))
+      hull[k] = {std::min(hull[k].lo_x, c.lo_x[p]), std::min(hull[k].lo_y, c.lo_y[p]),
+                 std::max(hull[k].hi_x, c.hi_x[p]), std::max(hull[k].hi_y, c.hi_y[p])};
+  }
+  return hull;
+}
+
+/// The bands the GPU finds from the particles' side (visit_bands over the hulls of the
+/// owned boxes, through the images in a periodic cell), in the order of its lists: each
+/// sub-domain's particles ascending.
+std::vector<std::vector<std::int32_t>> particle_side_bands(const Decomposition<double>& d,
+                                                           const TriangleCloud& c,
+                                                           const physics::PeriodicFrame* periodic) {
+  const GridClasses classes = classify_for_grid(c.longest_edge, c.motion);
+  const std::vector<Hull<double>> hull = hulls_of(d, c);
+  Hull<double> extent{1e300, 1e300, -1e300, -1e300};
+  for (int k = 0; k < d.count(); ++k)
+    if (d.owned(k).size() > 0)
+      extent = {std::min(extent.lo_x, hull[k].lo_x), std::min(extent.lo_y, hull[k].lo_y),
+                std::max(extent.hi_x, hull[k].hi_x), std::max(extent.hi_y, hull[k].hi_y)};
+  const AssignmentView<double> view{static_cast<int>(c.size()),
+                                    d.count(),
+                                    d.map(),
+                                    classes.small.data(),
+                                    c.x.data(),
+                                    c.y.data(),
+                                    c.lo_x.data(),
+                                    c.lo_y.data(),
+                                    c.hi_x.data(),
+                                    c.hi_y.data(),
+                                    periodic ? *periodic : physics::PeriodicFrame{},
+                                    periodic ? &extent : nullptr};
+  std::vector<std::vector<std::int32_t>> bands(static_cast<std::size_t>(d.count()));
+  for (std::size_t p = 0; p < c.size(); ++p)
+    if (classes.small[p])
+      visit_bands(view, hull.data(), static_cast<int>(p),
+                  [&](int k) { bands[k].push_back(static_cast<std::int32_t>(p)); });
+  return bands;
+}
+
+/// The ownership checks of one step, and the particles' side's bands against the lists.
+void expect_owned_and_staged(const Decomposition<double>& d, const TriangleCloud& c,
+                             const physics::PeriodicFrame* periodic = nullptr) {
   const GridClasses classes = classify_for_grid(c.longest_edge, c.motion);
   std::vector<int> times_owned(c.size(), 0);
   for (int k = 0; k < d.count(); ++k) {
@@ -77,27 +126,15 @@ void expect_consistent(const Decomposition<double>& d, const TriangleCloud& c) {
     EXPECT_EQ(d.owner(p), m.owner(decomposition_cell(c.y[p], m.origin_y, m.cell),
                                   decomposition_cell(c.x[p], m.origin_x, m.cell)));
   }
-  // The bands found from the particles' side, as the GPU finds them (DomainMap::visit_near
-  // over the hulls of the owned boxes), are the lists.
-  std::vector<Hull<double>> hull(static_cast<std::size_t>(d.count()));
-  for (int k = 0; k < d.count(); ++k) {
-    hull[k] = {1e300, 1e300, -1e300, -1e300};
-    for (const std::int32_t p : d.owned(k))
-      hull[k] = {std::min(hull[k].lo_x, c.lo_x[p]), std::min(hull[k].lo_y, c.lo_y[p]),
-                 std::max(hull[k].hi_x, c.hi_x[p]), std::max(hull[k].hi_y, c.hi_y[p])};
-  }
-  std::vector<std::vector<std::int32_t>> bands(static_cast<std::size_t>(d.count()));
-  for (std::size_t p = 0; p < c.size(); ++p) {
-    if (!classes.small[p]) continue;
-    m.visit_near(decomposition_cell(c.y[p], m.origin_y, m.cell),
-                 decomposition_cell(c.x[p], m.origin_x, m.cell), [&](int k) {
-                   if (box_reaches(c.lo_x[p], c.lo_y[p], c.hi_x[p], c.hi_y[p], hull[k]))
-                     bands[k].push_back(static_cast<std::int32_t>(p));
-                 });
-  }
+  const auto bands = particle_side_bands(d, c, periodic);
   for (int k = 0; k < d.count(); ++k)
     EXPECT_EQ(bands[k], std::vector<std::int32_t>(d.members(k).begin(), d.members(k).end()))
         << "sub-domain " << k;
+}
+
+/// Every check of the bookkeeping at one step.
+void expect_consistent(const Decomposition<double>& d, const TriangleCloud& c) {
+  expect_owned_and_staged(d, c);
   const PairSet grid = test::grid_pairs(c);
   PairSet sorted_grid = grid;
   std::sort(sorted_grid.begin(), sorted_grid.end());
@@ -159,6 +196,53 @@ INSTANTIATE_TEST_SUITE_P(
                       LayoutCase{DecompositionLayout::Strips, 128, 0, 6},
                       LayoutCase{DecompositionLayout::Grid, 40, 0, 0},
                       LayoutCase{DecompositionLayout::Grid, 48, 3, 4}));
+
+// In a periodic cell the sub-domains by a boundary stage the particles whose images reach
+// them (Decomposition::stage_images, from the sub-domains' side); the GPU finds the same
+// lists from the particles' side (visit_bands), each particle once, however many images
+// reach a sub-domain: along x, both ways, and both ways with a Lees-Edwards shift, while
+// the particles drift and borders move.
+TEST_P(DecompositionBookkeeping, PeriodicBandsFromEitherSideAreTheSame) {
+  const LayoutCase lc = GetParam();
+  struct Cell {
+    bool py;
+    double shift;
+  };
+  for (const Cell cell : {Cell{false, 0}, Cell{true, 0}, Cell{true, 0.7}}) {
+    TriangleCloud c = test::random_cloud(500, 3.0, 1.0, 0.05, 3);
+    Decomposition<double> d = make(c, lc.layout, lc.capacity, lc.rows, lc.columns);
+    physics::PeriodicFrame f;
+    f.px = true;
+    f.x0 = 0;
+    f.lx = 3.0;
+    f.py = cell.py;
+    f.y0 = 0;
+    f.ly = 1.0;
+    f.shift = cell.shift;
+    const GridClasses classes = classify_for_grid(c.longest_edge, c.motion);
+    std::size_t through = 0;
+    for (int step = 0; step < 12; ++step) {
+      d.update(c.input(), false, &f);
+      SCOPED_TRACE(::testing::Message() << "periodic y " << cell.py << ", shift " << cell.shift
+                                        << ", step " << step);
+      expect_owned_and_staged(d, c, &f);
+      if (testing::Test::HasFailure()) return;
+      // Staged though its box does not reach the hull: an image of it does.
+      const std::vector<Hull<double>> hull = hulls_of(d, c);
+      for (int k = 0; k < d.count(); ++k)
+        for (const std::int32_t p : d.members(k))
+          through += !box_reaches(c.lo_x[p], c.lo_y[p], c.hi_x[p], c.hi_y[p], hull[k]);
+      // Drift along x through the boundary (wrapped back into the cell).
+      for (std::size_t p = 0; p < c.size(); ++p)
+        if (classes.small[p] && c.motion[p] == Motion::Free) {
+          const double dx = c.x[p] + 0.09 >= 3.0 ? 0.09 - 3.0 : 0.09;
+          c.shift(p, {dx, 0});
+        }
+    }
+    EXPECT_GT(through, 0u) << "sub-domains by the boundaries must stage images";
+    EXPECT_GT(d.stats().migrations, 0);
+  }
+}
 
 TEST(Decomposition, OverflowMovesBorderToNeighbour) {
   // Three strips of equal counts; then particles of the right one move into the middle.
