@@ -55,6 +55,18 @@ grep -h "GPU ranks" "$out"/work/jostling_pile_double_np3/many.log | head -1 | se
 # A grid of 2 x 2 domains (mpi/strip_plan's grid plan) on GPU ranks, in both precisions.
 EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_double_np4 parity 4 tests/mpi/square.toml --backend cuda
 EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_float_np4 parity 4 "$(float_copy tests/mpi/square.toml)" --backend cuda
+# Periodic cells: the strips' ring along x, and along y under Lees-Edwards shear.
+for precision in double float; do
+  for scene in tests/mpi/periodic.toml tests/mpi/sheared.toml; do
+    s=$scene
+    [ "$precision" = float ] && s=$(float_copy "$scene")
+    for np in 2 3; do
+      run_case "$(basename "${scene%.toml}")_${precision}_np$np" parity $np "$s" --backend cuda
+    done
+  done
+done
+sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
+run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
 # 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
 # (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"

@@ -2,6 +2,7 @@
 
 #include "backends/cuda/cuda_backend.hpp"
 #include "core/particle_columns.hpp"
+#include "core/periodic_checks.hpp"
 #include "mpi/agreement.hpp"
 #include "mpi/cpu_rank.hpp"
 #include "mpi/device_choice.hpp"
@@ -203,12 +204,12 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
     // A servo moves by its whole load, which the ranks hold in parts: CPU ranks sum it in
     // their check (sum_servo_loads), GPU ranks do not yet.
     what = "servo walls on GPU ranks (backend = \"cuda\")";
-  else if (scene.simulation.periodic.any() && scene.simulation.backend == Backend::Cuda)
-    // CPU ranks' strips form a ring along a periodic axis (strip_plan.hpp); GPU ranks'
-    // drift kernel and ghost exchange are not checked on periodic cells yet.
-    what = "periodic boundaries (periodic_x, periodic_y) on GPU ranks (backend = \"cuda\")";
   else if (scene.simulation.method == Method::AllPairs)
     what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
+  if (!what && scene.simulation.backend == Backend::Cuda)
+    // A GPU rank's list in a periodic cell needs the cell one GPU needs (make_solver
+    // checks it for one rank).
+    return gpu_periodic_limit(scene, model).refusal;
   if (!what) return {};
   return fmt::format("{}: {} are not split across MPI ranks yet (docs/scaling.md); run "
                      "this scene on one rank (without mpirun, or mpirun -np 1)",

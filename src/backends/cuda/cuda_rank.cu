@@ -42,13 +42,17 @@ __global__ void unpack_kernel(Columns c, const int* index, int n, const double* 
 }
 
 /// Flags an own particle that moved more than sqrt(limit2) from its reference (x, y pairs),
-/// or whose centroid is not finite: CpuRank::drifted's test.
+/// or whose centroid is not finite: CpuRank::drifted's test, the move through a periodic
+/// boundary (period_x or period_y > 0) the shortest one.
 __global__ void drift_kernel(const double* x, const double* y, const int* own, int n,
-                             const double* ref, double limit2, int* flag) {
+                             const double* ref, double limit2, double period_x, double period_y,
+                             int* flag) {
   const int q = blockIdx.x * blockDim.x + threadIdx.x;
   if (q >= n) return;
   const int i = own[q];
-  const double dx = x[i] - ref[2 * q], dy = y[i] - ref[2 * q + 1];
+  double dx = x[i] - ref[2 * q], dy = y[i] - ref[2 * q + 1];
+  if (period_x > 0) dx = remainder(dx, period_x);
+  if (period_y > 0) dy = remainder(dy, period_y);
   if (!(dx * dx + dy * dy <= limit2)) atomicOr(flag, 1);
 }
 
@@ -76,6 +80,9 @@ class CudaRank final : public RankSolver<Real> {
   CudaRank(const Scene& scene, const ParticleModel& model, const TimeStep& ts,
            const SolverConfig& config)
       : solver_(scene, model, ts, config) {
+    const PeriodicCell& cell = scene.simulation.periodic;
+    if (cell.x) period_x_ = cell.x->length();
+    if (cell.y) period_y_ = cell.y->length();
     flag_.allocate(1);
     host_flag_.allocate(1);
   }
@@ -148,7 +155,8 @@ class CudaRank final : public RankSolver<Real> {
     TRIDEM_CUDA_CHECK(cudaMemsetAsync(flag_.data(), 0, sizeof(int), stream));
     drift_kernel<<<blocks(owned_), kBlock, 0, stream>>>(p.x, p.y, own_index_.data(),
                                                         static_cast<int>(owned_), reference_.data(),
-                                                        limit * limit, flag_.data());
+                                                        limit * limit, period_x_, period_y_,
+                                                        flag_.data());
     TRIDEM_CUDA_CHECK_LAUNCH("drift_kernel");
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_flag_.data(), flag_.data(), sizeof(int),
                                       cudaMemcpyDeviceToHost, stream));
@@ -221,6 +229,7 @@ class CudaRank final : public RankSolver<Real> {
   DeviceBuffer<double> device_send_, device_receive_;
   PinnedBuffer<double> host_send_, host_receive_;
   DeviceBuffer<double> reference_;  ///< own particles' centroids at the plan, (x, y) pairs
+  double period_x_ = 0, period_y_ = 0;  ///< of a periodic cell, 0 along an open axis
   mutable DeviceBuffer<int> flag_;
   mutable PinnedBuffer<int> host_flag_;
 };
