@@ -53,8 +53,8 @@ done
 run_case jostling_pile_double_np3 parity 3 tests/mpi/jostling_pile.toml --backend cuda
 grep -h "GPU ranks" "$out"/work/jostling_pile_double_np3/many.log | head -1 | sed 's/^/# /'
 # A grid of 2 x 2 domains (mpi/strip_plan's grid plan) on GPU ranks, in both precisions.
-EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_double_np4 parity 4 tests/mpi/square.toml --backend cuda
-EXPECT_DOMAINS="a grid of 2 x 2 domains" run_case square_float_np4 parity 4 "$(float_copy tests/mpi/square.toml)" --backend cuda
+EXPECT_START="a grid of 2 x 2 domains" run_case square_double_np4 parity 4 tests/mpi/square.toml --backend cuda
+EXPECT_START="a grid of 2 x 2 domains" run_case square_float_np4 parity 4 "$(float_copy tests/mpi/square.toml)" --backend cuda
 # Periodic cells: the strips' ring along x, and along y under Lees-Edwards shear.
 for precision in double float; do
   for scene in tests/mpi/periodic.toml tests/mpi/sheared.toml; do
@@ -67,6 +67,17 @@ for precision in double float; do
 done
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
 run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
+# backend = "auto" takes GPU ranks where every rank has a GPU; with bodies (which GPU
+# ranks refuse) it runs CPU ranks, saying why.
+EXPECT_START="GPU ranks" run_case auto_np2 parity 2 tests/mpi/jostling_pile.toml --backend auto
+total=$((total + 1))
+if mpirun --oversubscribe -np 2 "$tridem" run tests/mpi/bodies.toml --backend auto --steps 10 \
+     --out "$out/work/auto_bodies" --quiet >"$out/auto_bodies.log" 2>&1 &&
+   grep -q "CPU ranks" "$out/auto_bodies.log" && grep -q "note: backend = auto runs CPU ranks" "$out/auto_bodies.log"; then
+  pass=$((pass + 1)); echo "PASS auto_bodies_np2: CPU ranks, with the note"
+else
+  echo "FAIL auto_bodies_np2: $(head -5 "$out/auto_bodies.log")"
+fi
 # 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
 # (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"

@@ -186,9 +186,10 @@ bool has_servo(const ParticleModel& m) {
 
 }  // namespace
 
-std::string refusal(const Scene& scene, const ParticleModel& model) {
+std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks) {
+  const bool gpu = ranks == Backend::Cuda;
   const char* what = nullptr;
-  if (!model.bodies.empty() && scene.simulation.backend == Backend::Cuda)
+  if (!model.bodies.empty() && gpu)
     what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
            "ranks (backend = \"cuda\")";
   else if (!model.bodies.empty() && has_servo(model))
@@ -198,15 +199,15 @@ std::string refusal(const Scene& scene, const ParticleModel& model) {
   else if (moving_wall_body(model.bodies))
     what = "moving wall bodies of several triangles (their load in bodies.csv is summed "
            "from their members at the step's start poses)";
-  else if (!scene.bonds.empty() && scene.simulation.backend == Backend::Cuda)
+  else if (!scene.bonds.empty() && gpu)
     what = "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
-  else if (scene.simulation.backend == Backend::Cuda && has_servo(model))
+  else if (gpu && has_servo(model))
     // A servo moves by its whole load, which the ranks hold in parts: CPU ranks sum it in
     // their check (sum_servo_loads), GPU ranks do not yet.
     what = "servo walls on GPU ranks (backend = \"cuda\")";
   else if (scene.simulation.method == Method::AllPairs)
     what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
-  if (!what && scene.simulation.backend == Backend::Cuda)
+  if (!what && gpu)
     // A GPU rank's list in a periodic cell needs the cell one GPU needs (make_solver
     // checks it for one rank).
     return gpu_periodic_limit(scene, model).refusal;
@@ -234,6 +235,7 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   std::string why = refusal(scene, model);
   // GPU ranks: each on the GPU its rank on the node picks; a rank without one refuses.
   gpu_ = scene.simulation.backend == Backend::Cuda;
+  if (scene.simulation.backend == Backend::Auto && why.empty()) gpu_ = auto_takes_gpus(scene, model);
   if (gpu_) {
     const int local_rank = node_local_rank(comm_);
     std::string reason;
@@ -294,6 +296,21 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   whole.bond_damage.assign(SolverState::kBondStatePoints * scene_.bonds.size(), 0.0);
   whole.bond_dissipated.assign(scene_.bonds.size(), 0.0);
   decompose(whole);
+}
+
+template <class Real>
+bool MpiSolver<Real>::auto_takes_gpus(const Scene& scene, const ParticleModel& model) const {
+  // GPU ranks when every rank has a GPU and GPU ranks run the scene; CPU ranks otherwise,
+  // saying why where GPUs were there to take.
+  const int has_gpu = cuda_available() && cuda_device_count() > 0 ? 1 : 0;
+  int every = 0;
+  MPI_Allreduce(&has_gpu, &every, 1, MPI_INT, MPI_MIN, comm_);
+  if (every == 0) return false;
+  const std::string why = refusal(scene, model, Backend::Cuda);
+  if (why.empty()) return true;
+  if (rank_ == 0)
+    fmt::print(stderr, "note: backend = auto runs CPU ranks, not GPU ranks: {}\n", why);
+  return false;
 }
 
 template <class Real>

@@ -35,8 +35,13 @@
 
 namespace tridem::mpi {
 
-/// What the solver refuses on more than one rank, or empty (same on every rank).
-std::string refusal(const Scene& scene, const ParticleModel& model);
+/// What the solver refuses on more than one rank, or empty (same on every rank): on GPU
+/// ranks when `ranks` is Backend::Cuda, on CPU ranks otherwise.
+std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks);
+/// The same for the scene's backend (auto: CPU ranks, which every scene can fall back on).
+inline std::string refusal(const Scene& scene, const ParticleModel& model) {
+  return refusal(scene, model, scene.simulation.backend);
+}
 
 template <class Real>
 class MpiSolver final : public Solver {
@@ -67,6 +72,8 @@ class MpiSolver final : public Solver {
 
  private:
   enum Command : long long { kAdvance = 1, kSnapshot, kSave, kLoad, kEnergy, kStop, kAbort };
+  /// backend = "auto" (collective): whether the ranks run on GPUs.
+  bool auto_takes_gpus(const Scene& scene, const ParticleModel& model) const;
   void order(Command c, long long arg) const;
   void run_steps(std::int64_t steps);
   void step_once();

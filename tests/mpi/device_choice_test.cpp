@@ -44,6 +44,22 @@ TEST(MpiRefusal, CudaIsNoLongerRefusedOnRanks) {
   EXPECT_NE(refusal(scene, model).find("all-pairs"), std::string::npos);
 }
 
+// backend = "auto" falls back on CPU ranks, which run every scene ranks split: its own
+// refusal is the CPU ranks'; what GPU ranks cannot run is asked of them by name.
+TEST(MpiRefusal, AutoIsRefusedOnlyWhatCpuRanksCannotRun) {
+  Scene scene;
+  scene.source = "grains.toml";
+  scene.simulation.backend = Backend::Auto;
+  ParticleModel model;
+  model.bodies.first = {0, 3};
+  model.bodies.centroid.resize(1);
+  model.bodies.motion = {Motion::Free};
+  EXPECT_EQ(refusal(scene, model), "");
+  EXPECT_EQ(refusal(scene, model, Backend::Cpu), "");
+  EXPECT_NE(refusal(scene, model, Backend::Cuda).find("bodies of several triangles"),
+            std::string::npos);
+}
+
 // Bodies on CPU ranks: a servo (its body's load is gathered before the ranks sum it) and a
 // moving wall body of several triangles (bodies.csv sums its load from its members' start
 // poses) are refused; a fixed wall body of several triangles is not.

@@ -11,6 +11,8 @@
 #   refused NP PATTERN SCENE [tridem run options]: exit 1, one "error:" line, with PATTERN
 #   refused-without-gpu NP PATTERN SCENE [options]: refused, on a machine without a GPU
 #                  (exit 77, skipped, where nvidia-smi lists one)
+#   parity-without-gpu NP SCENE [options]: parity, on a machine without a GPU (skipped
+#                  where nvidia-smi lists one)
 # mpirun runs as root in CI (OMPI_ALLOW_RUN_AS_ROOT, set by CTest) and oversubscribes 2 cores.
 set -u
 tridem=$1 work=$2 mode=$3
@@ -31,9 +33,9 @@ case "$mode" in
       grep -q "solver $np ranks of" "$work/many.log" || fail "no '$np ranks' in the start line: $(head -3 "$work/many.log")"
       [ "$(grep -c '^tridem ' "$work/many.log")" = 1 ] || fail "the start line is not printed once"
       grep -q "first exchange .* GB/s" "$work/many.log" || fail "no measured bandwidth in the start line"
-      # EXPECT_DOMAINS: how the start line must say the ranks cut the scene.
-      [ -z "${EXPECT_DOMAINS:-}" ] || grep -qF "$EXPECT_DOMAINS" "$work/many.log" ||
-        fail "the start line does not say '$EXPECT_DOMAINS': $(head -3 "$work/many.log")"
+      # EXPECT_START: what the start line must say (how the ranks cut the scene, on what).
+      [ -z "${EXPECT_START:-}" ] || grep -qF "$EXPECT_START" "$work/many.log" ||
+        fail "the start line does not say '$EXPECT_START': $(head -3 "$work/many.log")"
     fi
     diff -r "$work/one" "$work/many" || fail "$np ranks differ from one rank"
     grep "plans" "$work/many.log"
@@ -69,9 +71,9 @@ case "$mode" in
     done
     echo "$np ranks stop with one rank's message: $(grep '^error: ' "$work/many.err" | cut -c1-120)"
     ;;
-  refused-without-gpu)
+  refused-without-gpu | parity-without-gpu)
     if nvidia-smi -L >/dev/null 2>&1; then echo "SKIP: this machine has a GPU"; exit 77; fi
-    exec bash "$0" "$tridem" "$work" refused "$@"
+    exec bash "$0" "$tridem" "$work" "${mode%-without-gpu}" "$@"
     ;;
   refused)
     np=$1 pattern=$2 scene=$3
