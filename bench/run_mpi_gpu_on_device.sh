@@ -65,6 +65,16 @@ for precision in double float; do
     done
   done
 done
+# Walls on motion programs, and servo walls: a servo's load summed across the ranks.
+for precision in double float; do
+  for scene in tests/mpi/programs.toml tests/mpi/servo.toml; do
+    s=$scene
+    [ "$precision" = float ] && s=$(float_copy "$scene")
+    for np in 2 3; do
+      run_case "$(basename "${scene%.toml}")_${precision}_np$np" parity $np "$s" --backend cuda
+    done
+  done
+done
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
 run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
 # backend = "auto" takes GPU ranks where every rank has a GPU; with bodies (which GPU

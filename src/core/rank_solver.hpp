@@ -73,10 +73,11 @@ class RankSolver {
   /// the first step).
   virtual void for_each_last_pair(const PairVisitor& f) const = 0;
   /// From the check hook: f for each pair of the step in progress, its forces computed, by
-  /// local index in slot order. CPU ranks only: GPU ranks are not given servo walls.
+  /// local index in slot order (GPU ranks visit only the pairs with a servo wall, all
+  /// that the servos' sums read).
   virtual void for_each_step_pair(const PairVisitor& f) const = 0;
   /// From the check hook: local particle i's force and torque for the rest of the step
-  /// (a servo wall's load summed across ranks, which its program reads). CPU ranks only.
+  /// (a servo wall's load summed across ranks, which its program reads).
   virtual void set_load(std::int32_t i, Vec2<Real> force, Real torque) = 0;
   /// Cohesive bonds (CPU ranks only): f(local bond, its elastic energy of the last step (0
   /// before the first), the energy it has released) for each local bond, in order.

@@ -201,10 +201,6 @@ std::string refusal(const Scene& scene, const ParticleModel& model, Backend rank
            "from their members at the step's start poses)";
   else if (!scene.bonds.empty() && gpu)
     what = "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
-  else if (gpu && has_servo(model))
-    // A servo moves by its whole load, which the ranks hold in parts: CPU ranks sum it in
-    // their check (sum_servo_loads), GPU ranks do not yet.
-    what = "servo walls on GPU ranks (backend = \"cuda\")";
   else if (scene.simulation.method == Method::AllPairs)
     what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
   if (!what && gpu)

@@ -2,12 +2,14 @@
 // rank's GPU, its step split at the Check (kRankPipeline), and its ghosts' states packed on
 // the GPU into one contiguous buffer per exchange, staged through pinned host memory for
 // MPI (no CUDA-aware MPI yet), and written back by one kernel, after which the solver
-// recomputes the geometry and the rebuild test of the new state.
+// recomputes the geometry and the rebuild test of the new state; a servo wall's pairs
+// listed on the GPU for the ranks' sum of its load.
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/cuda_solver.cuh"
 #include "core/rank_solver.hpp"
 #include "tridem/error.hpp"
 
+#include <algorithm>
 #include <type_traits>
 
 namespace tridem::cuda {
@@ -72,6 +74,39 @@ Columns state_columns(ParticleArrays<Real> p) {
 
 std::vector<int> as_int(const std::vector<std::int32_t>& v) { return {v.begin(), v.end()}; }
 
+/// A pair of the step in progress with a servo wall, as marked_pairs_kernel lists it.
+template <class Real>
+struct MarkedPair {
+  int slot, emitter, partner;
+  physics::PairLoad<Real> load;
+};
+
+/// Appends (in any order) every pair of the step whose emitter or partner `mask` marks.
+template <class Real>
+__global__ void marked_pairs_kernel(PairArrays<Real> q, const std::uint8_t* mask,
+                                    MarkedPair<Real>* out, int* count) {
+  const int s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s >= q.count) return;
+  const int e = q.emitter[s], j = q.partner[s];
+  if (mask[e] == 0 && mask[j] == 0) return;
+  out[atomicAdd(count, 1)] = {s, e, j, q.load[s]};
+}
+
+/// Which particles of `model` are servo walls, one byte each; empty when none is.
+std::vector<std::uint8_t> servo_mask(const ParticleModel& model) {
+  std::vector<std::uint8_t> mask(model.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    const std::int32_t k = model.program[i];
+    if (k >= 0 && model.programs[static_cast<std::size_t>(k)].kind == ProgramKind::Servo) {
+      mask[i] = 1;
+      any = true;
+    }
+  }
+  if (!any) mask.clear();
+  return mask;
+}
+
 }  // namespace
 
 template <class Real>
@@ -83,6 +118,12 @@ class CudaRank final : public RankSolver<Real> {
     const PeriodicCell& cell = scene.simulation.periodic;
     if (cell.x) period_x_ = cell.x->length();
     if (cell.y) period_y_ = cell.y->length();
+    const std::vector<std::uint8_t> servo = servo_mask(model);
+    if (!servo.empty()) {
+      servo_.upload(servo);
+      marked_count_.allocate(1);
+      host_marked_count_.allocate(1);
+    }
     flag_.allocate(1);
     host_flag_.allocate(1);
   }
@@ -201,13 +242,39 @@ class CudaRank final : public RankSolver<Real> {
   }
   double* body_receive_buffer() override { return nullptr; }
 
-  // Servo walls are refused on GPU ranks (mpi/mpi_solver.cpp, refusal): their loads are
-  // summed across CPU ranks only, so nothing calls these.
-  void for_each_step_pair(const typename RankSolver<Real>::PairVisitor&) const override {
-    throw RunError("internal error: a GPU rank was asked for a servo wall's pairs");
+  // Servo walls: MpiSolver sums each one's load across the ranks from the pairs that
+  // reach it (the only ones it asks for: a GPU rank visits those alone, listed on the GPU,
+  // in slot order), and writes the sum where the servo's law reads it.
+  void for_each_step_pair(const typename RankSolver<Real>::PairVisitor& f) const override {
+    const PairArrays<Real> q = solver_.step_pair_arrays();
+    if (servo_.size() == 0 || q.count == 0) return;
+    const cudaStream_t stream = solver_.stream();
+    if (marked_.size() < static_cast<std::size_t>(q.count))
+      marked_.allocate(static_cast<std::size_t>(q.count));
+    TRIDEM_CUDA_CHECK(cudaMemsetAsync(marked_count_.data(), 0, sizeof(int), stream));
+    marked_pairs_kernel<Real><<<blocks(static_cast<std::size_t>(q.count)), kBlock, 0, stream>>>(
+        q, servo_.data(), marked_.data(), marked_count_.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("marked_pairs_kernel");
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_marked_count_.data(), marked_count_.data(), sizeof(int),
+                                      cudaMemcpyDeviceToHost, stream));
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
+    std::vector<MarkedPair<Real>> pairs(static_cast<std::size_t>(*host_marked_count_.data()));
+    if (!pairs.empty())
+      TRIDEM_CUDA_CHECK(cudaMemcpy(pairs.data(), marked_.data(),
+                                   pairs.size() * sizeof(MarkedPair<Real>), cudaMemcpyDeviceToHost));
+    std::sort(pairs.begin(), pairs.end(),
+              [](const MarkedPair<Real>& a, const MarkedPair<Real>& b) { return a.slot < b.slot; });
+    for (const MarkedPair<Real>& m : pairs)
+      f(m.emitter, m.partner, physics::joined(m.load, physics::PairDetail<Real>{}));
   }
-  void set_load(std::int32_t, Vec2<Real>, Real) override {
-    throw RunError("internal error: a GPU rank was given a servo wall's load");
+  void set_load(std::int32_t i, Vec2<Real> force, Real torque) override {
+    const ParticleArrays<Real> p = solver_.device_arrays();
+    const Real values[3] = {force.x, force.y, torque};
+    Real* const to[3] = {p.fx + i, p.fy + i, p.torque + i};
+    for (int k = 0; k < 3; ++k)
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(to[k], &values[k], sizeof(Real), cudaMemcpyHostToDevice,
+                                        solver_.stream()));
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(solver_.stream()));
   }
 
   void elastic_terms(
@@ -230,6 +297,10 @@ class CudaRank final : public RankSolver<Real> {
   PinnedBuffer<double> host_send_, host_receive_;
   DeviceBuffer<double> reference_;  ///< own particles' centroids at the plan, (x, y) pairs
   double period_x_ = 0, period_y_ = 0;  ///< of a periodic cell, 0 along an open axis
+  DeviceBuffer<std::uint8_t> servo_;     ///< servo walls among the local particles (or empty)
+  mutable DeviceBuffer<MarkedPair<Real>> marked_;
+  mutable DeviceBuffer<int> marked_count_;
+  mutable PinnedBuffer<int> host_marked_count_;
   mutable DeviceBuffer<int> flag_;
   mutable PinnedBuffer<int> host_flag_;
 };

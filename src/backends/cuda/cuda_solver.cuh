@@ -82,6 +82,9 @@ class CudaSolver final : public Solver {
                   std::vector<physics::PairForce<Real>>& result) const;
   /// Each row's elastic energy as energy() adds them; empty when last_pairs has none.
   void row_elastic(std::vector<double>& rows) const;
+  /// The pair list of the step in progress, its loads computed from the PairForces stage
+  /// on (a check hook reads a servo wall's pairs there).
+  PairArrays<Real> step_pair_arrays() const { return step_pairs_; }
 
  private:
   friend class CudaStateCopy<Real>;  ///< the live view's copy reads the buffers and stream
