@@ -186,23 +186,32 @@ bool has_servo(const ParticleModel& m) {
 
 }  // namespace
 
-std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks) {
-  const bool gpu = ranks == Backend::Cuda;
-  const char* what = nullptr;
+namespace {
+
+/// What the ranks cannot split, as a phrase ("... on GPU ranks"), or nullptr.
+const char* unsplit(const Scene& scene, const ParticleModel& model, bool gpu) {
   if (!model.bodies.empty() && gpu)
-    what = "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
+    return "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
            "ranks (backend = \"cuda\")";
-  else if (!model.bodies.empty() && has_servo(model))
+  if (!model.bodies.empty() && has_servo(model))
     // A body's program reads the body's load, gathered from its members before the
     // check where the ranks sum a servo's load.
-    what = "servo walls in a scene with bodies of several triangles";
-  else if (moving_wall_body(model.bodies))
-    what = "moving wall bodies of several triangles (their load in bodies.csv is summed "
+    return "servo walls in a scene with bodies of several triangles";
+  if (moving_wall_body(model.bodies))
+    return "moving wall bodies of several triangles (their load in bodies.csv is summed "
            "from their members at the step's start poses)";
-  else if (!scene.bonds.empty() && gpu)
-    what = "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
-  else if (scene.simulation.method == Method::AllPairs)
-    what = "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
+  if (!scene.bonds.empty() && gpu)
+    return "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
+  if (scene.simulation.method == Method::AllPairs)
+    return "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
+  return nullptr;
+}
+
+}  // namespace
+
+std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks) {
+  const bool gpu = ranks == Backend::Cuda;
+  const char* what = unsplit(scene, model, gpu);
   if (!what && gpu)
     // A GPU rank's list in a periodic cell needs the cell one GPU needs (make_solver
     // checks it for one rank).
@@ -211,6 +220,12 @@ std::string refusal(const Scene& scene, const ParticleModel& model, Backend rank
   return fmt::format("{}: {} are not split across MPI ranks yet (docs/scaling.md); run "
                      "this scene on one rank (without mpirun, or mpirun -np 1)",
                      scene.source.empty() ? std::string("scene") : scene.source, what);
+}
+
+std::string gpu_ranks_decline(const Scene& scene, const ParticleModel& model) {
+  if (const char* what = unsplit(scene, model, true))
+    return fmt::format("{} are not split across MPI ranks yet", what);
+  return gpu_periodic_limit(scene, model).reason;
 }
 
 template <class Real>
@@ -302,7 +317,7 @@ bool MpiSolver<Real>::auto_takes_gpus(const Scene& scene, const ParticleModel& m
   int every = 0;
   MPI_Allreduce(&has_gpu, &every, 1, MPI_INT, MPI_MIN, comm_);
   if (every == 0) return false;
-  const std::string why = refusal(scene, model, Backend::Cuda);
+  const std::string why = gpu_ranks_decline(scene, model);
   if (why.empty()) return true;
   if (rank_ == 0)
     fmt::print(stderr, "note: backend = auto runs CPU ranks, not GPU ranks: {}\n", why);

@@ -38,6 +38,9 @@ namespace tridem::mpi {
 /// What the solver refuses on more than one rank, or empty (same on every rank): on GPU
 /// ranks when `ranks` is Backend::Cuda, on CPU ranks otherwise.
 std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks);
+/// Why backend = "auto" runs the scene on CPU ranks rather than GPU ranks (a phrase for
+/// its note), or empty when GPU ranks run it.
+std::string gpu_ranks_decline(const Scene& scene, const ParticleModel& model);
 /// The same for the scene's backend (auto: CPU ranks, which every scene can fall back on).
 inline std::string refusal(const Scene& scene, const ParticleModel& model) {
   return refusal(scene, model, scene.simulation.backend);

@@ -58,6 +58,12 @@ TEST(MpiRefusal, AutoIsRefusedOnlyWhatCpuRanksCannotRun) {
   EXPECT_EQ(refusal(scene, model, Backend::Cpu), "");
   EXPECT_NE(refusal(scene, model, Backend::Cuda).find("bodies of several triangles"),
             std::string::npos);
+  // auto's note says what GPU ranks do not split, not to run on one rank.
+  const std::string note = gpu_ranks_decline(scene, model);
+  EXPECT_NE(note.find("bodies of several triangles"), std::string::npos) << note;
+  EXPECT_EQ(note.find("one rank"), std::string::npos) << note;
+  model.bodies = BodyModel{};
+  EXPECT_EQ(gpu_ranks_decline(scene, model), "");
 }
 
 // Bodies on CPU ranks: a servo (its body's load is gathered before the ranks sum it) and a
