@@ -59,7 +59,7 @@ TRIDEM_HD inline void visit_images(const AssignmentView<Real>& v, int i, Image&&
 /// way that reaches it, so that no sub-domain stages a particle twice.
 template <class Real, class Reached>
 TRIDEM_HD inline void visit_bands(const AssignmentView<Real>& v, const Hull<Real>* hull, int i,
-                                   Reached&& reached) {
+                                  Reached&& reached) {
   const Real lx = v.lo_x[i], ly = v.lo_y[i], hx = v.hi_x[i], hy = v.hi_y[i];
   const std::int64_t row = v.cell_row(i), column = v.cell_column(i);
   v.map.visit_near(row, column, [&](int k) {
@@ -72,9 +72,8 @@ TRIDEM_HD inline void visit_bands(const AssignmentView<Real>& v, const Hull<Real
       if (v.map.near(row, column, k) && box_reaches(lx, ly, hx, hy, hull[k])) return;
       bool earlier = false;
       visit_images(v, i, [&](int t2, double sx2, double sy2, std::int64_t r2, std::int64_t c2) {
-        earlier = earlier ||
-                  (t2 < t && v.map.near(r2, c2, k) &&
-                   image_reaches(v.frame, hull[k], lx, ly, hx, hy, sx2, sy2));
+        earlier = earlier || (t2 < t && v.map.near(r2, c2, k) &&
+                              image_reaches(v.frame, hull[k], lx, ly, hx, hy, sx2, sy2));
       });
       if (!earlier) reached(k);
     });

@@ -88,8 +88,10 @@ struct DomainMap {
     int lo = 0, hi = rows;  // row_first[lo] <= k < row_first[hi]
     while (hi - lo > 1) {
       const int mid = lo + (hi - lo) / 2;
-      if (row_first[mid] <= k) lo = mid;
-      else hi = mid;
+      if (row_first[mid] <= k)
+        lo = mid;
+      else
+        hi = mid;
     }
     return lo;
   }

@@ -49,10 +49,10 @@ TRIDEM_HD void for_each_image(const physics::PeriodicFrame& f, const Hull<double
 /// A margin of a few roundings of the cell and the coordinates: an image's box is a box
 /// moved by a sum of periods, and the pair test that follows (passes_periodic_contact_test)
 /// allows as much.
-TRIDEM_HD inline double image_margin(const physics::PeriodicFrame& f, double a, double b,
-                                     double c, double d) {
-  return 16 * DBL_EPSILON * (::fabs(f.lx) + ::fabs(f.ly) + ::fabs(a) + ::fabs(b) + ::fabs(c) +
-                             ::fabs(d));
+TRIDEM_HD inline double image_margin(const physics::PeriodicFrame& f, double a, double b, double c,
+                                     double d) {
+  return 16 * DBL_EPSILON *
+         (::fabs(f.lx) + ::fabs(f.ly) + ::fabs(a) + ::fabs(b) + ::fabs(c) + ::fabs(d));
 }
 
 /// Whether box (lo, hi) moved by (sx, sy) reaches hull h within its margin: the box

@@ -246,7 +246,8 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   std::string why = refusal(scene, model);
   // GPU ranks: each on the GPU its rank on the node picks; a rank without one refuses.
   gpu_ = scene.simulation.backend == Backend::Cuda;
-  if (scene.simulation.backend == Backend::Auto && why.empty()) gpu_ = auto_takes_gpus(scene, model);
+  if (scene.simulation.backend == Backend::Auto && why.empty())
+    gpu_ = auto_takes_gpus(scene, model);
   if (gpu_) {
     const int local_rank = node_local_rank(comm_);
     std::string reason;

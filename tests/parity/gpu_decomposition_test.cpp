@@ -95,11 +95,12 @@ TEST(GpuDecomposition, PeriodicCellsReproduceTheCudaGridBitForBit) {
     for (const auto layout : {DecompositionLayout::Strips, DecompositionLayout::Grid})
       for (const Precision precision : {Precision::Double, Precision::Float}) {
         const Scene s = test::with_decomposition(scene, layout, 40);
-        SCOPED_TRACE(fmt::format("{}, {}, {}", name, layout == DecompositionLayout::Grid ? "2d" : "1d",
+        SCOPED_TRACE(fmt::format("{}, {}, {}", name,
+                                 layout == DecompositionLayout::Grid ? "2d" : "1d",
                                  precision == Precision::Float ? "float" : "double"));
         const Snapshot grid = test::run_to(s, Backend::Cuda, 600, precision, Method::Grid);
-        const auto dd = test::advanced_solver(s, Backend::Cuda, 600, precision,
-                                              Method::Decomposition);
+        const auto dd =
+            test::advanced_solver(s, Backend::Cuda, 600, precision, Method::Decomposition);
         Snapshot snap;
         dd->snapshot(snap, true);
         test::expect_identical(grid, snap);

@@ -194,10 +194,9 @@ class CudaRank final : public RankSolver<Real> {
     const cudaStream_t stream = solver_.stream();
     const ParticleArrays<Real> p = solver_.device_arrays();
     TRIDEM_CUDA_CHECK(cudaMemsetAsync(flag_.data(), 0, sizeof(int), stream));
-    drift_kernel<<<blocks(owned_), kBlock, 0, stream>>>(p.x, p.y, own_index_.data(),
-                                                        static_cast<int>(owned_), reference_.data(),
-                                                        limit * limit, period_x_, period_y_,
-                                                        flag_.data());
+    drift_kernel<<<blocks(owned_), kBlock, 0, stream>>>(
+        p.x, p.y, own_index_.data(), static_cast<int>(owned_), reference_.data(), limit * limit,
+        period_x_, period_y_, flag_.data());
     TRIDEM_CUDA_CHECK_LAUNCH("drift_kernel");
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_flag_.data(), flag_.data(), sizeof(int),
                                       cudaMemcpyDeviceToHost, stream));
@@ -261,7 +260,8 @@ class CudaRank final : public RankSolver<Real> {
     std::vector<MarkedPair<Real>> pairs(static_cast<std::size_t>(*host_marked_count_.data()));
     if (!pairs.empty())
       TRIDEM_CUDA_CHECK(cudaMemcpy(pairs.data(), marked_.data(),
-                                   pairs.size() * sizeof(MarkedPair<Real>), cudaMemcpyDeviceToHost));
+                                   pairs.size() * sizeof(MarkedPair<Real>),
+                                   cudaMemcpyDeviceToHost));
     std::sort(pairs.begin(), pairs.end(),
               [](const MarkedPair<Real>& a, const MarkedPair<Real>& b) { return a.slot < b.slot; });
     for (const MarkedPair<Real>& m : pairs)
@@ -297,7 +297,7 @@ class CudaRank final : public RankSolver<Real> {
   PinnedBuffer<double> host_send_, host_receive_;
   DeviceBuffer<double> reference_;  ///< own particles' centroids at the plan, (x, y) pairs
   double period_x_ = 0, period_y_ = 0;  ///< of a periodic cell, 0 along an open axis
-  DeviceBuffer<std::uint8_t> servo_;     ///< servo walls among the local particles (or empty)
+  DeviceBuffer<std::uint8_t> servo_;    ///< servo walls among the local particles (or empty)
   mutable DeviceBuffer<MarkedPair<Real>> marked_;
   mutable DeviceBuffer<int> marked_count_;
   mutable PinnedBuffer<int> host_marked_count_;

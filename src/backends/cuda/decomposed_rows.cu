@@ -64,8 +64,7 @@ void DecomposedRows<Real>::update_on_host(const ParticleArrays<Real>& p,
   }
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   // OpenMP on the host; the result does not depend on it.
-  decomposition_.update({host_c[0], host_c[1], host[0], host[1], host[2], host[3]}, true,
-                        periodic);
+  decomposition_.update({host_c[0], host_c[1], host[0], host[1], host[2], host[3]}, true, periodic);
   assignment_.take_from_host(decomposition_);
 }
 
@@ -81,10 +80,14 @@ void DecomposedRows<Real>::build(const ParticleArrays<Real>& p, PairListBuilder<
   assignment_.count_migrations();
   ++builds_;
 
-  DomainLists lists{decomposition_.capacity(), assignment_.member_offset(),
-                    assignment_.members(),     assignment_.owned_offset(),
-                    assignment_.owned(),       large_.data(),
-                    static_cast<int>(decomposition_.large().size()), filter_};
+  DomainLists lists{decomposition_.capacity(),
+                    assignment_.member_offset(),
+                    assignment_.members(),
+                    assignment_.owned_offset(),
+                    assignment_.owned(),
+                    large_.data(),
+                    static_cast<int>(decomposition_.large().size()),
+                    filter_};
   if (periodic) {
     lists.frame = *periodic;
     fill_rows<true>(p, list, lists);

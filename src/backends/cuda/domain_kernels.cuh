@@ -83,8 +83,7 @@ __device__ inline TriangleArrays<Real> geometry_of(const ParticleArrays<Real>& p
 /// touch an owned emitter through a boundary.
 template <class Real, bool kFill, bool kPeriodic = false>
 __global__ void __launch_bounds__(kDomainThreads)
-    domain_rows_kernel(ParticleArrays<Real> p, DomainLists d, int* row_count,
-                       RowHistory<Real> t) {
+    domain_rows_kernel(ParticleArrays<Real> p, DomainLists d, int* row_count, RowHistory<Real> t) {
   extern __shared__ __align__(16) unsigned char staged_raw[];
   const StagedParticles<Real> s = StagedParticles<Real>::carve(staged_raw, d.capacity);
   const TriangleArrays<Real> g = geometry_of(p), staged_g = s.view();

@@ -223,8 +223,8 @@ TEST_P(DecompositionBookkeeping, PeriodicBandsFromEitherSideAreTheSame) {
     std::size_t through = 0;
     for (int step = 0; step < 12; ++step) {
       d.update(c.input(), false, &f);
-      SCOPED_TRACE(::testing::Message() << "periodic y " << cell.py << ", shift " << cell.shift
-                                        << ", step " << step);
+      SCOPED_TRACE(::testing::Message()
+                   << "periodic y " << cell.py << ", shift " << cell.shift << ", step " << step);
       expect_owned_and_staged(d, c, &f);
       if (testing::Test::HasFailure()) return;
       // Staged though its box does not reach the hull: an image of it does.
