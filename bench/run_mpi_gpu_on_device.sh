@@ -55,19 +55,11 @@ grep -h "GPU ranks" "$out"/work/jostling_pile_double_np3/many.log | head -1 | se
 # A grid of 2 x 2 domains (mpi/strip_plan's grid plan) on GPU ranks, in both precisions.
 EXPECT_START="a grid of 2 x 2 domains" run_case square_double_np4 parity 4 tests/mpi/square.toml --backend cuda
 EXPECT_START="a grid of 2 x 2 domains" run_case square_float_np4 parity 4 "$(float_copy tests/mpi/square.toml)" --backend cuda
-# Periodic cells: the strips' ring along x, and along y under Lees-Edwards shear.
+# Periodic cells (the strips' ring along x, and along y under Lees-Edwards shear), walls on
+# motion programs, and servo walls (a servo's load summed across the ranks), on 2 and 3.
 for precision in double float; do
-  for scene in tests/mpi/periodic.toml tests/mpi/sheared.toml; do
-    s=$scene
-    [ "$precision" = float ] && s=$(float_copy "$scene")
-    for np in 2 3; do
-      run_case "$(basename "${scene%.toml}")_${precision}_np$np" parity $np "$s" --backend cuda
-    done
-  done
-done
-# Walls on motion programs, and servo walls: a servo's load summed across the ranks.
-for precision in double float; do
-  for scene in tests/mpi/programs.toml tests/mpi/servo.toml; do
+  for scene in tests/mpi/periodic.toml tests/mpi/sheared.toml tests/mpi/programs.toml \
+               tests/mpi/servo.toml; do
     s=$scene
     [ "$precision" = float ] && s=$(float_copy "$scene")
     for np in 2 3; do
