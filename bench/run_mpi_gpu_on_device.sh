@@ -67,6 +67,15 @@ for precision in double float; do
     done
   done
 done
+# Cohesive bonds (a Gmsh-meshed bar crushed by a piston): a bond's state from its pair's
+# authority; and 3 ranks to step 1000, then 2 from the checkpoint.
+for precision in double float; do
+  s=tests/mpi/bonds.toml
+  [ "$precision" = float ] && s=$(float_copy "$s")
+  for np in 2 3; do run_case "bonds_${precision}_np$np" parity $np "$s" --backend cuda; done
+done
+sed '/^\[simulation\]/a backend = "cuda"' tests/mpi/bonds.toml >"$out/scenes/bonds_cuda.toml"
+run_case bonds_restart_3_on_2 restart 3 2 "$out/scenes/bonds_cuda.toml" 1000
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
 run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
 # backend = "auto" takes GPU ranks where every rank has a GPU; with bodies (which GPU

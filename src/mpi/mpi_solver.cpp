@@ -200,8 +200,6 @@ const char* unsplit(const Scene& scene, const ParticleModel& model, bool gpu) {
   if (moving_wall_body(model.bodies))
     return "moving wall bodies of several triangles (their load in bodies.csv is summed "
            "from their members at the step's start poses)";
-  if (!scene.bonds.empty() && gpu)
-    return "cohesive bonds (a bonded [[mesh]]) on GPU ranks (backend = \"cuda\")";
   if (scene.simulation.method == Method::AllPairs)
     return "method = \"all-pairs\" (every wall emits its pairs there, across every strip)";
   return nullptr;
@@ -272,7 +270,7 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   }
   // A skin of one particle radius: the plan lasts until something moves half of it.
   skin_ = largest;
-  // What a CPU rank's solver reads of the scene: its settings and materials, and its own
+  // What a rank's solver reads of the scene: its settings and materials, and its own
   // bonds (build_local); not the scene's triangles.
   rank_scene_ = scene_;
   rank_scene_.triangles.clear();
@@ -587,25 +585,25 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
   }
   SolverConfig config;
   config.force = true;  // the whole scene's time step was checked by the run
+  // The bonds between particles this rank holds, in the scene's order.
+  rank_scene_.bonds.clear();
+  global_bond_.clear();
+  for (std::size_t k = 0; k < scene_.bonds.size(); ++k) {
+    BondSpec b = scene_.bonds[k];
+    const std::int32_t la = local_of_[b.a], lb = local_of_[b.b];
+    if (la < 0 || lb < 0) continue;
+    b.a = static_cast<std::size_t>(la);
+    b.b = static_cast<std::size_t>(lb);
+    rank_scene_.bonds.push_back(b);
+    global_bond_.push_back(static_cast<std::int32_t>(k));
+  }
   if (gpu_) {
     config.device = device_;
     local_.reset();  // its GPU memory first
-    local_ = make_cuda_rank<Real>(scene_, slice(model_, global_), ts_, config);
+    local_ = make_cuda_rank<Real>(rank_scene_, slice(model_, global_), ts_, config);
   } else {
     ParticleModel local_model = slice(model_, global_);
     local_model.bodies = slice_bodies(model_.bodies, global_, global_body_);
-    // The bonds between particles this rank holds, in the scene's order.
-    rank_scene_.bonds.clear();
-    global_bond_.clear();
-    for (std::size_t k = 0; k < scene_.bonds.size(); ++k) {
-      BondSpec b = scene_.bonds[k];
-      const std::int32_t la = local_of_[b.a], lb = local_of_[b.b];
-      if (la < 0 || lb < 0) continue;
-      b.a = static_cast<std::size_t>(la);
-      b.b = static_cast<std::size_t>(lb);
-      rank_scene_.bonds.push_back(b);
-      global_bond_.push_back(static_cast<std::int32_t>(k));
-    }
     local_ = std::make_unique<CpuRank<Real>>(rank_scene_, local_model, ts_, config);
   }
   local_->solver().set_stage_timing(timing_);

@@ -152,7 +152,7 @@ class MpiSolver final : public Solver {
   // Bodies of several triangles (CPU ranks): each local body's global body, and the body
   // exchange's layout, as the particles'.
   std::vector<std::int32_t> global_body_;
-  Scene rank_scene_;                       ///< a CPU rank's scene: settings and its bonds
+  Scene rank_scene_;                       ///< a rank's scene: settings and its bonds
   std::vector<std::int32_t> global_bond_;  ///< each local bond's index in the scene
   /// Whether this rank reports bond k (of the scene): the authority of its pair.
   bool reports_bond(std::size_t k) const {

@@ -235,9 +235,10 @@ class CudaRank final : public RankSolver<Real> {
       throw RunError("internal error: a GPU rank was given bodies to exchange");
   }
   double* body_send_buffer() override { return nullptr; }
-  // Bonds are refused on GPU ranks (mpi/mpi_solver.cpp, refusal).
-  void bond_terms(const std::function<void(std::size_t, double, double)>&) const override {
-    throw RunError("internal error: a GPU rank was asked for its bonds");
+  void bond_terms(const std::function<void(std::size_t, double, double)>& f) const override {
+    std::vector<double> elastic, released;
+    solver_.bond_terms(elastic, released);
+    for (std::size_t k = 0; k < elastic.size(); ++k) f(k, elastic[k], released[k]);
   }
   double* body_receive_buffer() override { return nullptr; }
 

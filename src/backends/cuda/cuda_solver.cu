@@ -552,24 +552,32 @@ EnergyBudget CudaSolver<Real>::energy() const {
   }
   EnergyBudget b;
   b.elastic = totals[kEnergyAccumulators];
-  if (bonds_.size() > 0) {  // the CPU's order: the pairs' energy, then the bonds' ascending
-    std::vector<double> bond_sums(bonds_.size());
-    if (results_) {
-      bond_elastic_kernel<Real>
-          <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(bond_arrays(), bonds_.elastic.data());
-      TRIDEM_CUDA_CHECK_LAUNCH("bond_elastic_kernel");
-      TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-      bonds_.elastic.download(bond_sums);
-      for (double v : bond_sums) b.elastic += v;
-    }
-    bonds_.d.dissipated.download(bond_sums);
-    for (double v : bond_sums) b.dissipated_fracture += v;
-  }
+  // The CPU's order: the pairs' energy, then the bonds' ascending.
+  std::vector<double> bond_elastic, released;
+  bond_terms(bond_elastic, released);
+  for (double v : bond_elastic) b.elastic += v;
+  for (double v : released) b.dissipated_fracture += v;
   b.dissipated_damping = totals[kDissipatedDamping];
   b.dissipated_friction = totals[kDissipatedFriction];
   b.dissipated_local = totals[kDissipatedLocal];
   b.wall_work = totals[kWallWork];
   return b;
+}
+
+template <class Real>
+void CudaSolver<Real>::bond_terms(std::vector<double>& elastic,
+                                  std::vector<double>& released) const {
+  elastic.assign(bonds_.size(), 0.0);
+  released.assign(bonds_.size(), 0.0);
+  if (bonds_.size() == 0) return;
+  if (results_) {
+    bond_elastic_kernel<Real>
+        <<<blocks(bonds_.size()), kBlock, 0, stream_>>>(bond_arrays(), bonds_.elastic.data());
+    TRIDEM_CUDA_CHECK_LAUNCH("bond_elastic_kernel");
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    bonds_.elastic.download(elastic);
+  }
+  bonds_.d.dissipated.download(released);
 }
 
 template <class Real>

@@ -82,6 +82,10 @@ class CudaSolver final : public Solver {
                   std::vector<physics::PairForce<Real>>& result) const;
   /// Each row's elastic energy as energy() adds them; empty when last_pairs has none.
   void row_elastic(std::vector<double>& rows) const;
+  /// Each bond's elastic energy at the last step (0 before the first and after
+  /// load_state, as energy() counts it) and the energy it has released, as energy() adds
+  /// them (empty without bonds).
+  void bond_terms(std::vector<double>& elastic, std::vector<double>& released) const;
   /// The pair list of the step in progress, its loads computed from the PairForces stage
   /// on (a check hook reads a servo wall's pairs there).
   PairArrays<Real> step_pair_arrays() const { return step_pairs_; }
