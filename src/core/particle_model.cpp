@@ -226,6 +226,17 @@ bool walls_move(const ParticleModel& model) {
   return false;
 }
 
+std::vector<std::uint8_t> servo_wall_mask(const ParticleModel& model) {
+  std::vector<std::uint8_t> mask;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    const std::int32_t k = model.program[i];
+    if (k < 0 || model.programs[static_cast<std::size_t>(k)].kind != ProgramKind::Servo) continue;
+    mask.resize(model.size(), 0);
+    mask[i] = 1;
+  }
+  return mask;
+}
+
 double material_restitution(const Material& m) {
   return physics::material_restitution(m.restitution, m.damping);
 }

@@ -45,6 +45,10 @@ inline constexpr std::size_t kParticleModelBytes =
 /// program, so that walls do work on the grains (the energy budget's wall work).
 bool walls_move(const ParticleModel& model);
 
+/// One byte per particle, 1 for a wall on a servo program (its law reads its whole load);
+/// empty when no particle is one.
+std::vector<std::uint8_t> servo_wall_mask(const ParticleModel& model);
+
 /// Builds the model; throws SceneError for a scene without triangles, and one naming the
 /// particle for a triangle validate_scene refuses (scene_detail::triangle_problem: a
 /// degenerate shape, a non-finite value, a bad material index, a fixed one that moves).

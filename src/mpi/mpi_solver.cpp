@@ -276,13 +276,7 @@ MpiSolver<Real>::MpiSolver(MPI_Comm comm, const Scene& scene, const ParticleMode
   rank_scene_.triangles.clear();
   rank_scene_.triangles.shrink_to_fit();
   rank_scene_.bonds.clear();
-  for (std::size_t i = 0; i < n_; ++i) {
-    const std::int32_t k = model_.program[i];
-    if (k >= 0 && is_servo(model_.programs[static_cast<std::size_t>(k)])) {
-      servo_.resize(n_, 0);
-      servo_[i] = 1;
-    }
-  }
+  servo_ = servo_wall_mask(model_);
 
   char version[MPI_MAX_LIBRARY_VERSION_STRING] = {};
   int length = 0;

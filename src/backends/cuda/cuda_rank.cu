@@ -92,21 +92,6 @@ __global__ void marked_pairs_kernel(PairArrays<Real> q, const std::uint8_t* mask
   out[atomicAdd(count, 1)] = {s, e, j, q.load[s]};
 }
 
-/// Which particles of `model` are servo walls, one byte each; empty when none is.
-std::vector<std::uint8_t> servo_mask(const ParticleModel& model) {
-  std::vector<std::uint8_t> mask(model.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    const std::int32_t k = model.program[i];
-    if (k >= 0 && model.programs[static_cast<std::size_t>(k)].kind == ProgramKind::Servo) {
-      mask[i] = 1;
-      any = true;
-    }
-  }
-  if (!any) mask.clear();
-  return mask;
-}
-
 }  // namespace
 
 template <class Real>
@@ -118,7 +103,7 @@ class CudaRank final : public RankSolver<Real> {
     const PeriodicCell& cell = scene.simulation.periodic;
     if (cell.x) period_x_ = cell.x->length();
     if (cell.y) period_y_ = cell.y->length();
-    const std::vector<std::uint8_t> servo = servo_mask(model);
+    const std::vector<std::uint8_t> servo = servo_wall_mask(model);
     if (!servo.empty()) {
       servo_.upload(servo);
       marked_count_.allocate(1);
