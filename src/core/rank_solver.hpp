@@ -79,7 +79,7 @@ class RankSolver {
   /// From the check hook: local particle i's force and torque for the rest of the step
   /// (a servo wall's load summed across ranks, which its program reads).
   virtual void set_load(std::int32_t i, Vec2<Real> force, Real torque) = 0;
-  /// Cohesive bonds (CPU ranks only): f(local bond, its elastic energy of the last step (0
+  /// Cohesive bonds: f(local bond, its elastic energy of the last step (0
   /// before the first), the energy it has released) for each local bond, in order.
   virtual void bond_terms(const std::function<void(std::size_t, double, double)>& f) const = 0;
   /// The elastic energy in the terms the backend's energy() adds: f(emitter, partner, value)
