@@ -80,19 +80,17 @@ sed '/^\[simulation\]/a backend = "cuda"' tests/mpi/bonds.toml >"$out/scenes/bon
 run_case bonds_restart_3_on_2 restart 3 2 "$out/scenes/bonds_cuda.toml" 1000
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
 run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
-# backend = "auto" takes GPU ranks where every rank has a GPU; with bodies (which GPU
-# ranks refuse) it runs CPU ranks, saying why.
+# backend = "auto" takes GPU ranks where every rank has a GPU.
 EXPECT_START="GPU ranks" run_case auto_np2 parity 2 tests/mpi/jostling_pile.toml --backend auto
-if [[ -z "${CASES:-}" || auto_bodies_np2 =~ $CASES ]]; then
-  total=$((total + 1))
-  if mpirun --oversubscribe -np 2 "$tridem" run tests/mpi/bodies.toml --backend auto --steps 10 \
-       --out "$out/work/auto_bodies" --quiet >"$out/auto_bodies.log" 2>&1 &&
-     grep -q "CPU ranks" "$out/auto_bodies.log" && grep -q "note: backend = auto runs CPU ranks" "$out/auto_bodies.log"; then
-    pass=$((pass + 1)); echo "PASS auto_bodies_np2: CPU ranks, with the note"
-  else
-    echo "FAIL auto_bodies_np2: $(head -5 "$out/auto_bodies.log")"
-  fi
-fi
+# Bodies of several triangles (180 angular grains): held whole, their State exchanged
+# beside their members'; and 3 ranks to step 1500, then 2 from the checkpoint.
+for precision in double float; do
+  s=tests/mpi/bodies.toml
+  [ "$precision" = float ] && s=$(float_copy "$s")
+  for np in 2 3; do run_case "bodies_${precision}_np$np" parity $np "$s" --backend cuda; done
+done
+sed '/^\[simulation\]/a backend = "cuda"' tests/mpi/bodies.toml >"$out/scenes/bodies_cuda.toml"
+run_case bodies_restart_3_on_2 restart 3 2 "$out/scenes/bodies_cuda.toml" 1500
 # 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
 # (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"

@@ -189,10 +189,7 @@ bool has_servo(const ParticleModel& m) {
 namespace {
 
 /// What the ranks cannot split, as a phrase ("... on GPU ranks"), or nullptr.
-const char* unsplit(const Scene& scene, const ParticleModel& model, bool gpu) {
-  if (!model.bodies.empty() && gpu)
-    return "bodies of several triangles ([[body]], [[generate]] kind = \"polygons\") on GPU "
-           "ranks (backend = \"cuda\")";
+const char* unsplit(const Scene& scene, const ParticleModel& model) {
   if (!model.bodies.empty() && has_servo(model))
     // A body's program reads the body's load, gathered from its members before the
     // check where the ranks sum a servo's load.
@@ -209,7 +206,7 @@ const char* unsplit(const Scene& scene, const ParticleModel& model, bool gpu) {
 
 std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks) {
   const bool gpu = ranks == Backend::Cuda;
-  const char* what = unsplit(scene, model, gpu);
+  const char* what = unsplit(scene, model);
   if (!what && gpu)
     // A GPU rank's list in a periodic cell needs the cell one GPU needs (make_solver
     // checks it for one rank).
@@ -221,8 +218,9 @@ std::string refusal(const Scene& scene, const ParticleModel& model, Backend rank
 }
 
 std::string gpu_ranks_decline(const Scene& scene, const ParticleModel& model) {
-  if (const char* what = unsplit(scene, model, true))
+  if (const char* what = unsplit(scene, model))
     return fmt::format("{} are not split across MPI ranks yet", what);
+  // GPU ranks run what CPU ranks split, in a periodic cell as long as one GPU needs.
   return gpu_periodic_limit(scene, model).reason;
 }
 
@@ -591,13 +589,13 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     rank_scene_.bonds.push_back(b);
     global_bond_.push_back(static_cast<std::int32_t>(k));
   }
+  ParticleModel local_model = slice(model_, global_);
+  local_model.bodies = slice_bodies(model_.bodies, global_, global_body_);
   if (gpu_) {
     config.device = device_;
     local_.reset();  // its GPU memory first
-    local_ = make_cuda_rank<Real>(rank_scene_, slice(model_, global_), ts_, config);
+    local_ = make_cuda_rank<Real>(rank_scene_, local_model, ts_, config);
   } else {
-    ParticleModel local_model = slice(model_, global_);
-    local_model.bodies = slice_bodies(model_.bodies, global_, global_body_);
     local_ = std::make_unique<CpuRank<Real>>(rank_scene_, local_model, ts_, config);
   }
   local_->solver().set_stage_timing(timing_);

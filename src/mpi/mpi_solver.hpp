@@ -36,7 +36,8 @@
 namespace tridem::mpi {
 
 /// What the solver refuses on more than one rank, or empty (same on every rank): on GPU
-/// ranks when `ranks` is Backend::Cuda, on CPU ranks otherwise.
+/// ranks when `ranks` is Backend::Cuda (besides, a periodic cell too short for one GPU's
+/// list), on CPU ranks otherwise.
 std::string refusal(const Scene& scene, const ParticleModel& model, Backend ranks);
 /// Why backend = "auto" runs the scene on CPU ranks rather than GPU ranks (a phrase for
 /// its note), or empty when GPU ranks run it.

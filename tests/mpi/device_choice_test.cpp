@@ -45,28 +45,32 @@ TEST(MpiRefusal, CudaIsNoLongerRefusedOnRanks) {
 }
 
 // backend = "auto" falls back on CPU ranks, which run every scene ranks split: its own
-// refusal is the CPU ranks'; what GPU ranks cannot run is asked of them by name.
+// refusal is the CPU ranks'. GPU ranks decline a periodic cell shorter than one GPU's list
+// needs (8 reaches and twice the skin), which CPU ranks run; auto's note says so.
 TEST(MpiRefusal, AutoIsRefusedOnlyWhatCpuRanksCannotRun) {
   Scene scene;
-  scene.source = "grains.toml";
+  scene.source = "gas.toml";
   scene.simulation.backend = Backend::Auto;
-  ParticleModel model;
-  model.bodies.first = {0, 3};
-  model.bodies.centroid.resize(1);
-  model.bodies.motion = {Motion::Free};
+  scene.materials.push_back(Material{"g", 1000, 1e7});
+  TriangleSpec t;
+  t.vertices = {Vec2d{0.1, 0.1}, Vec2d{0.2, 0.1}, Vec2d{0.15, 0.18}};
+  scene.triangles.push_back(t);
+  scene.simulation.periodic.x = PeriodicRange{0, 0.6};  // reach 0.057: 8 of it are 0.45
+  ParticleModel model = build_particle_model(scene);
   EXPECT_EQ(refusal(scene, model), "");
-  EXPECT_EQ(refusal(scene, model, Backend::Cpu), "");
-  EXPECT_NE(refusal(scene, model, Backend::Cuda).find("bodies of several triangles"),
-            std::string::npos);
-  // auto's note says what GPU ranks do not split, not to run on one rank.
-  const std::string note = gpu_ranks_decline(scene, model);
-  EXPECT_NE(note.find("bodies of several triangles"), std::string::npos) << note;
-  EXPECT_EQ(note.find("one rank"), std::string::npos) << note;
-  model.bodies = BodyModel{};
+  EXPECT_EQ(refusal(scene, model, Backend::Cuda), "");
   EXPECT_EQ(gpu_ranks_decline(scene, model), "");
+  scene.simulation.periodic.x = PeriodicRange{0, 0.3};  // over 4 reaches, not 8
+  model = build_particle_model(scene);
+  EXPECT_EQ(refusal(scene, model), "");
+  EXPECT_NE(refusal(scene, model, Backend::Cuda).find("too short for backend 'cuda'"),
+            std::string::npos);
+  const std::string note = gpu_ranks_decline(scene, model);
+  EXPECT_NE(note.find("its cell is shorter than"), std::string::npos) << note;
+  EXPECT_EQ(note.find("one rank"), std::string::npos) << note;
 }
 
-// Bodies on CPU ranks: a servo (its body's load is gathered before the ranks sum it) and a
+// Bodies on ranks: a servo (its body's load is gathered before the ranks sum it) and a
 // moving wall body of several triangles (bodies.csv sums its load from its members' start
 // poses) are refused; a fixed wall body of several triangles is not.
 TEST(MpiRefusal, WhatBodiesOnCpuRanksCannotDo) {
@@ -86,8 +90,9 @@ TEST(MpiRefusal, WhatBodiesOnCpuRanksCannotDo) {
   model.programs.push_back(servo);
   EXPECT_NE(refusal(scene, model).find("servo walls in a scene with bodies"), std::string::npos);
   model.programs.clear();
+  // GPU ranks split bodies as CPU ranks do.
   scene.simulation.backend = Backend::Cuda;
-  EXPECT_NE(refusal(scene, model).find("on GPU ranks"), std::string::npos);
+  EXPECT_EQ(refusal(scene, model), "");
 }
 
 }  // namespace

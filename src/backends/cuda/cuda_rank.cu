@@ -2,8 +2,8 @@
 // rank's GPU, its step split at the Check (kRankPipeline), and its ghosts' states packed on
 // the GPU into one contiguous buffer per exchange, staged through pinned host memory for
 // MPI (no CUDA-aware MPI yet), and written back by one kernel, after which the solver
-// recomputes the geometry and the rebuild test of the new state; a servo wall's pairs
-// listed on the GPU for the ranks' sum of its load.
+// recomputes the geometry and the rebuild test of the new state; bodies' States the same
+// way beside them; a servo wall's pairs listed on the GPU for the ranks' sum of its load.
 #include "backends/cuda/cuda_backend.hpp"
 #include "backends/cuda/cuda_solver.cuh"
 #include "core/rank_solver.hpp"
@@ -68,6 +68,16 @@ Columns state_columns(ParticleArrays<Real> p) {
                     "the State fields are double in every precision");
       for_each_array(p.column(field), [&](double* pointer, int) { c.a[c.count++] = pointer; });
     }
+  });
+  return c;
+}
+
+/// The State arrays of the bodies (body_x, ..., body_w): what a ghost body takes from
+/// its owner, as CPU ranks send it.
+Columns body_state_columns(BodyArrays b) {
+  Columns c{};
+  for_each_body_field([&](auto field) {
+    if constexpr (decltype(field)::role == FieldRole::State) c.a[c.count++] = b.column(field);
   });
   return c;
 }
@@ -147,6 +157,15 @@ class CudaRank final : public RankSolver<Real> {
 
   void pack() override {
     const cudaStream_t stream = solver_.stream();
+    if (bodies_sent_ > 0) {
+      pack_kernel<<<blocks(bodies_sent_), kBlock, 0, stream>>>(
+          body_state_columns(solver_.device_body_arrays()), body_send_index_.data(),
+          static_cast<int>(bodies_sent_), device_body_send_.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("pack_kernel (bodies)");
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host_body_send_.data(), device_body_send_.data(),
+                                        host_body_send_.size() * sizeof(double),
+                                        cudaMemcpyDeviceToHost, stream));
+    }
     if (sent_ > 0) {
       const Columns c = state_columns(solver_.device_arrays());
       pack_kernel<<<blocks(sent_), kBlock, 0, stream>>>(
@@ -169,6 +188,15 @@ class CudaRank final : public RankSolver<Real> {
       unpack_kernel<<<blocks(received_), kBlock, 0, stream>>>(
           c, receive_index_.data(), static_cast<int>(received_), device_receive_.data());
       TRIDEM_CUDA_CHECK_LAUNCH("unpack_kernel");
+    }
+    if (bodies_received_ > 0) {
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(device_body_receive_.data(), host_body_receive_.data(),
+                                        host_body_receive_.size() * sizeof(double),
+                                        cudaMemcpyHostToDevice, stream));
+      unpack_kernel<<<blocks(bodies_received_), kBlock, 0, stream>>>(
+          body_state_columns(solver_.device_body_arrays()), body_receive_index_.data(),
+          static_cast<int>(bodies_received_), device_body_receive_.data());
+      TRIDEM_CUDA_CHECK_LAUNCH("unpack_kernel (bodies)");
     }
     // Every step, ghosts or not: the solver's own rebuild test is read here (kRankPipeline).
     solver_.state_written();
@@ -213,19 +241,27 @@ class CudaRank final : public RankSolver<Real> {
           result[static_cast<std::size_t>(s)]);
   }
 
-  // Bodies of several triangles are refused on GPU ranks (mpi/mpi_solver.cpp, refusal).
+  // Bodies of several triangles: their State packed and written on the GPU, beside their
+  // members' (pack, unpack).
   void set_body_plan(const std::vector<std::int32_t>& send,
                      const std::vector<std::int32_t>& receive) override {
-    if (!send.empty() || !receive.empty())
-      throw RunError("internal error: a GPU rank was given bodies to exchange");
+    constexpr auto per = static_cast<std::size_t>(RankSolver<Real>::kBodyStateArrays);
+    bodies_sent_ = send.size();
+    bodies_received_ = receive.size();
+    body_send_index_.upload(as_int(send));
+    body_receive_index_.upload(as_int(receive));
+    device_body_send_.allocate(per * bodies_sent_);
+    device_body_receive_.allocate(per * bodies_received_);
+    host_body_send_.allocate(per * bodies_sent_);
+    host_body_receive_.allocate(per * bodies_received_);
   }
-  double* body_send_buffer() override { return nullptr; }
+  double* body_send_buffer() override { return host_body_send_.data(); }
   void bond_terms(const std::function<void(std::size_t, double, double)>& f) const override {
     std::vector<double> elastic, released;
     solver_.bond_terms(elastic, released);
     for (std::size_t k = 0; k < elastic.size(); ++k) f(k, elastic[k], released[k]);
   }
-  double* body_receive_buffer() override { return nullptr; }
+  double* body_receive_buffer() override { return host_body_receive_.data(); }
 
   // Servo walls: MpiSolver sums each one's load across the ranks from the pairs that
   // reach it (the only ones it asks for: a GPU rank visits those alone, listed on the GPU,
@@ -283,6 +319,10 @@ class CudaRank final : public RankSolver<Real> {
   PinnedBuffer<double> host_send_, host_receive_;
   DeviceBuffer<double> reference_;  ///< own particles' centroids at the plan, (x, y) pairs
   double period_x_ = 0, period_y_ = 0;  ///< of a periodic cell, 0 along an open axis
+  std::size_t bodies_sent_ = 0, bodies_received_ = 0;
+  DeviceBuffer<int> body_send_index_, body_receive_index_;
+  DeviceBuffer<double> device_body_send_, device_body_receive_;
+  PinnedBuffer<double> host_body_send_, host_body_receive_;
   DeviceBuffer<std::uint8_t> servo_;    ///< servo walls among the local particles (or empty)
   mutable DeviceBuffer<MarkedPair<Real>> marked_;
   mutable DeviceBuffer<int> marked_count_;

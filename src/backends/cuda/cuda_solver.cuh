@@ -72,6 +72,8 @@ class CudaSolver final : public Solver {
       Stage::PairList, Stage::PairForces, Stage::Gather, Stage::Check, Stage::Integrate};
   void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
   ParticleArrays<Real> device_arrays() const { return arrays(); }
+  /// The bodies of several members (n 0 without: the arrays then unallocated).
+  BodyArrays device_body_arrays() const { return body_arrays(); }
   cudaStream_t stream() const { return stream_; }
   /// After kernels on stream() wrote some particles' State (a rank's ghosts): the geometry
   /// of the current state, and whether the pair list must be rebuilt (synchronises).
