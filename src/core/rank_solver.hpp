@@ -53,7 +53,7 @@ class RankSolver {
   /// receive_buffer() into the received particles' State, and what follows from it (a GPU
   /// rank's geometry of the new state).
   virtual void unpack() = 0;
-  /// Bodies of several triangles (CPU ranks only; GPU ranks are not given bodies): the
+  /// Bodies of several triangles: the
   /// local bodies whose State leaves this rank at each exchange and those whose State
   /// arrives, in buffer order, and their buffers, kBodyStateArrays doubles per body; pack
   /// and unpack carry them with the particles'.
