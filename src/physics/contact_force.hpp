@@ -249,7 +249,12 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(const Triangle<Real>& contactor, int e
 /// Edge contacts are numbered i = 3·role + e (role 0: a's edges in b, role 1: b's in a);
 /// only those that may carry a load are visited, in that order, so that the threads of a
 /// GPU warp each spend their time on their own few edges rather than on all six.
-template <class Real>
+///
+/// kEnergy = false leaves elastic_energy at zero and everything else bit for bit as with
+/// true: the stored energy needs the overlap polygon (a clipping with divisions, on the GPU
+/// an array in local memory), and only the steps whose results are read (the last of an
+/// advance) need it. The forces never read it.
+template <bool kEnergy = true, class Real>
 TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real>& b,
                                             const ContactLaw<Real>& law, Real dt,
                                             PairSlip<Real>& slip) {
@@ -296,7 +301,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       kyy += normal.y * load.gradient.y;
       // ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] (divergence of φ·(x − c_T), which is
       // 3φ − 1 inside T): the pieces of T's own edges, where φ_T = 0, add nothing.
-      phi_moment += load.integral * dot(normal, load.point - t.c);
+      if constexpr (kEnergy) phi_moment += load.integral * dot(normal, load.point - t.c);
     }
   }
   if (!(total_integral > Real(0))) {
@@ -379,8 +384,11 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   // collinear sides of lattice neighbours) has no load, and a sum of the loaded pieces'
   // cross products left it out, so that the area depended on the origin (a pair sharing a
   // vertex stored -96 J/m where the same pair turned the other way stored 0.0004 J/m).
-  const Real twice_area = Real(2) * overlap_area(a.tri, b.tri, a.c);
-  out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
+  if constexpr (kEnergy) {
+    const Real twice_area = Real(2) * overlap_area(a.tri, b.tri, a.c);
+    out.elastic_energy =
+        law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
+  }
   return out;
 }
 

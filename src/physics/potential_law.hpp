@@ -7,8 +7,9 @@
 //                        pair of materials, copied to the GPU as it is
 //   parameters(a, b)     host: the entry of materials a and b (the mixing rules)
 //   cast<To>(p)          the entry in the pair precision
-//   force(a, b, p, dt, history)   TRIDEM_HD: the PairForce of one pair over a step, with
-//                        its history (PairSlip) carried in and out
+//   force<kEnergy>(a, b, p, dt, history)   TRIDEM_HD: the PairForce of one pair over a
+//                        step, with its history (PairSlip) carried in and out; without
+//                        kEnergy its elastic_energy is left at zero and the rest is the same
 //   edge_stiffness(p, h_partner, h_own)   the contact's springs and dashpots along an edge
 //                        pressed over its whole length, per metre: the time step's input
 //                        (core/time_step.cpp bounds symplectic Euler with it)
@@ -53,11 +54,11 @@ struct PotentialLaw {
     return law_cast<To>(p);
   }
 
-  template <class Real>
+  template <bool kEnergy = true, class Real>
   TRIDEM_HD static PairForce<Real> force(const Body<Real>& a, const Body<Real>& b,
                                          const Parameters<Real>& law, Real dt,
                                          PairSlip<Real>& slip) {
-    return pair_force(a, b, law, dt, slip);
+    return pair_force<kEnergy>(a, b, law, dt, slip);
   }
 
   /// One pair pressed along a length ℓ of an edge: ℓ of that edge in the partner's

@@ -113,6 +113,7 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
   const ScopedOmpThreads threads(threads_);
   for (std::int64_t s = 0; s < steps; ++s) {
     parallel_ = choice_.parallel();
+    pair_energy_ = s + 1 == steps;
     const auto start = std::chrono::steady_clock::now();
     run_step_on_team();
     choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -299,10 +300,14 @@ void CpuSolver<Real>::compute_pair_forces() {
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
       if (periodic_) {
         const physics::PeriodicImage im = physics::nearest_image(frame, origin, {x_[j], y_[j]});
-        result_[s] = physics::SceneContactLaw::force(a, image_body(j, origin, im), law, dt, slip);
+        const physics::Body<Real> b = image_body(j, origin, im);
+        result_[s] = pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
+                                  : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
         image_power += physics::image_power(im, static_cast<double>(result_[s].force_a.x));
       } else {
-        result_[s] = physics::SceneContactLaw::force(a, body(j, origin), law, dt, slip);
+        const physics::Body<Real> b = body(j, origin);
+        result_[s] = pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
+                                  : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
       }
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);

@@ -189,6 +189,10 @@ class CpuSolver final : public Solver {
   // (a particle or body) in this step: folded by the threads, kNoIndex when none.
   static constexpr std::int64_t kNoIndex = std::numeric_limits<std::int64_t>::max();
   std::int64_t too_deep_ = kNoIndex;
+  /// Whether this step's pairs compute their stored energy: only the last step of an
+  /// advance() does (energy(), contacts and snapshots read that step's results), as the
+  /// GPU writes its pair details only then.
+  bool pair_energy_ = true;
   mutable std::int64_t first_runaway_ = kNoIndex;
   std::function<void()> check_hook_;
   // Periodic boundaries (physics/periodic_frame.hpp): pairs see their partners' nearest

@@ -316,14 +316,21 @@ void CudaSolver<Real>::run_stage(Stage stage) {
 template <class Real>
 void CudaSolver<Real>::launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status) {
   if (step_pairs_.count == 0) return;
-  if (periodic_)
-    launch_pair_forces_with<true>(p, status);
-  else
-    launch_pair_forces_with<false>(p, status);
+  if (params_.details) {
+    if (periodic_)
+      launch_pair_forces_with<true, true>(p, status);
+    else
+      launch_pair_forces_with<true, false>(p, status);
+  } else {
+    if (periodic_)
+      launch_pair_forces_with<false, true>(p, status);
+    else
+      launch_pair_forces_with<false, false>(p, status);
+  }
 }
 
 template <class Real>
-template <bool kPeriodic>
+template <bool kDetails, bool kPeriodic>
 void CudaSolver<Real>::launch_pair_forces_with(const ParticleArrays<Real>& p, StepStatus* status) {
   const PairArrays<Real>& q = step_pairs_;
   constexpr int threads = PairKernelShape<Real>::threads;
@@ -332,16 +339,16 @@ void CudaSolver<Real>::launch_pair_forces_with(const ParticleArrays<Real>& p, St
   const physics::BondArrays<Real> bonds = bond_arrays();
   const bool with_bodies = n_bodies_ > 0, with_bonds = bonds_.size() > 0;
   if (with_bodies && with_bonds)
-    pair_forces_kernel<Real, true, true, kPeriodic>
+    pair_forces_kernel<Real, kDetails, true, true, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
   else if (with_bodies)
-    pair_forces_kernel<Real, true, false, kPeriodic>
+    pair_forces_kernel<Real, kDetails, true, false, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, member_body, bonds);
   else if (with_bonds)
-    pair_forces_kernel<Real, false, true, kPeriodic>
+    pair_forces_kernel<Real, kDetails, false, true, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   else
-    pair_forces_kernel<Real, false, false, kPeriodic>
+    pair_forces_kernel<Real, kDetails, false, false, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
 }

@@ -99,7 +99,7 @@ class CudaSolver final : public Solver {
   physics::BondArrays<Real> bond_arrays() const { return bonds_.view(); }
   /// The pair forces of this step, with the filters the scene needs (bodies, bonds).
   void launch_pair_forces(const ParticleArrays<Real>& p, StepStatus* status);
-  template <bool kPeriodic>
+  template <bool kDetails, bool kPeriodic>
   void launch_pair_forces_with(const ParticleArrays<Real>& p, StepStatus* status);
   /// Lees-Edwards: whether the images have slid farther than the build's slack since it.
   bool images_slid() const;

@@ -60,7 +60,11 @@ struct PairKernelShape<float> {
 /// intact_bond_between: the bond carries them) add exact zeros and keep no history too. A
 /// scene without them compiles the kernel without the filter. kPeriodic: a periodic scene,
 /// whose partners are seen through their nearest image (StepParams::frame), as on the CPU.
-template <class Real, bool kBodies = false, bool kBonds = false, bool kPeriodic = false>
+/// kDetails: the step writes every pair's PairDetail (StepParams::details, the last step of
+/// an advance), stored energy included; the other steps compute no energy (pair_force's
+/// kEnergy), and a pair deeper than max_depth writes its detail without it.
+template <class Real, bool kDetails, bool kBodies = false, bool kBonds = false,
+          bool kPeriodic = false>
 __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShape<Real>::min_blocks)
     pair_forces_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                        StepStatus* status, const std::int32_t* member_body,
@@ -72,7 +76,7 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
     if ((kBodies && physics::same_body(member_body, e, j)) ||
         (kBonds && physics::intact_bond_between(bonds, e, j))) {
       q.load[s] = physics::PairLoad<Real>{};
-      if (sp.details) q.detail[s] = physics::PairDetail<Real>{};
+      if constexpr (kDetails) q.detail[s] = physics::PairDetail<Real>{};
       q.slip[s] = physics::PairSlip<Real>{};
       return;
     }
@@ -84,18 +88,19 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
     if constexpr (kPeriodic) {
       const physics::PeriodicImage im =
           physics::nearest_image(sp.frame, origin, Vec2d{p.x[j], p.y[j]});
-      return physics::SceneContactLaw::force(load_body(p, e, origin),
-                                             load_image_body(p, j, origin, im), law,
-                                             static_cast<Real>(sp.dt), slip);
+      return physics::SceneContactLaw::force<kDetails>(load_body(p, e, origin),
+                                                       load_image_body(p, j, origin, im), law,
+                                                       static_cast<Real>(sp.dt), slip);
     } else {
-      return physics::SceneContactLaw::force(load_body(p, e, origin), load_body(p, j, origin), law,
-                                             static_cast<Real>(sp.dt), slip);
+      return physics::SceneContactLaw::force<kDetails>(load_body(p, e, origin),
+                                                       load_body(p, j, origin), law,
+                                                       static_cast<Real>(sp.dt), slip);
     }
   }();
   q.load[s] = physics::load_of(result);
   q.slip[s] = slip;
   const bool deep = result.depth > sp.max_depth;
-  if (sp.details || deep) q.detail[s] = physics::detail_of(result);
+  if (kDetails || deep) q.detail[s] = physics::detail_of(result);
   // The lowest emitter, as the CPU reports it, whatever order the threads run in.
   if (deep) atomicMin(&status->deep, e);
 }

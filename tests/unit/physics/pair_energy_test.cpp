@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -299,6 +300,59 @@ TEST(PairEnergy, SlidingDissipatesAndTheSpringsKeepTheirEnergy) {
   EXPECT_NEAR(f_t, 0.3 * norm(frictionless.force_a), 1e-12 * f_t);
   const double spring = 0.5 * (slip.s[0] * slip.s[0] + slip.s[1] * slip.s[1]);  // ½|u|²
   EXPECT_NEAR(f.elastic_energy - frictionless.elastic_energy, spring, 1e-9 * spring);
+}
+
+// The steps whose results nobody reads skip the stored energy (pair_force<false>, issue 12):
+// everything else must be the same bits, in double and float, touching, sliding and apart.
+template <class Real>
+void expect_energy_free_force_is_the_same(std::uint64_t seed) {
+  using R = Vec2<Real>;
+  const ContactLaw<Real> law = law_cast<Real>(contact_law(1e6, 1e5, 0.4, 0.5));
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int touching = 0, sliding = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Body<Real> body[2];
+    for (Body<Real>& b : body) {
+      const auto d = make_body({{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}}},
+                               V{u(rng), u(rng)}, u(rng), 1 + u(rng) * u(rng));
+      for (int k = 0; k < 3; ++k) b.tri.v[k] = R{Real(d.tri.v[k].x), Real(d.tri.v[k].y)};
+      b.c = centroid(b.tri);
+      b.area = signed_area(b.tri);
+      b.v = R{Real(d.v.x), Real(d.v.y)};
+      b.w = Real(d.w);
+      b.mass = Real(d.mass);
+    }
+    if (!(body[0].area > Real(0.01)) || !(body[1].area > Real(0.01))) continue;
+    // Springs of up to some 10^5 N: some pairs stick, some slide.
+    const PairSlip<Real> history{{Real(300 * u(rng)), Real(300 * u(rng))}};
+    PairSlip<Real> with = history, without = history;
+    const PairForce<Real> f = pair_force<true>(body[0], body[1], law, Real(1e-4), with);
+    const PairForce<Real> g = pair_force<false>(body[0], body[1], law, Real(1e-4), without);
+    touching += f.touching;
+    sliding += f.sliding;
+    EXPECT_EQ(g.elastic_energy, Real(0));
+    const Real f_fields[] = {f.force_a.x, f.force_a.y, f.torque_a, f.torque_b,
+                             f.point.x, f.point.y, f.depth, f.damping_dissipation,
+                             f.friction_dissipation, f.normal.x, f.normal.y, with.s[0], with.s[1]};
+    const Real g_fields[] = {g.force_a.x, g.force_a.y, g.torque_a, g.torque_b,
+                             g.point.x, g.point.y, g.depth, g.damping_dissipation,
+                             g.friction_dissipation, g.normal.x, g.normal.y, without.s[0],
+                             without.s[1]};
+    EXPECT_EQ(std::memcmp(f_fields, g_fields, sizeof f_fields), 0) << "trial " << trial;
+    EXPECT_EQ(f.touching, g.touching);
+    EXPECT_EQ(f.sliding, g.sliding);
+    if (f.touching) {
+      EXPECT_NE(f.elastic_energy, Real(0)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(touching, 50);
+  EXPECT_GT(sliding, 10);
+}
+
+TEST(PairEnergy, WithoutEnergyTheForceAndHistoryAreTheSameBits) {
+  expect_energy_free_force_is_the_same<double>(5);
+  expect_energy_free_force_is_the_same<float>(6);
 }
 
 }  // namespace
