@@ -51,7 +51,11 @@ TEST(MpiRefusal, AutoIsRefusedOnlyWhatCpuRanksCannotRun) {
   Scene scene;
   scene.source = "gas.toml";
   scene.simulation.backend = Backend::Auto;
-  scene.materials.push_back(Material{"g", 1000, 1e7});
+  Material grain;
+  grain.name = "g";
+  grain.density = 1000;
+  grain.penalty = 1e7;
+  scene.materials.push_back(grain);
   TriangleSpec t;
   t.vertices = {Vec2d{0.1, 0.1}, Vec2d{0.2, 0.1}, Vec2d{0.15, 0.18}};
   scene.triangles.push_back(t);
