@@ -1,5 +1,6 @@
 // bodies.csv: the state of every body at the last step. Without bodies of several
 // triangles every triangle is a body of one member, and its row is the triangle's own.
+#include "io/output/exact_number.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "tridem/output.hpp"
@@ -15,9 +16,9 @@ void write_bodies_csv(const std::filesystem::path& file, const Snapshot& s) {
   const auto row = [](fmt::memory_buffer& text, std::size_t b, double x, double y, double theta,
                       double vx, double vy, double omega, double mass, double inertia,
                       std::int64_t members) {
-    fmt::format_to(fmt::appender(text),
-                   "{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", b, x,
-                   y, theta, vx, vy, omega, mass, inertia, members);
+    fmt::format_to(fmt::appender(text), FMT_COMPILE("{},{},{},{},{},{},{},{},{},{}\n"), b,
+                   io::Exact{x}, io::Exact{y}, io::Exact{theta}, io::Exact{vx}, io::Exact{vy},
+                   io::Exact{omega}, io::Exact{mass}, io::Exact{inertia}, members);
   };
   if (s.member_body.empty()) {
     out.print_rows(s.size(), [&](fmt::memory_buffer& text, std::size_t first, std::size_t last) {

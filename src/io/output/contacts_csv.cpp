@@ -1,8 +1,9 @@
+#include "io/output/exact_number.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "tridem/output.hpp"
 
-#include <fmt/format.h>
+#include <fmt/compile.h>
 
 namespace tridem {
 
@@ -18,11 +19,11 @@ void write_contacts_csv(const std::filesystem::path& file, const Snapshot& s) {
       s.contacts.size(), [&s](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
           const ContactRecord& c = s.contacts[k];
-          fmt::format_to(fmt::appender(text),
-                         "{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},"
-                         "{:.17g}\n",
-                         c.i, c.j, c.fx, c.fy, c.px, c.py, c.nx, c.ny, c.normal_force(),
-                         c.tangential_force(), c.sliding ? 1 : 0, c.depth);
+          fmt::format_to(fmt::appender(text), FMT_COMPILE("{},{},{},{},{},{},{},{},{},{},{},{}\n"),
+                         c.i, c.j, io::Exact{c.fx}, io::Exact{c.fy}, io::Exact{c.px},
+                         io::Exact{c.py}, io::Exact{c.nx}, io::Exact{c.ny},
+                         io::Exact{c.normal_force()}, io::Exact{c.tangential_force()},
+                         c.sliding ? 1 : 0, io::Exact{c.depth});
         }
       });
   out.close();

@@ -1,4 +1,5 @@
 // final.csv: every triangle at the last step, and (the last column) the body it is in.
+#include "io/output/exact_number.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
 #include "tridem/output.hpp"
@@ -14,11 +15,11 @@ void write_final_csv(const std::filesystem::path& file, const Snapshot& s) {
   out.write("id,x,y,theta,vx,vy,omega,x1,y1,x2,y2,x3,y3,body\n");
   out.print_rows(s.size(), [&s](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k)
-      fmt::format_to(fmt::appender(text),
-                     "{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                     "{:.17g},{:.17g},{:.17g},{}\n",
-                     k, s.x[k], s.y[k], s.theta[k], s.vx[k], s.vy[k], s.omega[k], s.x1[k], s.y1[k],
-                     s.x2[k], s.y2[k], s.x3[k], s.y3[k], s.body_of(k));
+      fmt::format_to(fmt::appender(text), FMT_COMPILE("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n"),
+                     k, io::Exact{s.x[k]}, io::Exact{s.y[k]}, io::Exact{s.theta[k]},
+                     io::Exact{s.vx[k]}, io::Exact{s.vy[k]}, io::Exact{s.omega[k]},
+                     io::Exact{s.x1[k]}, io::Exact{s.y1[k]}, io::Exact{s.x2[k]},
+                     io::Exact{s.y2[k]}, io::Exact{s.x3[k]}, io::Exact{s.y3[k]}, s.body_of(k));
   });
   out.close();
 }
