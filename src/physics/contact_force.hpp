@@ -386,8 +386,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   // vertex stored -96 J/m where the same pair turned the other way stored 0.0004 J/m).
   if constexpr (kEnergy) {
     const Real twice_area = Real(2) * overlap_area(a.tri, b.tri, a.c);
-    out.elastic_energy =
-        law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
+    out.elastic_energy = law.penalty * (phi_moment + twice_area) / Real(3) + Real(0.5) * dot(u, u);
   }
   return out;
 }

@@ -92,9 +92,8 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
                                                        load_image_body(p, j, origin, im), law,
                                                        static_cast<Real>(sp.dt), slip);
     } else {
-      return physics::SceneContactLaw::force<kDetails>(load_body(p, e, origin),
-                                                       load_body(p, j, origin), law,
-                                                       static_cast<Real>(sp.dt), slip);
+      return physics::SceneContactLaw::force<kDetails>(
+          load_body(p, e, origin), load_body(p, j, origin), law, static_cast<Real>(sp.dt), slip);
     }
   }();
   q.load[s] = physics::load_of(result);
