@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 #include <memory>
 #include <thread>
+#include <utility>
 #ifdef TRIDEM_WITH_MPI
 #include "mpi/mpi_run.hpp"
 #endif
@@ -87,7 +88,7 @@ int run(const RunArgs& args) {
     return mpi::run_on_ranks(read, options, report);
   }
 #endif
-  const Scene scene = read();
+  Scene scene = read();
   std::unique_ptr<live::LiveView> live_view;
   if (args.live) {
     live::LiveOptions lo;
@@ -97,7 +98,7 @@ int run(const RunArgs& args) {
     live_view = std::make_unique<live::LiveView>(lo, scene.simulation.gravity, stdout);
     options.observer = live_view.get();
   }
-  const RunSummary summary = run_scene(scene, options);
+  const RunSummary summary = run_scene(std::move(scene), options);
   live_view.reset();  // the last frame sent, the connections closed
   return report(summary);
 }

@@ -73,12 +73,13 @@ struct RunSummary {
   OutputSeconds outputs;      ///< output_seconds, part by part
 };
 
-/// Runs the scene `input` to the end (or to an interruption): its settings are the run's
-/// (backend, precision, method, steps, output directory); relax_overlaps moves a copy's
-/// triangles. Writes its outputs, and checkpoints every [output] checkpoint_every steps.
-/// Throws tridem::Error on failure; on a blow-up the last good state is first written to
-/// last_good.ckpt and final.csv.
-RunSummary run_scene(const Scene& input, const RunOptions& options);
+/// Runs `scene` to the end (or to an interruption): its settings are the run's (backend,
+/// precision, method, steps, output directory); relax_overlaps moves its triangles. Taken
+/// by value: a caller done with its scene moves it in (10^7 triangles are some 0.9 GB to
+/// copy), one that keeps it passes a copy. Writes its outputs, and checkpoints every
+/// [output] checkpoint_every steps. Throws tridem::Error on failure; on a blow-up the last
+/// good state is first written to last_good.ckpt and final.csv.
+RunSummary run_scene(Scene scene, const RunOptions& options);
 
 /// What `tridem info` prints about a scene.
 struct SceneInfo {

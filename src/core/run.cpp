@@ -81,11 +81,10 @@ void print_relaxation(std::FILE* log, const RelaxReport& r) {
 
 }  // namespace
 
-RunSummary run_scene(const Scene& input, const RunOptions& options) {
+RunSummary run_scene(Scene scene, const RunOptions& options) {
   const auto setup_start = options.started.value_or(std::chrono::steady_clock::now());
   SetupClock clock(setup_start);
   clock.lap("scene");
-  Scene scene = input;
   // Before anything is derived from the positions (a restart relaxes the same way, so its
   // scene fingerprint matches).
   std::optional<RelaxReport> relaxed;

@@ -48,8 +48,7 @@ int run_on_ranks(const std::function<Scene()>& read, RunOptions options,
     throw Served{ok};
   };
   try {
-    const Scene scene = read();
-    const RunSummary summary = run_scene(scene, options);
+    const RunSummary summary = run_scene(read(), options);
     return report(summary);
   } catch (const Served& s) {
     return s.ok ? 0 : 1;
