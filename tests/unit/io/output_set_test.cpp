@@ -3,6 +3,7 @@
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
+#include <atomic>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -133,6 +134,31 @@ TEST(OutFile, RowsFormattedInParallelAreWrittenInOrder) {
       EXPECT_EQ(got.str(), fmt::to_string(expected)) << n << " rows on " << t << " threads";
     }
   }
+  omp_set_num_threads(threads);
+}
+
+// A write that fails while the threads format the next window of rows (the disk full in
+// the middle of a large final.csv) reaches the caller with the system's reason, from the
+// thread that writes, and no block is formatted after it is known.
+TEST(OutFile, FailedWriteWhileRowsAreFormattedReachesTheCaller) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(3);  // windows of 12 blocks of 4096 rows: 200 000 rows are 5 windows
+  io::OutFile out("/dev/full");
+  std::atomic<std::size_t> formatted{0};
+  try {
+    out.print_rows(200000, [&](fmt::memory_buffer& text, std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k)
+        fmt::format_to(fmt::appender(text), "{},{}\n", k, 0.5 * static_cast<double>(k));
+      formatted += last - first;
+    });
+    out.close();
+    ADD_FAILURE() << "writing rows to /dev/full succeeded";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
+  }
+  // The first window's write fails while the second is formatted; the third never starts.
+  EXPECT_LE(formatted.load(), std::size_t{2 * 12 * 4096});
   omp_set_num_threads(threads);
 }
 
