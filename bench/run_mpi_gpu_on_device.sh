@@ -69,28 +69,28 @@ for precision in double float; do
     done
   done
 done
+# tests/mpi/NAME.toml on 2 and 3 GPU ranks in both precisions, and 3 ranks to step STEP,
+# then 2 from the checkpoint (restart mode reads the backend from the scene: a cuda copy).
+parity_and_restart() {
+  local name=$1 step=$2 s precision np
+  for precision in double float; do
+    s=tests/mpi/$name.toml
+    [ "$precision" = float ] && s=$(float_copy "$s")
+    for np in 2 3; do run_case "${name}_${precision}_np$np" parity $np "$s" --backend cuda; done
+  done
+  sed '/^\[simulation\]/a backend = "cuda"' "tests/mpi/$name.toml" >"$out/scenes/${name}_cuda.toml"
+  run_case "${name}_restart_3_on_2" restart 3 2 "$out/scenes/${name}_cuda.toml" "$step"
+}
 # Cohesive bonds (a Gmsh-meshed bar crushed by a piston): a bond's state from its pair's
-# authority; and 3 ranks to step 1000, then 2 from the checkpoint.
-for precision in double float; do
-  s=tests/mpi/bonds.toml
-  [ "$precision" = float ] && s=$(float_copy "$s")
-  for np in 2 3; do run_case "bonds_${precision}_np$np" parity $np "$s" --backend cuda; done
-done
-sed '/^\[simulation\]/a backend = "cuda"' tests/mpi/bonds.toml >"$out/scenes/bonds_cuda.toml"
-run_case bonds_restart_3_on_2 restart 3 2 "$out/scenes/bonds_cuda.toml" 1000
+# authority.
+parity_and_restart bonds 1000
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/sheared.toml >"$out/scenes/sheared_cuda.toml"
 run_case sheared_restart_3_on_2 restart 3 2 "$out/scenes/sheared_cuda.toml" 300
 # backend = "auto" takes GPU ranks where every rank has a GPU.
 EXPECT_START="GPU ranks" run_case auto_np2 parity 2 tests/mpi/jostling_pile.toml --backend auto
 # Bodies of several triangles (180 angular grains): held whole, their State exchanged
-# beside their members'; and 3 ranks to step 1500, then 2 from the checkpoint.
-for precision in double float; do
-  s=tests/mpi/bodies.toml
-  [ "$precision" = float ] && s=$(float_copy "$s")
-  for np in 2 3; do run_case "bodies_${precision}_np$np" parity $np "$s" --backend cuda; done
-done
-sed '/^\[simulation\]/a backend = "cuda"' tests/mpi/bodies.toml >"$out/scenes/bodies_cuda.toml"
-run_case bodies_restart_3_on_2 restart 3 2 "$out/scenes/bodies_cuda.toml" 1500
+# beside their members'.
+parity_and_restart bodies 1500
 # 2 GPU ranks to step 200, then 2 GPU ranks from the checkpoint: one GPU rank's outputs.
 # (mpi_test.sh's restart mode reads the backend from the scene: a copy with cuda.)
 sed 's/^backend = .*/backend = "cuda"/' tests/mpi/jostling_pile.toml >"$out/scenes/jostling_pile_cuda.toml"
