@@ -298,16 +298,16 @@ void CpuSolver<Real>::compute_pair_forces() {
       }
       physics::PairSlip<Real> slip = old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
+      const auto force = [&](const physics::Body<Real>& b) {
+        return pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
+                            : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
+      };
       if (periodic_) {
         const physics::PeriodicImage im = physics::nearest_image(frame, origin, {x_[j], y_[j]});
-        const physics::Body<Real> b = image_body(j, origin, im);
-        result_[s] = pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
-                                  : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
+        result_[s] = force(image_body(j, origin, im));
         image_power += physics::image_power(im, static_cast<double>(result_[s].force_a.x));
       } else {
-        const physics::Body<Real> b = body(j, origin);
-        result_[s] = pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
-                                  : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
+        result_[s] = force(body(j, origin));
       }
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
