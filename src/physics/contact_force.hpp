@@ -61,7 +61,11 @@ struct PairForce {
 template <class Real>
 struct EdgeLoad {
   Real integral = 0;    ///< ∫ φ_T dΓ over the edge's part inside T, metres
-  Vec2<Real> point{};   ///< its centroid (valid when integral > 0)
+  /// ∫ φ_T·x dΓ: the load's first moment, its centroid times the integral. Kept as a moment
+  /// because every use (torques, the contact point, the stored energy) multiplies the
+  /// centroid by the integral again: no division per piece or per edge.
+  Vec2<Real> moment{};
+  Real length = 0;      ///< |p1 − p0|, once the edge is known to enter T (else 0)
   Real stiffness = 0;   ///< Σ 3ℓ/h_k over the linear pieces: contact stiffness over p
   Real peak = 0;        ///< the largest φ_T on the edge (at a breakpoint or an end)
   /// Σ ℓ·∇φ_T over the pieces (|∇φ_T| = 3/h_k): the stiffness matrix of the edge's load
@@ -70,6 +74,11 @@ struct EdgeLoad {
   /// Σ ℓ·max(φ0, φ1) over the pieces: with the integral it gives the load exponent n_eff
   /// (a uniform load has 1, a triangular one 2).
   Real shape = 0;
+
+  /// The load's centroid (where the distributed normal load acts): tests and tools.
+  TRIDEM_HD Vec2<Real> centroid() const {
+    return integral > Real(0) ? moment / integral : Vec2<Real>{};
+  }
 };
 
 /// Signed areas of the contactor's vertices against the target's edges: >= 0 on the
@@ -181,6 +190,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
   }
   const Vec2<Real> d = p1 - p0;
   const Real edge_length = norm(d);
+  load.length = edge_length;
   // The active line at t_lo: the smallest value there; on a tie, the one that falls faster.
   int k = 0;
   Real gk = f0[0] + t_lo * fd[0];
@@ -192,7 +202,6 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
       gk = gj;
     }
   }
-  Vec2<Real> moment{};
   Real t = t_lo;
   for (int piece = 0; piece < 3; ++piece) {
     const Real f0k = pick(f0, k), fdk = pick(fd, k);
@@ -214,11 +223,13 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     phi1 = phi1 > Real(0) ? phi1 : Real(0);
     const Real length = edge_length * (t_next - t);
     const Vec2<Real> q0 = p0 + d * t, q1 = p0 + d * t_next;
-    const LinearLoad<Real> l = linear_load(q0, q1, length, phi0, phi1);
+    // A linear load φ0 → φ1 over [q0, q1]: ∫ φ = ℓ(φ0 + φ1)/2 and ∫ φ·x = q0·∫ φ +
+    // (q1 − q0)·ℓ(φ0 + 2φ1)/6 (the trapezoid's centroid times its integral).
+    const Real integral = length * (phi0 + phi1) * Real(0.5);
     const Real high = phi0 > phi1 ? phi0 : phi1;
     load.peak = high > load.peak ? high : load.peak;
-    load.integral += l.integral;
-    moment += l.point * l.integral;
+    load.integral += integral;
+    load.moment += q0 * integral + (q1 - q0) * (length * (phi0 + Real(2) * phi1) / Real(6));
     // A piece of length ℓ in S_k, of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k, and
     // ∇φ = to_phi·perp(e_k) (|∇φ| = 3/h_k).
     load.stiffness += length * target.to_phi * pick(target.edge_length, k);
@@ -229,7 +240,6 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     t = t_next;
     k = next;
   }
-  if (load.integral > Real(0)) load.point = moment / load.integral;
   return load;
 }
 
@@ -285,13 +295,16 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       out.depth = load.peak > out.depth ? load.peak : out.depth;
       if (!(load.integral > Real(0))) continue;
       const Vec2<Real> d = p1 - p0;
-      const Vec2<Real> normal = Vec2<Real>{d.y, -d.x} / norm(d);  // outward, CCW contactor
+      const Real per_length = Real(1) / load.length;
+      const Vec2<Real> normal{d.y * per_length, -d.x * per_length};  // outward, CCW contactor
       const Vec2<Real> f_on_c = normal * (-law.penalty * load.integral);
       const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;
       out.force_a += f_on_a;
-      out.torque_a += cross(load.point - a.c, f_on_a);
-      out.torque_b -= cross(load.point - b.c, f_on_a);
-      point_moment += load.point * load.integral;
+      // The load acts at its centroid M/I: cross(M/I − c, −p·I·n) = −p·cross(M − I·c, n).
+      const Real towards_a = role == 0 ? -law.penalty : law.penalty;  // f_on_a = towards_a·I·n
+      out.torque_a += towards_a * cross(load.moment - a.c * load.integral, normal);
+      out.torque_b -= towards_a * cross(load.moment - b.c * load.integral, normal);
+      point_moment += load.moment;
       total_integral += load.integral;
       total_stiffness += load.stiffness;
       total_shape += load.shape;
@@ -301,7 +314,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       kyy += normal.y * load.gradient.y;
       // ∫_Ω φ_T dA = (1/3)[Σ I·n·(point − c_T) + |Ω|] (divergence of φ·(x − c_T), which is
       // 3φ − 1 inside T): the pieces of T's own edges, where φ_T = 0, add nothing.
-      if constexpr (kEnergy) phi_moment += load.integral * dot(normal, load.point - t.c);
+      if constexpr (kEnergy) phi_moment += dot(normal, load.moment - t.c * load.integral);
     }
   }
   if (!(total_integral > Real(0))) {
@@ -312,14 +325,14 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
     return out;
   }
   out.touching = true;
-  const Vec2<Real> r = point_moment / total_integral;
+  const Vec2<Real> r = point_moment * (Real(1) / total_integral);
   out.point = r;
 
   // The contact: normal N from a into b along the resultant potential force (the force on
   // a is −|F|·N), tangent perpendicular to it.
   const Real f_potential = norm(out.force_a);
   Vec2<Real> n_ab = b.c - a.c;
-  if (f_potential > Real(0)) n_ab = out.force_a / (-f_potential);
+  if (f_potential > Real(0)) n_ab = out.force_a * (Real(-1) / f_potential);
   else n_ab = n_ab / norm(n_ab);
   out.normal = n_ab;
   // Stiffnesses: along N, N·K·N of the loads' stiffness matrix K = p·Σ n ⊗ ∇φ·ℓ (what a

@@ -28,23 +28,4 @@ TRIDEM_HD inline Real potential(const Triangle<Real>& t, Real area, Vec2<Real> p
   return phi;
 }
 
-/// ∫ φ dΓ over the segment [q0, q1] lying in sub-triangle k, with its load centroid.
-template <class Real>
-struct LinearLoad {
-  Real integral = 0;   ///< |q1 − q0| (φ0 + φ1) / 2, metres
-  Vec2<Real> point{};  ///< centroid of the trapezoidal load
-};
-
-/// `length` is |q1 − q0|, passed in because callers know it without a square root.
-template <class Real>
-TRIDEM_HD inline LinearLoad<Real> linear_load(Vec2<Real> q0, Vec2<Real> q1, Real length,
-                                              Real phi0, Real phi1) {
-  LinearLoad<Real> l;
-  const Real s = phi0 + phi1;
-  l.integral = length * s * Real(0.5);
-  l.point = s > Real(0) ? q0 + (q1 - q0) * ((phi0 + Real(2) * phi1) / (Real(3) * s))
-                        : (q0 + q1) * Real(0.5);
-  return l;
-}
-
 }  // namespace tridem::physics

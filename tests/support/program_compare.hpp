@@ -6,10 +6,10 @@
 //    a scene that keeps rounding at rounding size (a settled one).
 //  - expect_servo_box_runs_agree: the servo box of support/program_scenes.hpp, whose pile of
 //    loose triangles parts from any run of other rounding from its first contacts (step
-//    ~382) and then about tenfold per 50-100 steps, until it is another pile: a run of the
-//    serial solver moved by an offset leaves even fifty times a rounding twin's spread
-//    somewhere between steps 400 and 1100, at a step that depends on the offset (8 offsets,
-//    support/shifted_run.hpp). So the pile is compared pointwise, within kProgramEnvelope
+//    ~382) and then about tenfold per 50-100 steps, until it is another pile: runs of the
+//    serial solver moved by an offset (support/shifted_run.hpp) leave even fifty times a
+//    rounding twin's spread at step 1000 or 1100, depending on the offset (by velocity: 2 of
+//    8 offsets with one rounding of the pair force, 4 of 8 with another). So the pile is compared pointwise, within kProgramEnvelope
 //    times the twin's spread (support/rounding_twin.hpp), only for `pointwise_steps`; over
 //    the whole run each solver must follow the servo law exactly on its own state (the
 //    velocity it gives the wall is the law's for the target of its own floor-lid gap and

@@ -43,15 +43,23 @@ __device__ inline physics::Body<Real> load_image_body(const ParticleArrays<Real>
 /// best on an H100 (bench/results/cuda_tuning_2026-11-23_nvidia-h100-80gb-hbm3.md): the
 /// double kernel needs 226 registers uncapped, so 4 blocks per SM (128 registers, a few
 /// spills) beat 8 warps without spills.
+/// TRIDEM_PAIR_BLOCKS_DOUBLE and _FLOAT override min_blocks for a tuning build
+/// (bench/compare_builds.sh); releases use the defaults.
+#ifndef TRIDEM_PAIR_BLOCKS_DOUBLE
+#define TRIDEM_PAIR_BLOCKS_DOUBLE 4
+#endif
+#ifndef TRIDEM_PAIR_BLOCKS_FLOAT
+#define TRIDEM_PAIR_BLOCKS_FLOAT 6
+#endif
 template <class Real>
 struct PairKernelShape;
 template <>
 struct PairKernelShape<double> {
-  static constexpr int threads = 128, min_blocks = 4;
+  static constexpr int threads = 128, min_blocks = TRIDEM_PAIR_BLOCKS_DOUBLE;
 };
 template <>
 struct PairKernelShape<float> {
-  static constexpr int threads = 128, min_blocks = 6;
+  static constexpr int threads = 128, min_blocks = TRIDEM_PAIR_BLOCKS_FLOAT;
 };
 
 /// kBodies: a scene with bodies of several triangles, whose members of one body

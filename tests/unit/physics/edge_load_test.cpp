@@ -45,8 +45,8 @@ TEST(EdgeLoad, EdgeOnAMedianIsCountedOnce) {
   EXPECT_NEAR(l.integral, 0.375 + 0.9375, 1e-14);
   const Quadrature q = quadrature({0, 0.5}, {0, 2.5}, kTarget);
   EXPECT_NEAR(l.integral, q.integral, 1e-9);
-  EXPECT_NEAR(l.point.y, q.moment.y / q.integral, 1e-9);
-  EXPECT_NEAR(l.point.x, 0.0, 1e-15);
+  EXPECT_NEAR(l.centroid().y, q.moment.y / q.integral, 1e-9);
+  EXPECT_NEAR(l.centroid().x, 0.0, 1e-15);
   // Σ 3ℓ/h: 0.5 of the edge in the bottom sub-triangle (h = 3), 1.5 in a top one
   // (h = 6/√10).
   EXPECT_NEAR(l.stiffness, 0.5 + 0.75 * std::sqrt(10.0), 1e-13);
@@ -69,8 +69,8 @@ TEST(EdgeLoad, LatticeMediansOfAnEquilateralTarget) {
     const EdgeLoad<double> l = load_of(p0, p1, t);
     const Quadrature q = quadrature(p0, p1, t);
     EXPECT_NEAR(l.integral, q.integral, 1e-9 * s) << "median " << k;
-    EXPECT_NEAR(l.point.x, q.moment.x / q.integral, 1e-8 * s) << "median " << k;
-    EXPECT_NEAR(l.point.y, q.moment.y / q.integral, 1e-8 * s) << "median " << k;
+    EXPECT_NEAR(l.centroid().x, q.moment.x / q.integral, 1e-8 * s) << "median " << k;
+    EXPECT_NEAR(l.centroid().y, q.moment.y / q.integral, 1e-8 * s) << "median " << k;
   }
 }
 
@@ -85,8 +85,8 @@ TEST(EdgeLoad, RandomEdgesMatchQuadrature) {
     EXPECT_NEAR(l.integral, q.integral, 1e-7) << "trial " << trial;
     if (q.integral > 1e-3) {
       ++inside;
-      EXPECT_NEAR(l.point.x, q.moment.x / q.integral, 1e-5) << "trial " << trial;
-      EXPECT_NEAR(l.point.y, q.moment.y / q.integral, 1e-5) << "trial " << trial;
+      EXPECT_NEAR(l.centroid().x, q.moment.x / q.integral, 1e-5) << "trial " << trial;
+      EXPECT_NEAR(l.centroid().y, q.moment.y / q.integral, 1e-5) << "trial " << trial;
     }
   }
   EXPECT_GT(inside, 50);

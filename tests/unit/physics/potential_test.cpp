@@ -33,8 +33,8 @@ TEST(Potential, EdgeAtUniformDepthCarriesKnownLoad) {
   const EdgeLoad<double> load =
       edge_load(contactor, 0, kTarget, signed_area(kTarget), centroid(kTarget));
   EXPECT_NEAR(load.integral, 0.3 * d, 1e-15);
-  EXPECT_NEAR(load.point.x, 0.0, 1e-14);
-  EXPECT_NEAR(load.point.y, -d, 1e-14);
+  EXPECT_NEAR(load.centroid().x, 0.0, 1e-14);
+  EXPECT_NEAR(load.centroid().y, -d, 1e-14);
   EXPECT_NEAR(load.stiffness, 3.0 * 1.0 / 10.0, 1e-14);
 }
 
@@ -61,8 +61,8 @@ TEST(Potential, EdgeLoadMatchesQuadratureOfThePotential) {
     EXPECT_NEAR(load.integral, integral, 1e-6 * (1 + integral)) << "trial " << trial;
     if (integral > 1e-3) {
       ++crossing;
-      EXPECT_NEAR(load.point.x, moment.x / integral, 1e-4) << "trial " << trial;
-      EXPECT_NEAR(load.point.y, moment.y / integral, 1e-4) << "trial " << trial;
+      EXPECT_NEAR(load.centroid().x, moment.x / integral, 1e-4) << "trial " << trial;
+      EXPECT_NEAR(load.centroid().y, moment.y / integral, 1e-4) << "trial " << trial;
     }
   }
   EXPECT_GT(crossing, 50);  // the test exercised real overlaps
