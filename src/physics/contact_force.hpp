@@ -332,7 +332,8 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
   // a is −|F|·N), tangent perpendicular to it.
   const Real f_potential = norm(out.force_a);
   Vec2<Real> n_ab = b.c - a.c;
-  if (f_potential > Real(0)) n_ab = out.force_a * (Real(-1) / f_potential);
+  if (f_potential > Real(0))
+    n_ab = out.force_a * (Real(-1) / f_potential);
   else n_ab = n_ab / norm(n_ab);
   out.normal = n_ab;
   // Stiffnesses: along N, N·K·N of the loads' stiffness matrix K = p·Σ n ⊗ ∇φ·ℓ (what a

@@ -4,18 +4,18 @@
 // validation/unstable_parity_test.cpp, which give it wrong solvers to prove it fails).
 //  - expect_runs_agree: pointwise, to the fixed tolerances of support/gpu_compare.hpp, for
 //    a scene that keeps rounding at rounding size (a settled one).
-//  - expect_servo_box_runs_agree: the servo box of support/program_scenes.hpp, whose pile of
-//    loose triangles parts from any run of other rounding from its first contacts (step
-//    ~382) and then about tenfold per 50-100 steps, until it is another pile: runs of the
-//    serial solver moved by an offset (support/shifted_run.hpp) leave even fifty times a
-//    rounding twin's spread at step 1000 or 1100, depending on the offset (by velocity: 2 of
-//    8 offsets with one rounding of the pair force, 4 of 8 with another). So the pile is compared pointwise, within kProgramEnvelope
-//    times the twin's spread (support/rounding_twin.hpp), only for `pointwise_steps`; over
-//    the whole run each solver must follow the servo law exactly on its own state (the
-//    velocity it gives the wall is the law's for the target of its own floor-lid gap and
-//    the force of its own contacts: rounding size, where a servo of 1 % other gain is off
-//    by 1 % of its speed), the walls that programs of time move agree pointwise, and the
-//    servo wall stays within kServoWallSpread of the reference's.
+//  - expect_servo_box_runs_agree: the servo box of support/program_scenes.hpp, whose pile of loose
+//    triangles parts from any run of other rounding from its first contacts (step ~382) and then
+//    about tenfold per 50-100 steps, until it is another pile: runs of the serial solver moved by
+//    an offset (support/shifted_run.hpp) leave even fifty times a rounding twin's spread at step
+//    1000 or 1100, depending on the offset (by velocity: 2 of 8 offsets with one rounding of the
+//    pair force, 4 of 8 with another). So the pile is compared pointwise, within kProgramEnvelope
+//    times the twin's spread (support/rounding_twin.hpp), only for `pointwise_steps`; over the
+//    whole run each solver must follow the servo law exactly on its own state (the velocity it
+//    gives the wall is the law's for the target of its own floor-lid gap and the force of its own
+//    contacts: rounding size, where a servo of 1 % other gain is off by 1 % of its speed), the
+//    walls that programs of time move agree pointwise, and the servo wall stays within
+//    kServoWallSpread of the reference's.
 #include "physics/motion_program.hpp"
 #include "support/gpu_compare.hpp"
 #include "support/program_scenes.hpp"
@@ -136,8 +136,8 @@ inline double servo_box_law_residual(const Scene& scene, const Snapshot& before,
 /// its step 0) up to `pointwise_steps`, the servo law, the programmed walls and the servo
 /// wall's spread throughout (see the top of this file).
 inline void expect_servo_box_runs_agree(const Scene& scene, Solver& reference, Solver& tried,
-                                        RoundingTwin& twin, std::int64_t steps,
-                                        std::int64_t every, std::int64_t pointwise_steps) {
+                                        RoundingTwin& twin, std::int64_t steps, std::int64_t every,
+                                        std::int64_t pointwise_steps) {
   Snapshot a0, b0, a, b;
   double twin_wall_force = 0;
   for (std::int64_t s = every; s <= steps; s += every) {
