@@ -1,11 +1,17 @@
 #include "core/memory_estimate.hpp"
 
+#include "broadphase/candidate_pairs.hpp"
 #include "core/particle_model.hpp"
 #include "physics/cohesive_bond.hpp"
 #include "physics/contact_force.hpp"
 #include "physics/pair_record.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/snapshot.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <vector>
 
 namespace tridem {
 
@@ -82,6 +88,51 @@ std::size_t gpu_bond_bytes(Precision precision) {
   return (precision == Precision::Float ? solver_bond_bytes<float>()
                                         : solver_bond_bytes<double>()) +
          8;
+}
+
+std::string mebibytes(std::size_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+std::size_t gpu_pair_bytes(Precision precision) {
+  return gpu_solver_bytes(0, 1, precision) - gpu_solver_bytes(0, 0, precision);
+}
+
+std::size_t first_list_pairs(const Scene& scene, const ParticleModel& model) {
+  const std::size_t n = model.size();
+  if (n < 2) return 0;
+  const GridClasses classes = classify_for_grid(model.longest_edge, model.motion);
+  const double margin = scene.simulation.skin * classes.cell;
+  std::vector<double> lo_x(n), lo_y(n), hi_x(n), hi_y(n), x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = model.centroid[i].x;
+    y[i] = model.centroid[i].y;
+    lo_x[i] = lo_y[i] = std::numeric_limits<double>::max();
+    hi_x[i] = hi_y[i] = std::numeric_limits<double>::lowest();
+    for (const Vec2d& r : model.offsets[i]) {
+      lo_x[i] = std::min(lo_x[i], x[i] + r.x);
+      lo_y[i] = std::min(lo_y[i], y[i] + r.y);
+      hi_x[i] = std::max(hi_x[i], x[i] + r.x);
+      hi_y[i] = std::max(hi_y[i], y[i] + r.y);
+    }
+    lo_x[i] -= margin;
+    lo_y[i] -= margin;
+    hi_x[i] += margin;
+    hi_y[i] += margin;
+  }
+  CandidatePairs<double> grid(model.longest_edge, model.motion);
+  PairList pairs;
+  const BoxArrays<double> boxes{lo_x.data(), lo_y.data(), hi_x.data(), hi_y.data()};
+  // Every method's candidates are these pairs; the grid finds them in O(n).
+  if (scene.simulation.periodic.any()) {
+    const PeriodicView view{periodic_frame_of(scene.simulation.periodic, 0.0), x.data(), y.data()};
+    grid.find(boxes, Method::Grid, true, pairs, &view);
+  } else {
+    grid.find(boxes, Method::Grid, true, pairs);
+  }
+  return static_cast<std::size_t>(pairs.count());
 }
 
 std::size_t gpu_solver_bytes(std::size_t n, std::size_t pairs, Precision precision,

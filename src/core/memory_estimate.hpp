@@ -6,17 +6,37 @@
 #include "tridem/scene.hpp"
 
 #include <cstddef>
+#include <string>
 
 namespace tridem {
 
-/// Pair slots every solver reserves before it has seen the scene's contacts: a dense
-/// packing lists 6.6 candidate pairs per particle (bench/), the GPU's Verlet skin adds
-/// more, and a floor covers small scenes. A list grows past it only when a scene packs
-/// denser.
+struct ParticleModel;
+
+/// Pair slots the CPU solvers reserve (address space, not memory: a vector's pages are only
+/// touched as the list fills them) before they have seen the scene's contacts: a dense
+/// packing lists 6.6 candidate pairs per particle (bench/), and a floor covers small scenes.
 inline constexpr std::size_t kReservedPairsPerParticle = 10;
 inline constexpr std::size_t reserved_pairs(std::size_t n) {
   return kReservedPairsPerParticle * n + 1024;
 }
+
+/// The pair slots a list of `listed` pairs is given on the GPU, where slots are memory: its
+/// first list's count and a fifth more, so that a packing that densifies a little does not
+/// allocate again, and a floor for small scenes.
+inline constexpr std::size_t pair_slots_for(std::size_t listed) {
+  return listed + listed / 5 + 1024;
+}
+
+/// About how many pairs the first list of a run of `model` holds: the particles whose
+/// bounding boxes, widened by the skin the GPU's list keeps, overlap (the broad phase's
+/// candidates; the contact test drops some). What `tridem info` sizes the pair slots by.
+std::size_t first_list_pairs(const Scene& scene, const ParticleModel& model);
+
+/// `bytes` as the refusals print it ("123 MiB").
+std::string mebibytes(std::size_t bytes);
+
+/// Bytes of GPU memory one pair slot takes (the per-pair part of gpu_solver_bytes).
+std::size_t gpu_pair_bytes(Precision precision);
 
 /// Bytes of GPU memory the CUDA solver allocates for n particles, room for `pairs` pairs
 /// and `bonds` cohesive bonds (sized once at start).

@@ -36,9 +36,10 @@ SceneInfo describe_scene(const Scene& scene) {
   info.dt_automatic = ts.automatic;
   info.steps = steps_to_reach(scene.simulation, ts.chosen);
   const std::size_t n = model.size();
-  info.memory_bytes =
-      cpu_run_bytes(n, reserved_pairs(n), scene.simulation.precision, scene.bonds.size());
-  info.gpu_memory_bytes = cuda_solver_bytes(n, scene.simulation.precision, scene.bonds.size());
+  const std::size_t pairs = first_list_pairs(scene, model);
+  info.memory_bytes = cpu_run_bytes(n, pairs, scene.simulation.precision, scene.bonds.size());
+  info.gpu_memory_bytes =
+      cuda_solver_bytes(n, pairs, scene.simulation.precision, scene.bonds.size());
   info.gpu = cuda_device_description();
   return info;
 }

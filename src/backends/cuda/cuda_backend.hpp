@@ -38,8 +38,10 @@ template <class Real>
 std::unique_ptr<RankSolver<Real>> make_cuda_rank(const Scene& scene, const ParticleModel& model,
                                                  const TimeStep& ts, const SolverConfig& config);
 
-/// Bytes of GPU memory the CUDA solver allocates at start for n particles and `bonds`
-/// cohesive bonds (core/memory_estimate.hpp); 0 in a build without CUDA.
-std::size_t cuda_solver_bytes(std::size_t n, Precision precision, std::size_t bonds = 0);
+/// Bytes of GPU memory the CUDA solver holds for n particles, a first list of `pairs` pairs
+/// (its slots: pair_slots_for) and `bonds` cohesive bonds (core/memory_estimate.hpp); 0 in a
+/// build without CUDA.
+std::size_t cuda_solver_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                              std::size_t bonds = 0);
 
 }  // namespace tridem

@@ -33,6 +33,6 @@ template std::unique_ptr<RankSolver<float>> make_cuda_rank(const Scene&, const P
 template std::unique_ptr<RankSolver<double>> make_cuda_rank(const Scene&, const ParticleModel&,
                                                             const TimeStep&, const SolverConfig&);
 
-std::size_t cuda_solver_bytes(std::size_t, Precision, std::size_t) { return 0; }
+std::size_t cuda_solver_bytes(std::size_t, std::size_t, Precision, std::size_t) { return 0; }
 
 }  // namespace tridem

@@ -45,12 +45,6 @@ std::size_t staging_bytes(std::size_t n) {
   return bytes;
 }
 
-std::string mib(std::size_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.0f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
-  return text;
-}
-
 }  // namespace
 
 template <class Real>
@@ -66,20 +60,20 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   cudaDeviceProp prop{};
   TRIDEM_CUDA_CHECK(cudaGetDeviceProperties(&prop, config.device));
   device_name_ = prop.name;
-  // Refuse before allocating anything: a scene that does not fit says so up front.
-  const std::size_t reserve = reserved_pairs(n_);
-  const std::size_t need =
-      gpu_solver_bytes(n_, reserve, scene.simulation.precision, scene.bonds.size());
+  // Refuse before allocating anything: a scene whose particles and bonds do not fit says so
+  // up front. The pair slots are sized by the first list's count (PairListBuilder), which
+  // refuses in the same words if they do not fit.
+  const std::size_t need = gpu_solver_bytes(n_, 0, scene.simulation.precision, scene.bonds.size());
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
     throw RunError(
-        "the scene needs about " + mib(need) + " of GPU memory for " + std::to_string(n_) +
+        "the scene needs about " + mebibytes(need) + " of GPU memory for " + std::to_string(n_) +
         " particles" +
         (scene.bonds.empty() ? std::string()
                              : " and " + std::to_string(scene.bonds.size()) + " bonds") +
-        ", but the GPU (" + device_name_ + ") has " + mib(free_bytes) + " free of " +
-        mib(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
+        ", but the GPU (" + device_name_ + ") has " + mebibytes(free_bytes) + " free of " +
+        mebibytes(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
         "\", fewer particles, or backend = \"" + std::string(backend_name(Backend::OpenMP)) + "\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
   events_ = std::make_unique<StageEvents>(stream_);
@@ -120,8 +114,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   margin_ = static_cast<Real>(scene.simulation.skin * classes.cell);
   filter_ = {scene.simulation.contact_test, scene.simulation.bbox_prefilter};
   pairs_ = std::make_unique<PairListBuilder<Real>>(
-      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, reserve,
-      stream_);
+      classes.small, method_, static_cast<Real>(classes.cell) + 2 * margin_, filter_, 0, stream_);
   cell_ = scene.simulation.periodic;
   periodic_ = cell_.any();
   if (periodic_) {
@@ -656,8 +649,9 @@ std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel
   return std::make_unique<cuda::CudaSolver<double>>(scene, model, ts, config);
 }
 
-std::size_t cuda_solver_bytes(std::size_t n, Precision precision, std::size_t bonds) {
-  return gpu_solver_bytes(n, reserved_pairs(n), precision, bonds);
+std::size_t cuda_solver_bytes(std::size_t n, std::size_t pairs, Precision precision,
+                              std::size_t bonds) {
+  return gpu_solver_bytes(n, pair_slots_for(pairs), precision, bonds);
 }
 
 }  // namespace tridem

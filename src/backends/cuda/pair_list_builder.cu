@@ -3,7 +3,9 @@
 #include "backends/cuda/broad_phase_kernels.cuh"
 #include "backends/cuda/periodic_search.cuh"
 
+#include "core/memory_estimate.hpp"
 #include "tridem/error.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -76,6 +78,7 @@ void PairListBuilder<Real>::reserve_pairs(std::size_t pairs) {
   pairs = std::max<std::size_t>(pairs, 1);
   if (pairs > static_cast<std::size_t>(INT_MAX))
     throw RunError("the pair list would need more than 2^31 pairs: too many particles for one GPU");
+  refuse_unless_pairs_fit(pairs);
   // Each buffer is grown on its own: the old list must survive while the new one is built.
   auto grow = [pairs](auto& buffer) {
     if (buffer.size() < pairs) buffer.allocate(pairs);
@@ -92,6 +95,26 @@ void PairListBuilder<Real>::reserve_pairs(std::size_t pairs) {
   grow(sorted_partner_);
   grow(reverse_slot_);
   size_temp_storage();
+}
+
+template <class Real>
+void PairListBuilder<Real>::refuse_unless_pairs_fit(std::size_t pairs) const {
+  const std::size_t have = std::min(partner_.size(), slip_.size());
+  if (pairs <= have) return;
+  const Precision precision = sizeof(Real) == sizeof(float) ? Precision::Float : Precision::Double;
+  const std::size_t need = (pairs - have) * gpu_pair_bytes(precision);
+  std::size_t free_bytes = 0, total_bytes = 0;
+  TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
+  if (need > free_bytes)
+    throw RunError("the pair list needs " + std::to_string(pairs) + " slots, about " +
+                   mebibytes(need) + " more of GPU memory, for the " + std::to_string(count_) +
+                   " pairs it lists, but the GPU has " + mebibytes(free_bytes) + " free of " +
+                   mebibytes(total_bytes) + ": use " +
+                   (precision == Precision::Double
+                        ? "precision = \"" + std::string(precision_name(Precision::Float)) + "\", "
+                        : std::string()) +
+                   "fewer particles, a smaller skin, or backend = \"" +
+                   std::string(backend_name(Backend::OpenMP)) + "\"");
 }
 
 template <class Real>
@@ -262,7 +285,7 @@ void PairListBuilder<Real>::size_rows() {
   // Denser than reserved: grow with headroom (the only allocation a running loop makes).
   if (static_cast<std::size_t>(count_) > partner_.size() ||
       static_cast<std::size_t>(count_) > slip_.size())
-    reserve_pairs(static_cast<std::size_t>(count_) + static_cast<std::size_t>(count_) / 5 + 1024);
+    reserve_pairs(pair_slots_for(static_cast<std::size_t>(count_)));
 }
 
 template <class Real>
@@ -286,7 +309,7 @@ template <class Real>
 void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vector<int>& partner,
                                  const std::vector<physics::PairSlip<Real>>& slip) {
   if (partner.size() > partner_.size() || slip.size() > slip_.size())
-    reserve_pairs(partner.size() + partner.size() / 5 + 1024);
+    reserve_pairs(pair_slots_for(partner.size()));
   auto copy = [this](auto& buffer, const auto& host) {
     if (!host.empty())
       TRIDEM_CUDA_CHECK(cudaMemcpyAsync(buffer.data(), host.data(),

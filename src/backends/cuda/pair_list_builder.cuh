@@ -1,6 +1,7 @@
 #pragma once
-// The pair list of the CUDA solver and how it is rebuilt: sizes fixed at start (grown only
-// if a run packs denser than reserved). The pairs are found by the cell grid or all-pairs
+// The pair list of the CUDA solver and how it is rebuilt: its pair slots sized by the first
+// list's count and a fifth more (core/memory_estimate.hpp, pair_slots_for), grown the same
+// way only if a run packs denser. The pairs are found by the cell grid or all-pairs
 // (broad_phase_kernels.cuh) or by the paper's single-domain kernel
 // (single_domain_kernels.cuh); the rows, contact history and reverse index that follow are
 // one code for all. Between grid builds the list stays, and with it every pair's slot and
@@ -77,6 +78,9 @@ class PairListBuilder {
 
  private:
   void reserve_pairs(std::size_t pairs);
+  /// Throws RunError, naming the pairs and the memory, when growing the slots to `pairs`
+  /// needs more GPU memory than is free.
+  void refuse_unless_pairs_fit(std::size_t pairs) const;
   void size_temp_storage();
   CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
   SingleDomainSearch<Real> single_domain_search(const ParticleArrays<Real>& p) const;

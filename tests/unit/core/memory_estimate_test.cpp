@@ -1,15 +1,24 @@
 // `tridem info`'s memory estimate (core/memory_estimate) counts the cohesive bonds: a bonded
 // scene costs its bonds' bytes on top of the same triangles unbonded, and a bond's bytes
 // cover at least the solver's state of it; the GPU's estimate (the CUDA solver's refusal of
-// a scene too large for its GPU) counts them too.
+// a scene too large for its GPU) counts them too. Its pairs are the first list's
+// (first_list_pairs), as the CUDA solver sizes its pair slots.
 #include "core/memory_estimate.hpp"
 #include "backends/cuda/cuda_backend.hpp"
+#include "broadphase/candidate_pairs.hpp"
+#include "core/particle_model.hpp"
+#include "physics/geometry.hpp"
 #include "physics/cohesive_bond.hpp"
+#include "support/gpu.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/run.hpp"
 #include "tridem/scene.hpp"
+#include "tridem/solver.hpp"
+#include "tridem/standard_scenes.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
 
 namespace tridem {
 namespace {
@@ -54,10 +63,102 @@ TEST(MemoryEstimate, CountsTheBondsOnTheGpu) {
   Scene loose = bonded;
   loose.bonds.clear();
   const SceneInfo with = describe_scene(bonded), without = describe_scene(loose);
-  if (cuda_solver_bytes(2, Precision::Double) > 0)
+  if (cuda_solver_bytes(2, 0, Precision::Double) > 0)
     EXPECT_EQ(with.gpu_memory_bytes - without.gpu_memory_bytes, gpu_bond_bytes(Precision::Double));
   else
     EXPECT_EQ(with.gpu_memory_bytes, 0u);
+}
+
+/// The pairs of `model` whose boxes widened by `margin` overlap, one free, by brute force.
+std::size_t overlapping_boxes(const ParticleModel& model, double margin) {
+  std::vector<physics::Aabb<double>> box(model.size());
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    Vec2d lo = model.centroid[i], hi = model.centroid[i];
+    for (const Vec2d& r : model.offsets[i]) {
+      const Vec2d v = model.centroid[i] + r;
+      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+    }
+    box[i] = {{lo.x - margin, lo.y - margin}, {hi.x + margin, hi.y + margin}};
+  }
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < model.size(); ++i)
+    for (std::size_t j = i + 1; j < model.size(); ++j)
+      if ((model.motion[i] == Motion::Free || model.motion[j] == Motion::Free) &&
+          physics::boxes_overlap(box[i], box[j]))
+        ++count;
+  return count;
+}
+
+TEST(MemoryEstimate, FirstListPairsAreTheBoxesThatOverlapWithinTheSkin) {
+  for (const double skin : {0.0, 0.05, 0.3}) {
+    Scene s = dense_pile(400);
+    s.simulation.skin = skin;
+    const ParticleModel model = build_particle_model(s);
+    const double cell = classify_for_grid(model.longest_edge, model.motion).cell;
+    const std::size_t listed = first_list_pairs(s, model);
+    EXPECT_EQ(listed, overlapping_boxes(model, skin * cell)) << "skin " << skin;
+    EXPECT_GT(listed, model.size()) << "a dense pile touches its neighbours";
+  }
+}
+
+TEST(MemoryEstimate, GpuPairSlotsAreTheFirstListsNotAFixedRule) {
+  // A dense pile and the same grains spread ten times as far apart (the same sizes): the
+  // spread ones list next to no pair, and are told so (the fixed rule of ten slots a
+  // triangle gave both the same).
+  const Scene dense = dense_pile(400);
+  Scene spread = dense;
+  for (TriangleSpec& t : spread.triangles)
+    if (t.motion == Motion::Free) {
+      const Vec2d c = (t.vertices[0] + t.vertices[1] + t.vertices[2]) * (1.0 / 3);
+      for (Vec2d& v : t.vertices) v = v + c * 9.0;
+    }
+  const ParticleModel dense_model = build_particle_model(dense);
+  const std::size_t n = dense_model.size();
+  const std::size_t dense_pairs = first_list_pairs(dense, dense_model);
+  const std::size_t spread_pairs = first_list_pairs(spread, build_particle_model(spread));
+  EXPECT_LT(spread_pairs, dense_pairs / 4);
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    EXPECT_EQ(gpu_solver_bytes(n, dense_pairs, p) - gpu_solver_bytes(n, 0, p),
+              dense_pairs * gpu_pair_bytes(p));
+    if (cuda_solver_bytes(n, 0, p) > 0)
+      EXPECT_EQ(cuda_solver_bytes(n, dense_pairs, p),
+                gpu_solver_bytes(n, pair_slots_for(dense_pairs), p));
+  }
+  const SceneInfo d = describe_scene(dense);
+  if (d.gpu_memory_bytes > 0) {
+    EXPECT_EQ(d.gpu_memory_bytes, cuda_solver_bytes(n, dense_pairs, Precision::Double));
+    EXPECT_LT(describe_scene(spread).gpu_memory_bytes, d.gpu_memory_bytes);
+  }
+  EXPECT_EQ(d.memory_bytes, cpu_run_bytes(n, dense_pairs, Precision::Double));
+  EXPECT_EQ(pair_slots_for(dense_pairs), dense_pairs + dense_pairs / 5 + 1024);
+}
+
+// On the GPU: the CUDA solver's pair slots after its first build are that list's count and
+// a fifth more (not ten a triangle), and first_list_pairs, which `tridem info` sizes them
+// by, is an upper bound of the list (the contact test drops some candidates) near it.
+TEST(GpuMemory, PairSlotsAreTheFirstListsCountAndAFifth) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    Scene s = dense_pile(3000);
+    s.simulation.backend = Backend::Cuda;
+    s.simulation.precision = p;
+    auto solver = make_solver(s, {});
+    solver->advance(1);
+    long long builds = 0, steps = 0;
+    std::size_t listed = 0, room = 0;
+    ASSERT_EQ(std::sscanf(solver->statistics().c_str(),
+                          "pair list built %lld times in %lld steps; %zu pairs (room for %zu)",
+                          &builds, &steps, &listed, &room),
+              4)
+        << solver->statistics();
+    ASSERT_EQ(builds, 1);
+    EXPECT_EQ(room, pair_slots_for(listed));
+    EXPECT_LT(room, reserved_pairs(s.triangles.size()));
+    const std::size_t estimate = first_list_pairs(s, build_particle_model(s));
+    EXPECT_GE(estimate, listed);
+    EXPECT_LE(estimate, 2 * listed);
+  }
 }
 
 }  // namespace
