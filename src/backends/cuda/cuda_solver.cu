@@ -67,14 +67,15 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
-    throw RunError(
-        "the scene needs about " + mebibytes(need) + " of GPU memory for " + std::to_string(n_) +
-        " particles" +
-        (scene.bonds.empty() ? std::string()
-                             : " and " + std::to_string(scene.bonds.size()) + " bonds") +
-        ", but the GPU (" + device_name_ + ") has " + mebibytes(free_bytes) + " free of " +
-        mebibytes(total_bytes) + ": use precision = \"" + std::string(precision_name(Precision::Float)) +
-        "\", fewer particles, or backend = \"" + std::string(backend_name(Backend::OpenMP)) + "\"");
+    throw RunError("the scene needs about " + mebibytes(need) + " of GPU memory for " +
+                   std::to_string(n_) + " particles" +
+                   (scene.bonds.empty() ? std::string()
+                                        : " and " + std::to_string(scene.bonds.size()) + " bonds") +
+                   ", but the GPU (" + device_name_ + ") has " + mebibytes(free_bytes) +
+                   " free of " + mebibytes(total_bytes) + ": use precision = \"" +
+                   std::string(precision_name(Precision::Float)) +
+                   "\", fewer particles, or backend = \"" +
+                   std::string(backend_name(Backend::OpenMP)) + "\"");
   TRIDEM_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
   events_ = std::make_unique<StageEvents>(stream_);
 
