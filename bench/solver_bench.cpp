@@ -12,8 +12,10 @@
 //   threads          OpenMP threads the solver runs with (1 for the serial solver)
 //   triangles        solver->size(): grains plus the 3 fixed wall triangles
 //   steps_per_iter   k
-//   first_step       the first timed step (after the warm-up)
+//   first_step       the first timed step (after the warm-up and, for settled_pile, the
+//                    settling steps)
 //   contacts_per_tri touching pairs per triangle at the end of the window (density check)
+//   rms_speed        root mean square speed of the free grains then, m/s (how settled)
 //   stage_<name>     seconds per step of each stage in the timed window (Solver::
 //                    stage_times(): steady_clock on the CPU, CUDA events on the GPU); a
 //                    stage the backend fuses into another one's kernel has no counter
@@ -42,6 +44,13 @@
 //                     dense_pile(10^6)); bonded_pile(n) is dense_pile(n) with every grain
 //                     bonded to its lattice neighbours (issue 14: about 1.5 cohesive bonds
 //                     per triangle; counter `bonds`); their cases are <scene>/<backend>/n:<n>
+//                     settled_pile(n) is dense_pile(n) as deep as at 10^4 (0.66 m; wider
+//                     at larger n) after --settle_steps steps under gravity (issue 12: a
+//                     settled pile beside the dense one), stepped once
+//                     per size and precision by the fastest backend there (cuda, else
+//                     openmp), kept as a SolverState (what a checkpoint holds) and loaded
+//                     into each repetition's solver; counter `settle_steps`
+//   --settle_steps=N  steps that settle settled_pile (default 50000)
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
@@ -130,20 +139,30 @@ bool g_stage_timing = true;
 tridem::SimulationSettings g_method;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies, Bonded };
-constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded};
+enum class Pile { Dense, Bodies, Bonded, Settled };
+constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled};
 const char* pile_name(Pile p) {
   switch (p) {
     case Pile::Dense: return "dense_pile";
     case Pile::Bodies: return "body_pile";
     case Pile::Bonded: return "bonded_pile";
+    case Pile::Settled: return "settled_pile";
   }
   return "";
 }
 
+/// --settle_steps: how long settled_pile settles.
+std::int64_t g_settle_steps = 50000;
+/// While settled_pile settles, its grains are stopped every kRelaxEvery steps.
+constexpr std::int64_t kRelaxEvery = 1000;
+
 tridem::Scene make_pile(Pile kind, std::size_t n) {
   switch (kind) {
     case Pile::Dense: return tridem::dense_pile(n);
+    // As deep as dense_pile(10^4) at every size (0.66 m: wider, not deeper), so that the
+    // same --settle_steps settle it.
+    case Pile::Settled:
+      return tridem::dense_pile(n, 0.01, std::max(1.0, static_cast<double>(n) / 1e4));
     case Pile::Bodies: return tridem::body_pile(n);
     case Pile::Bonded: return tridem::bonded_pile(n);
   }
@@ -168,11 +187,44 @@ const tridem::Scene& pile(Pile kind, std::size_t n) {
   return scene;
 }
 
+/// settled_pile's state in `precision`: dense_pile(n) stepped g_settle_steps steps by the
+/// fastest backend there, once per size and precision (the last one asked for is kept).
+const tridem::SolverState& settled_state(std::size_t n, tridem::Precision precision) {
+  static std::size_t cached_n = 0;
+  static tridem::Precision cached_precision = tridem::Precision::Double;
+  static tridem::SolverState state;
+  if (cached_n != n || cached_precision != precision) {
+    tridem::Scene scene = pile(Pile::Settled, n);
+    scene.simulation.backend =
+        tridem::cuda_available(nullptr) ? Backend::Cuda : Backend::OpenMP;
+    scene.simulation.precision = precision;
+    const auto settling = tridem::make_solver(scene, tridem::SolverConfig{});
+    // Kinetic relaxation: every kRelaxEvery steps every grain is stopped, so that the
+    // pre-stressed pile's energy, which throws its top grains up at about 0.5 m/s and which
+    // its contacts' damping alone takes some 10^5 steps to spend, leaves within a few
+    // thousand steps, and the pile comes to rest under gravity.
+    for (std::int64_t done = 0; done < g_settle_steps; done += kRelaxEvery) {
+      settling->advance(std::min(kRelaxEvery, g_settle_steps - done));
+      settling->save_state(state);
+      for (auto* v : {&state.vx, &state.vy, &state.omega}) std::fill(v->begin(), v->end(), 0.0);
+      settling->load_state(state);
+    }
+    // The last stop is not the measured state: the pile steps on a while after it.
+    settling->advance(kRelaxEvery);
+    settling->save_state(state);
+    cached_n = n;
+    cached_precision = precision;
+  }
+  return state;
+}
+
 std::unique_ptr<tridem::Solver> make(const Variant& v, Pile kind, std::size_t n) {
   tridem::Scene scene = pile(kind, n);
   scene.simulation.backend = v.backend;
   scene.simulation.precision = v.precision;
-  return tridem::make_solver(scene, tridem::SolverConfig{});
+  auto solver = tridem::make_solver(scene, tridem::SolverConfig{});
+  if (kind == Pile::Settled) solver->load_state(settled_state(n, v.precision));
+  return solver;
 }
 
 /// A solver past its warm-up steps, or none (the case then reports why and is skipped).
@@ -216,8 +268,18 @@ void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std
       backend == Backend::Cpu ? 1 : (backend == Backend::OpenMP ? omp_get_max_threads() : 0);
   state.counters["triangles"] = tri;
   state.counters["steps_per_iter"] = static_cast<double>(k);
-  state.counters["first_step"] = static_cast<double>(kWarmupSteps + 1);
+  const std::int64_t settled = kind == Pile::Settled ? g_settle_steps : 0;
+  state.counters["first_step"] = static_cast<double>(settled + kWarmupSteps + 1);
+  state.counters["settle_steps"] = static_cast<double>(settled);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  double v2 = 0;
+  std::size_t free = 0;
+  for (std::size_t i = 0; i < snap.size(); ++i)
+    if (snap.motion[i] == tridem::Motion::Free) {
+      v2 += snap.vx[i] * snap.vx[i] + snap.vy[i] * snap.vy[i];
+      ++free;
+    }
+  state.counters["rms_speed"] = free > 0 ? std::sqrt(v2 / static_cast<double>(free)) : 0.0;
   state.counters["bodies"] = static_cast<double>(snap.body_count());
   state.counters["bonds"] = static_cast<double>(snap.bond_a.size());
   const tridem::StageTimes after = solver->stage_times();
@@ -292,8 +354,8 @@ int main(int argc, char** argv) {
       const auto* p = std::find_if(std::begin(kPiles), std::end(kPiles),
                                    [&](Pile x) { return name == pile_name(x); });
       if (p == std::end(kPiles)) {
-        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile; "
-                     "got '"
+        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
+                     "settled_pile; got '"
                   << name << "'\n";
         return 2;
       }
@@ -301,6 +363,8 @@ int main(int argc, char** argv) {
       at = comma + 1;
     }
   }
+  if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
+    g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
   tridem::DecompositionSettings& d = g_method.decomposition;
   using tridem::bench::take_choice;
