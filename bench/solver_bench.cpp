@@ -195,8 +195,7 @@ const tridem::SolverState& settled_state(std::size_t n, tridem::Precision precis
   static tridem::SolverState state;
   if (cached_n != n || cached_precision != precision) {
     tridem::Scene scene = pile(Pile::Settled, n);
-    scene.simulation.backend =
-        tridem::cuda_available(nullptr) ? Backend::Cuda : Backend::OpenMP;
+    scene.simulation.backend = tridem::cuda_available(nullptr) ? Backend::Cuda : Backend::OpenMP;
     scene.simulation.precision = precision;
     const auto settling = tridem::make_solver(scene, tridem::SolverConfig{});
     // Kinetic relaxation: every kRelaxEvery steps every grain is stopped, so that the
