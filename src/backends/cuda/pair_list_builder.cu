@@ -106,9 +106,9 @@ void PairListBuilder<Real>::refuse_unless_pairs_fit(std::size_t pairs) const {
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (need > free_bytes)
-    throw RunError("the pair list needs " + std::to_string(pairs) + " slots, about " +
-                   mebibytes(need) + " more of GPU memory, for the " + std::to_string(count_) +
-                   " pairs it lists, but the GPU has " + mebibytes(free_bytes) + " free of " +
+    throw RunError("the pair list needs " + std::to_string(pairs) + " slots (its pairs and a " +
+                   "fifth more), about " + mebibytes(need) +
+                   " more of GPU memory, but the GPU has " + mebibytes(free_bytes) + " free of " +
                    mebibytes(total_bytes) + ": use " +
                    (precision == Precision::Double
                         ? "precision = \"" + std::string(precision_name(Precision::Float)) + "\", "
