@@ -121,9 +121,10 @@ TEST(MemoryEstimate, GpuPairSlotsAreTheFirstListsNotAFixedRule) {
   for (Precision p : {Precision::Double, Precision::Float}) {
     EXPECT_EQ(gpu_solver_bytes(n, dense_pairs, p) - gpu_solver_bytes(n, 0, p),
               dense_pairs * gpu_pair_bytes(p));
-    if (cuda_solver_bytes(n, 0, p) > 0)
+    if (cuda_solver_bytes(n, 0, p) > 0) {
       EXPECT_EQ(cuda_solver_bytes(n, dense_pairs, p),
                 gpu_solver_bytes(n, pair_slots_for(dense_pairs), p));
+    }
   }
   const SceneInfo d = describe_scene(dense);
   if (d.gpu_memory_bytes > 0) {
