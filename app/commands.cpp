@@ -149,6 +149,12 @@ int info(const std::string& path) {
                m.file_name(),
                every > 0 ? fmt::format("every {} steps", every) : std::string("last step only"));
   }
+  fmt::print("pairs        about {} in the first list ({:.2f} a triangle: candidates within the "
+             "skin)\n",
+             info.first_list_pairs,
+             info.triangles > 0
+                 ? static_cast<double>(info.first_list_pairs) / static_cast<double>(info.triangles)
+                 : 0.0);
   fmt::print("memory       about {:.1f} MiB (cpu and openmp backends)\n",
              static_cast<double>(info.memory_bytes) / (1024.0 * 1024.0));
   if (info.gpu_memory_bytes > 0)

@@ -93,6 +93,9 @@ struct SceneInfo {
   std::size_t memory_bytes = 0;      ///< estimated memory of a run (solver and host)
   std::size_t gpu_memory_bytes = 0;  ///< GPU memory the cuda backend reserves at start
                                      ///< (0 in a build without CUDA)
+  /// Pairs in the run's first list, about: those within the skin at the start (the broad
+  /// phase's candidates), which the memory estimates are sized by.
+  std::size_t first_list_pairs = 0;
   std::string gpu;                   ///< the GPU found, empty when none is usable
 };
 

@@ -37,6 +37,7 @@ SceneInfo describe_scene(const Scene& scene) {
   info.steps = steps_to_reach(scene.simulation, ts.chosen);
   const std::size_t n = model.size();
   const std::size_t pairs = first_list_pairs(scene, model);
+  info.first_list_pairs = pairs;
   info.memory_bytes = cpu_run_bytes(n, pairs, scene.simulation.precision, scene.bonds.size());
   info.gpu_memory_bytes =
       cuda_solver_bytes(n, pairs, scene.simulation.precision, scene.bonds.size());

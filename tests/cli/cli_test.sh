@@ -116,6 +116,7 @@ grep -q "^periodic     x in \[-1, 1)" out.txt || fail "info lacks the periodic c
 if [ "$have_cuda" = 1 ]; then
   grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"
 fi
+grep -Eq "^pairs        about [0-9]+ in the first list" out.txt || fail "info lacks the first list's pairs"
 
 # render draws the last frame to PNG.
 expect_ok "$tridem" render pile_out -o pile.png

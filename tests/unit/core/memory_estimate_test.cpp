@@ -132,6 +132,7 @@ TEST(MemoryEstimate, GpuPairSlotsAreTheFirstListsNotAFixedRule) {
     EXPECT_LT(describe_scene(spread).gpu_memory_bytes, d.gpu_memory_bytes);
   }
   EXPECT_EQ(d.memory_bytes, cpu_run_bytes(n, dense_pairs, Precision::Double));
+  EXPECT_EQ(d.first_list_pairs, dense_pairs);
   EXPECT_EQ(pair_slots_for(dense_pairs), dense_pairs + dense_pairs / 5 + 1024);
 }
 
