@@ -4,13 +4,12 @@
 #include "core/particle_model.hpp"
 #include "physics/cohesive_bond.hpp"
 #include "physics/contact_force.hpp"
+#include "physics/geometry.hpp"
 #include "physics/pair_record.hpp"
 #include "tridem/particle_fields.hpp"
 #include "tridem/snapshot.hpp"
 
-#include <algorithm>
 #include <cstdio>
-#include <limits>
 #include <vector>
 
 namespace tridem {
@@ -109,18 +108,12 @@ std::size_t first_list_pairs(const Scene& scene, const ParticleModel& model) {
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = model.centroid[i].x;
     y[i] = model.centroid[i].y;
-    lo_x[i] = lo_y[i] = std::numeric_limits<double>::max();
-    hi_x[i] = hi_y[i] = std::numeric_limits<double>::lowest();
-    for (const Vec2d& r : model.offsets[i]) {
-      lo_x[i] = std::min(lo_x[i], x[i] + r.x);
-      lo_y[i] = std::min(lo_y[i], y[i] + r.y);
-      hi_x[i] = std::max(hi_x[i], x[i] + r.x);
-      hi_y[i] = std::max(hi_y[i], y[i] + r.y);
-    }
-    lo_x[i] -= margin;
-    lo_y[i] -= margin;
-    hi_x[i] += margin;
-    hi_y[i] += margin;
+    const physics::Aabb<double> box =
+        physics::bounding_box(physics::place(model.centroid[i], 0.0, model.offsets[i].data()));
+    lo_x[i] = box.lo.x - margin;
+    lo_y[i] = box.lo.y - margin;
+    hi_x[i] = box.hi.x + margin;
+    hi_y[i] = box.hi.y + margin;
   }
   CandidatePairs<double> grid(model.longest_edge, model.motion);
   PairList pairs;
