@@ -2,6 +2,7 @@
 // Everything a run writes to disk. Every writer takes the double-precision Snapshot, so
 // none of this depends on the solver's real type or backend. docs/output-format.md is
 // the users' description of the files; keep the two in step.
+#include "tridem/contact_copy.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
@@ -109,8 +110,10 @@ class OutputSet {
   /// contents of `s` by swap (`s` is left with an earlier frame's buffer, for the next
   /// Solver::snapshot to overwrite). The other calls may run while a frame is written: the
   /// frames' writers share nothing with the logs'. A failure surfaces as the RunError it
-  /// was, thrown by the next write_frame_beside, write_frame or finish_frames.
-  void write_frame_beside(Snapshot& s);
+  /// was, thrown by the next write_frame_beside, write_frame or finish_frames. With
+  /// `contacts` (started at `s`'s step, its buffers not in use), the output thread first
+  /// appends the contacts it copies to `s`'s contents (tridem/contact_copy.hpp).
+  void write_frame_beside(Snapshot& s, ContactCopy* contacts = nullptr);
   /// Waits for the frame in flight; throws its failure, if any.
   void finish_frames();
   /// One row of energy.csv (with the solver's budget under gravity g) and walls.csv.

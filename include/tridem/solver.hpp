@@ -1,6 +1,7 @@
 #pragma once
 // The solver interface: one object per run, holding the state on its backend. The step is
 // a fixed sequence of stages (see Stage); backends differ only in how they schedule it.
+#include "tridem/contact_copy.hpp"
 #include "tridem/energy_budget.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/snapshot.hpp"
@@ -81,6 +82,11 @@ class Solver {
   /// allocates its buffers here. The default takes snapshots (make_snapshot_copy); the CPU
   /// solvers copy their arrays, the CUDA solver downloads on a stream of its own.
   virtual std::unique_ptr<StateCopy> make_state_copy() const { return make_snapshot_copy(*this); }
+  /// A copy of the contacts for frames (tridem/contact_copy.hpp), made once per run; null
+  /// (the default) when a snapshot with contacts costs the stepping thread little, as on
+  /// the CPU: the time loop then takes them with the snapshot. The CUDA solver's compacts
+  /// and downloads them beside the steps.
+  virtual std::unique_ptr<ContactCopy> make_contact_copy() const { return nullptr; }
   /// Copies what a restart needs (state, step, time, contact history) to the host, under
   /// the contract of solver_state.hpp. Allocates: call it between steps, not inside them.
   virtual void save_state(SolverState& out) const = 0;

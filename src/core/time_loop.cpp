@@ -53,6 +53,17 @@ TimeLoop::TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, Checkpoin
       checkpoint_every_(scene.output.checkpoint_every) {
   for (const MeasureSpec& m : scene.output.measures)
     measure_every_.push_back(scene.output.measure_every(m));
+  if (every_ > 0 && scene.output.contacts) contact_copy_ = solver.make_contact_copy();
+}
+
+// The frame thread may still be appending the contact copy's rows (a failure elsewhere
+// left the loop): it must be done before the copy goes. Its own failure is dropped here.
+TimeLoop::~TimeLoop() {
+  if (!contact_copy_) return;
+  try {
+    out_.finish_frames();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): an error already on its way out wins
+  }
 }
 
 void TimeLoop::start(bool resumed) {
@@ -154,10 +165,18 @@ bool TimeLoop::measure_due_at(std::int64_t step) const {
 void TimeLoop::emit(std::int64_t step, bool frame, bool log, bool measure) {
   // Frames take the contacts when [output] contacts asks for them (the contact files and
   // the frames' per-grain stress come from them); a measure always does. Without them a
-  // frame is the state alone: on the GPU the contacts are the larger part of a download.
+  // frame is the state alone: on the GPU the contacts are the larger part of a download,
+  // and a frame's are copied beside the steps (ContactCopy) unless a measure needs them now.
+  const bool frame_contacts = frame && scene_.output.contacts;
+  ContactCopy* beside = frame_contacts && !measure ? contact_copy_.get() : nullptr;
+  if (beside) {  // the copy's buffer is the previous frame's until that frame is written
+    const OutputClock part(parts_.frame_waits);
+    out_.finish_frames();
+  }
   {
     const OutputClock part(parts_.snapshots);
-    solver_.snapshot(snap_, (frame && scene_.output.contacts) || measure);
+    solver_.snapshot(snap_, (frame_contacts && !beside) || measure);
+    if (beside) beside->start();
   }
   if (log) out_.log(snap_, scene_.simulation.gravity, solver_.energy());
   if (measure) out_.measure(snap_, step == last_);
@@ -168,7 +187,7 @@ void TimeLoop::emit(std::int64_t step, bool frame, bool log, bool measure) {
   // Last: the frame is written beside the next steps and takes snap_'s contents with it.
   if (frame) {
     const OutputClock part(parts_.frame_waits);
-    out_.write_frame_beside(snap_);
+    out_.write_frame_beside(snap_, beside);
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,11 @@ class TimeLoop {
   TimeLoop(Solver& solver, OutputSet& out, const Scene& scene, CheckpointMeta meta,
            const std::atomic<int>* interrupt, bool progress, StepObserver* observer = nullptr);
 
+  /// Waits for a frame in flight (dropping its failure) when it may still use the loop's
+  /// contact copy.
+  ~TimeLoop();
+  TimeLoop(const TimeLoop&) = delete;
+  TimeLoop& operator=(const TimeLoop&) = delete;
   /// Writes the outputs of step 0 (a fresh run), or final.csv when a restarted run is
   /// already at its end.
   void start(bool resumed);
@@ -71,6 +77,8 @@ class TimeLoop {
   std::int64_t chunk_ = 1;
   double seconds_per_step_ = 0;  ///< of the last chunk (the observer sizes its chunks by it)
   Snapshot snap_;
+  /// A frame's contacts copied beside the steps (null: taken with the snapshot).
+  std::unique_ptr<ContactCopy> contact_copy_;
   Checkpoint checkpoint_;  ///< reused: its arrays keep their capacity between checkpoints
   double output_seconds_ = 0;
   OutputSeconds parts_;  ///< of output_seconds_; its `rest` is filled by output_parts()

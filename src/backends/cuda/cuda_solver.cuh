@@ -26,6 +26,8 @@ namespace tridem::cuda {
 
 template <class Real>
 class CudaStateCopy;  // live_state_copy.cu
+template <class Real>
+class CudaContactCopy;  // contact_copy.cu
 
 template <class Real>
 class CudaSolver final : public Solver {
@@ -37,6 +39,7 @@ class CudaSolver final : public Solver {
   void advance(std::int64_t steps) override;
   void snapshot(Snapshot& out, bool with_contacts) const override;
   std::unique_ptr<StateCopy> make_state_copy() const override;  // live_state_copy.cu
+  std::unique_ptr<ContactCopy> make_contact_copy() const override;  // contact_copy.cu
   std::int64_t step() const override { return step_; }
   double time() const override { return time_; }
   double dt() const override { return params_.dt; }
@@ -94,6 +97,7 @@ class CudaSolver final : public Solver {
 
  private:
   friend class CudaStateCopy<Real>;  ///< the live view's copy reads the buffers and stream
+  friend class CudaContactCopy<Real>;  ///< and the frames' contact copy the pairs
   ParticleArrays<Real> arrays() const { return d_.view(static_cast<int>(n_)); }
   BodyArrays body_arrays() const { return bodies_.view(static_cast<int>(n_bodies_)); }
   physics::BondArrays<Real> bond_arrays() const { return bonds_.view(); }

@@ -62,6 +62,32 @@ class DeviceBuffer {
   std::size_t size_ = 0;
 };
 
+/// GPU memory for a while of one stream's work (a frame's scratch): allocated and freed in
+/// the stream's order from CUDA's pool (cudaMallocAsync), so that neither waits for the
+/// device, and kept only while the work that uses it is queued, not for the whole run.
+template <class T>
+class StreamBuffer {
+ public:
+  StreamBuffer(std::size_t n, cudaStream_t stream) : size_(n), stream_(stream) {
+    if (n > 0)
+      TRIDEM_CUDA_CHECK(cudaMallocAsync(reinterpret_cast<void**>(&data_), n * sizeof(T), stream));
+  }
+  StreamBuffer(const StreamBuffer&) = delete;
+  StreamBuffer& operator=(const StreamBuffer&) = delete;
+  /// Freed after the work queued on the stream so far.
+  ~StreamBuffer() {
+    if (data_) cudaFreeAsync(data_, stream_);
+  }
+  T* data() const { return data_; }
+  std::size_t size() const { return size_; }
+  std::size_t bytes() const { return size_ * sizeof(T); }
+
+ private:
+  T* data_ = nullptr;
+  std::size_t size_ = 0;
+  cudaStream_t stream_;
+};
+
 /// Page-locked host memory: device-to-host copies into it run at full bus speed.
 template <class T>
 class PinnedBuffer {

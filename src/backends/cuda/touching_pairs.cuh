@@ -54,47 +54,56 @@ __global__ void fill_touching_kernel(int n, PairArrays<Real> pairs, const int* f
                     d.normal, d.depth,          d.sliding ? 1 : 0};
 }
 
-/// The touching pairs of `pairs` (n particles) on the host, in slot order, appended to
-/// `out.contacts` as contact records (cx, cy: the snapshot's centroids). Synchronises
-/// `stream` twice (the count, then the rows). The device scratch is allocated here: frames
-/// are rare against steps, and it would otherwise hold GPU memory for the whole run. The
-/// rows land in `host`, page-locked (a copy from pageable memory runs at a fraction of
-/// the bus's speed), which grows to the most contacts seen and is kept.
+/// Queues on `stream` the download of the touching pairs of `pairs` (n particles), in
+/// slot order, into `host`, and returns their number: the rows are there once the work
+/// queued so far on `stream` is done. Waits for `stream` once, for the count. `host` is
+/// page-locked (a copy from pageable memory runs at a fraction of the bus's speed); it
+/// grows to the most contacts seen and is kept. The device scratch is taken from the
+/// stream's pool and given back after the download: frames are rare against steps, and it
+/// would otherwise hold GPU memory for the whole run.
 template <class Real>
-void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pairs,
-                              cudaStream_t stream, const double* cx, const double* cy,
-                              PinnedBuffer<TouchingPair<Real>>& host) {
+std::size_t queue_touching_rows(int n, const PairArrays<Real>& pairs, cudaStream_t stream,
+                                PinnedBuffer<TouchingPair<Real>>& host) {
   constexpr int kBlock = 256;
   const int grid = (n + 1 + kBlock - 1) / kBlock;
-  DeviceBuffer<int> first(static_cast<std::size_t>(n) + 1);
+  const StreamBuffer<int> first(static_cast<std::size_t>(n) + 1, stream);
   count_touching_kernel<Real><<<grid, kBlock, 0, stream>>>(n, pairs, first.data());
   TRIDEM_CUDA_CHECK_LAUNCH("count_touching_kernel");
   std::size_t bytes = 0;
   TRIDEM_CUDA_CHECK(
       cub::DeviceScan::ExclusiveSum(nullptr, bytes, first.data(), first.data(), n + 1, stream));
-  DeviceBuffer<unsigned char> temp(bytes);
-  TRIDEM_CUDA_CHECK(
-      cub::DeviceScan::ExclusiveSum(temp.data(), bytes, first.data(), first.data(), n + 1, stream));
+  {
+    const StreamBuffer<unsigned char> temp(bytes, stream);
+    TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp.data(), bytes, first.data(), first.data(),
+                                                    n + 1, stream));
+  }
   int total = 0;
   TRIDEM_CUDA_CHECK(
       cudaMemcpyAsync(&total, first.data() + n, sizeof total, cudaMemcpyDeviceToHost, stream));
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   const auto count = static_cast<std::size_t>(total);
   if (host.size() < count) host.allocate(count + count / 8);
-  if (total > 0) {
-    DeviceBuffer<TouchingPair<Real>> rows(static_cast<std::size_t>(total));
+  if (count > 0) {
+    const StreamBuffer<TouchingPair<Real>> rows(count, stream);
     fill_touching_kernel<Real><<<grid, kBlock, 0, stream>>>(n, pairs, first.data(), rows.data());
     TRIDEM_CUDA_CHECK_LAUNCH("fill_touching_kernel");
     TRIDEM_CUDA_CHECK(
         cudaMemcpyAsync(host.data(), rows.data(), rows.bytes(), cudaMemcpyDeviceToHost, stream));
-    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   }
+  return count;
+}
+
+/// `count` downloaded touching pairs appended to `out.contacts` as contact records (cx, cy:
+/// the snapshot's centroids), on the OpenMP threads.
+template <class Real>
+void append_touching_rows(Snapshot& out, const TouchingPair<Real>* rows, std::size_t count,
+                          const double* cx, const double* cy) {
   const std::size_t before = out.contacts.size();
   out.contacts.resize(before + count);
-  const auto rows = static_cast<std::ptrdiff_t>(count);
-#pragma omp parallel for schedule(static) if (rows > 65536)
-  for (std::ptrdiff_t k = 0; k < rows; ++k) {
-    const TouchingPair<Real>& t = host.data()[k];
+  const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const TouchingPair<Real>& t = rows[k];
     physics::PairForce<Real> r;
     r.force_a = t.force;
     r.point = t.point;
@@ -105,6 +114,17 @@ void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pair
     out.contacts[before + static_cast<std::size_t>(k)] = contact_record(
         static_cast<std::size_t>(t.emitter), static_cast<std::size_t>(t.partner), r, cx, cy);
   }
+}
+
+/// The touching pairs of `pairs` appended to `out.contacts` now (queue_touching_rows, a
+/// wait for `stream`, append_touching_rows).
+template <class Real>
+void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pairs,
+                              cudaStream_t stream, const double* cx, const double* cy,
+                              PinnedBuffer<TouchingPair<Real>>& host) {
+  const std::size_t count = queue_touching_rows(n, pairs, stream, host);
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
+  append_touching_rows(out, host.data(), count, cx, cy);
 }
 
 }  // namespace tridem::cuda

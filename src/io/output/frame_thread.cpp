@@ -21,11 +21,12 @@ void FrameThread::wait_idle(std::unique_lock<std::mutex>& lock) {
   if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
-void FrameThread::submit(Snapshot& s) {
+void FrameThread::submit(Snapshot& s, ContactCopy* contacts) {
   {
     std::unique_lock lock(mutex_);
     wait_idle(lock);
     std::swap(pending_, s);
+    pending_contacts_ = contacts;
     busy_ = true;
   }
   changed_.notify_all();
@@ -44,6 +45,7 @@ void FrameThread::run() {
     lock.unlock();
     std::exception_ptr failure;
     try {
+      if (pending_contacts_) std::exchange(pending_contacts_, nullptr)->finish(pending_);
       write_(pending_);
     } catch (...) {
       failure = std::current_exception();

@@ -5,6 +5,7 @@
 // The snapshot changes hands by swap, so nothing is copied and, once two buffers have
 // their size, nothing is allocated. A failure on the thread (disk full, permission) is
 // kept and thrown on the caller's thread at the next hand-over or wait.
+#include "tridem/contact_copy.hpp"
 #include "tridem/snapshot.hpp"
 
 #include <condition_variable>
@@ -27,8 +28,9 @@ class FrameThread {
 
   /// Waits for the previous frame (throwing its failure), then takes `s`'s contents and
   /// writes them; `s` gets the buffer of an earlier frame, which the next
-  /// Solver::snapshot overwrites whole.
-  void submit(Snapshot& s);
+  /// Solver::snapshot overwrites whole. With `contacts` (started at `s`'s step), the
+  /// thread first appends the contacts it copies (ContactCopy::finish).
+  void submit(Snapshot& s, ContactCopy* contacts = nullptr);
   /// Waits until no frame is in flight; throws the failure of the last one, if any.
   void wait();
 
@@ -41,6 +43,7 @@ class FrameThread {
   std::mutex mutex_;
   std::condition_variable changed_;
   Snapshot pending_;
+  ContactCopy* pending_contacts_ = nullptr;
   bool busy_ = false;
   bool stopping_ = false;
   std::exception_ptr failure_;

@@ -52,10 +52,10 @@ void OutputSet::write_frame(const Snapshot& s) {
   impl_->write_frame(s);
 }
 
-void OutputSet::write_frame_beside(Snapshot& s) {
+void OutputSet::write_frame_beside(Snapshot& s, ContactCopy* contacts) {
   if (!impl_->frames)
     impl_->frames.emplace([impl = impl_.get()](const Snapshot& f) { impl->write_frame(f); });
-  impl_->frames->submit(s);
+  impl_->frames->submit(s, contacts);
 }
 
 void OutputSet::finish_frames() {
