@@ -6,6 +6,7 @@
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -59,6 +60,92 @@ TEST(FrameThread, WritesTheBytesOfInlineFrames) {
   for (const auto& [name, bytes] : expected) {
     ASSERT_TRUE(made.count(name)) << name;
     EXPECT_EQ(made.at(name), bytes) << name;
+  }
+}
+
+/// contacts_000000042.csv (or .vtp): a frame's contact files.
+std::string contacts_file(std::int64_t step, const char* extension) {
+  return fmt::format("contacts_{:09d}{}", step, extension);
+}
+
+/// The sample state tiled `copies` times along x: a frame large enough for the set's
+/// writers to run side by side (OutputSet's threshold, 2^16 particles and contacts).
+Snapshot tiled_frame(std::size_t copies) {
+  const Snapshot one = test::sample_snapshot();
+  Snapshot s = one;
+  s.resize(0);
+  s.contacts.clear();
+  for (std::size_t c = 0; c < copies; ++c) {
+    const double dx = 5.0 * static_cast<double>(c);
+    const auto base = static_cast<std::int64_t>(s.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      for (auto [to, from] :
+           {std::pair{&s.x, &one.x}, {&s.x1, &one.x1}, {&s.x2, &one.x2}, {&s.x3, &one.x3}})
+        to->push_back((*from)[i] + dx);
+      for (auto [to, from] : {std::pair{&s.y, &one.y},
+                              {&s.y1, &one.y1},
+                              {&s.y2, &one.y2},
+                              {&s.y3, &one.y3},
+                              {&s.theta, &one.theta},
+                              {&s.vx, &one.vx},
+                              {&s.vy, &one.vy},
+                              {&s.omega, &one.omega},
+                              {&s.fx, &one.fx},
+                              {&s.fy, &one.fy},
+                              {&s.torque, &one.torque},
+                              {&s.mass, &one.mass},
+                              {&s.inertia, &one.inertia}})
+        to->push_back((*from)[i]);
+      s.material.push_back(one.material[i]);
+      s.motion.push_back(one.motion[i]);
+    }
+    for (ContactRecord r : one.contacts) {
+      r.i += base;
+      r.j += base;
+      r.px += dx;
+      s.contacts.push_back(r);
+    }
+  }
+  return s;
+}
+
+// A large frame's files, its writers side by side, are those each writes alone.
+TEST(FrameThread, LargeFrameIsWhatEachWriterWritesAlone) {
+  test::TempDir tmp;
+  const Snapshot big = tiled_frame(22000);
+  ASSERT_GE(big.size(), std::size_t{1} << 16);
+  {
+    OutputSet out(OutputSettings{}, tmp.path() / "set");
+    Snapshot s = big;
+    out.write_frame_beside(s);
+    out.finish_frames();
+  }
+  const fs::path alone = tmp.path() / "alone";
+  fs::create_directories(alone);
+  write_vtu_frame(alone / "frame.vtu", big);
+  write_contacts_vtp(alone / "contacts.vtp", big);
+  write_contacts_csv(alone / "contacts.csv", big);
+  const fs::path set = tmp.path() / "set";
+  EXPECT_TRUE(test::read_file(set / "frames" / frame_file_name(big.step)) ==
+              test::read_file(alone / "frame.vtu"));
+  EXPECT_TRUE(test::read_file(set / "contacts" / contacts_file(big.step, ".csv")) ==
+              test::read_file(alone / "contacts.csv"));
+  EXPECT_TRUE(test::read_file(set / "contacts" / contacts_file(big.step, ".vtp")) ==
+              test::read_file(alone / "contacts.vtp"));
+}
+
+// A failure of a writer that ran beside the first is thrown, once all have returned.
+TEST(FrameThread, LargeFrameFailureOfAnyWriterIsThrown) {
+  test::TempDir tmp;
+  OutputSet out(OutputSettings{}, tmp.path());
+  const Snapshot big = tiled_frame(22000);
+  const fs::path blocked = tmp.path() / "contacts" / contacts_file(big.step, ".vtp");
+  fs::create_directories(blocked);
+  try {
+    out.write_frame(big);
+    ADD_FAILURE() << "the failure of the .vtp writer was lost";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find(blocked.string()), std::string::npos) << e.what();
   }
 }
 
