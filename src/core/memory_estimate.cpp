@@ -9,6 +9,7 @@
 #include "tridem/particle_fields.hpp"
 #include "tridem/snapshot.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -29,11 +30,15 @@ std::size_t gpu_bytes(std::size_t n, std::size_t pairs) {
   const std::size_t per_particle =
       bytes_per_particle<Real>([](auto f) { for_each_gpu_particle_field(f); }) +
       kGpuListBytesPerParticle;
-  // Per pair: partner and slip twice (new and old list), emitter, slot id, result (load
-  // and detail), reverse sort keys and slots, and CUB's sort scratch (keys and values).
-  const std::size_t per_pair = 2 * (4 + sizeof(physics::PairSlip<Real>)) + 4 + 4 +
-                               sizeof(physics::PairLoad<Real>) + sizeof(physics::PairDetail<Real>) +
-                               4 + 4 + 8;
+  // Per pair: partner, slip, emitter, load and the reverse index's slot; and the memory
+  // the phases of a step share (backends/cuda/slot_phases.cuh): the result's details
+  // between builds, or while a list is built the old list, the slot ids, the reverse sort's
+  // keys and CUB's scratch (keys and values), whichever is larger.
+  const std::size_t build_phase =
+      std::max<std::size_t>(4 + 4 + sizeof(physics::PairSlip<Real>), 4 + 4 + 8);
+  const std::size_t per_pair = 4 + sizeof(physics::PairSlip<Real>) + 4 +
+                               sizeof(physics::PairLoad<Real>) + 4 +
+                               std::max(sizeof(physics::PairDetail<Real>), build_phase);
   return n * per_particle + pairs * per_pair + (16u << 20);
 }
 

@@ -68,9 +68,8 @@ PairListBuilder<Real>::PairListBuilder(const std::vector<std::uint8_t>& small, M
     TRIDEM_CUDA_CHECK(cudaMemsetAsync(b->data(), 0, b->bytes(), stream_));
   }
   total_.allocate(1);
-  old_partner_.allocate(std::max<std::size_t>(pair_capacity, 1));
-  old_slip_.allocate(std::max<std::size_t>(pair_capacity, 1));
   reserve_pairs(pair_capacity);
+  clear_details();
 }
 
 template <class Real>
@@ -79,27 +78,24 @@ void PairListBuilder<Real>::reserve_pairs(std::size_t pairs) {
   if (pairs > static_cast<std::size_t>(INT_MAX))
     throw RunError("the pair list would need more than 2^31 pairs: too many particles for one GPU");
   refuse_unless_pairs_fit(pairs);
-  // Each buffer is grown on its own: the old list must survive while the new one is built.
+  // The old list is in phases_ while a build grows the slots (size_rows): it moves with
+  // them; the other arrays are written whole before they are read.
+  const std::size_t keep = static_cast<std::size_t>(old_count_);
+  old_count_ = 0;
   auto grow = [pairs](auto& buffer) {
     if (buffer.size() < pairs) buffer.allocate(pairs);
   };
   grow(partner_);
   grow(slip_);
   grow(emitter_);
-  grow(slot_id_);
   grow(load_);
-  if (detail_.size() < pairs) {
-    detail_.allocate(pairs);
-    clear_details();
-  }
-  grow(sorted_partner_);
   grow(reverse_slot_);
-  size_temp_storage();
+  phases_.reserve(std::max(pairs, phases_.slots()), size_temp_storage(pairs), keep, stream_);
 }
 
 template <class Real>
 void PairListBuilder<Real>::refuse_unless_pairs_fit(std::size_t pairs) const {
-  const std::size_t have = std::min(partner_.size(), slip_.size());
+  const std::size_t have = partner_.size();
   if (pairs <= have) return;
   const Precision precision = sizeof(Real) == sizeof(float) ? Precision::Float : Precision::Double;
   const std::size_t need = (pairs - have) * gpu_pair_bytes(precision);
@@ -118,20 +114,22 @@ void PairListBuilder<Real>::refuse_unless_pairs_fit(std::size_t pairs) const {
 }
 
 template <class Real>
-void PairListBuilder<Real>::size_temp_storage() {
+std::size_t PairListBuilder<Real>::size_temp_storage(std::size_t pairs) {
   std::size_t need = 0, bytes = 0;
   TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
       nullptr, bytes, cell_of_.data(), sorted_cell_.data(), index_.data(), sorted_.data(), n_,
       0, cell_bits_, stream_));
   need = std::max(need, bytes);
-  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
-      nullptr, bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
-      reverse_slot_.data(), static_cast<int>(partner_.size()), 0, particle_bits_, stream_));
-  need = std::max(need, bytes);
   TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, bytes, row_count_.data(),
                                                   offset_.data(), n_ + 1, stream_));
   need = std::max(need, bytes);
   if (temp_.size() < need) temp_.allocate(need);
+  // A size query (the arrays are not read): the reverse index's sort, whose scratch is
+  // in phases_.
+  TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
+      nullptr, bytes, partner_.data(), partner_.data(), reverse_slot_.data(), reverse_slot_.data(),
+      static_cast<int>(pairs), 0, particle_bits_, stream_));
+  return bytes;
 }
 
 template <class Real>
@@ -272,8 +270,18 @@ void PairListBuilder<Real>::fill_rows(const Finder& find) {
 template <class Real>
 void PairListBuilder<Real>::size_rows() {
   offset_.swap(old_offset_);
-  partner_.swap(old_partner_);
-  slip_.swap(old_slip_);
+  // The old list into phases_ (its details are not needed while a list is built), so that
+  // the new one is written where the steps read it.
+  old_count_ = count_;
+  if (count_ > 0) {
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(phases_.old_partner(), partner_.data(),
+                                      static_cast<std::size_t>(count_) * sizeof(int),
+                                      cudaMemcpyDeviceToDevice, stream_));
+    TRIDEM_CUDA_CHECK(
+        cudaMemcpyAsync(phases_.old_slip(), slip_.data(),
+                        static_cast<std::size_t>(count_) * sizeof(physics::PairSlip<Real>),
+                        cudaMemcpyDeviceToDevice, stream_));
+  }
   std::size_t bytes = temp_.size();
   TRIDEM_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp_.data(), bytes, row_count_.data(),
                                                   offset_.data(), n_ + 1, stream_));
@@ -283,33 +291,38 @@ void PairListBuilder<Real>::size_rows() {
   count_ = *total_.data();
   if (count_ < 0) throw RunError("the pair list overflowed 2^31 pairs: too many particles for one GPU");
   // Denser than reserved: grow with headroom (the only allocation a running loop makes).
-  if (static_cast<std::size_t>(count_) > partner_.size() ||
-      static_cast<std::size_t>(count_) > slip_.size())
+  if (static_cast<std::size_t>(count_) > partner_.size())
     reserve_pairs(pair_slots_for(static_cast<std::size_t>(count_)));
+  old_count_ = 0;
 }
 
 template <class Real>
 RowHistory<Real> PairListBuilder<Real>::history() const {
-  return {offset_.data(),     partner_.data(),     emitter_.data(),    slot_id_.data(),
-          slip_.data(),       old_offset_.data(),  old_partner_.data(), old_slip_.data()};
+  return {offset_.data(), partner_.data(),    emitter_.data(),       phases_.slot_id(),
+          slip_.data(),   old_offset_.data(), phases_.old_partner(), phases_.old_slip()};
 }
 
 template <class Real>
 void PairListBuilder<Real>::index_rows() {
-  std::size_t bytes = temp_.size();
+  std::size_t bytes = phases_.sort_temp_bytes();
   TRIDEM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(
-      temp_.data(), bytes, partner_.data(), sorted_partner_.data(), slot_id_.data(),
+      phases_.sort_temp(), bytes, partner_.data(), phases_.sorted_partner(), phases_.slot_id(),
       reverse_slot_.data(), count_, 0, particle_bits_, stream_));
-  range_start_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(sorted_partner_.data(), count_,
-                                                             n_, reverse_offset_.data());
+  range_start_kernel<<<blocks(n_ + 1), kBlock, 0, stream_>>>(phases_.sorted_partner(), count_, n_,
+                                                             reverse_offset_.data());
   TRIDEM_CUDA_CHECK_LAUNCH("range_start_kernel (reverse index)");
+  // A pair too deep writes its detail on any step, and a blow-up's report looks for it in
+  // its emitter's row: the other slots must not hold the build's scratch.
+  phases_.clear_details(static_cast<std::size_t>(count_), stream_);
 }
 
 template <class Real>
 void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vector<int>& partner,
                                  const std::vector<physics::PairSlip<Real>>& slip) {
-  if (partner.size() > partner_.size() || slip.size() > slip_.size())
+  if (partner.size() > partner_.size() || slip.size() > partner_.size()) {
     reserve_pairs(pair_slots_for(partner.size()));
+    clear_details();
+  }
   auto copy = [this](auto& buffer, const auto& host) {
     if (!host.empty())
       TRIDEM_CUDA_CHECK(cudaMemcpyAsync(buffer.data(), host.data(),
@@ -325,8 +338,8 @@ void PairListBuilder<Real>::load(const std::vector<int>& offset, const std::vect
 
 template <class Real>
 PairArrays<Real> PairListBuilder<Real>::arrays() const {
-  return {count_,       offset_.data(), partner_.data(),        emitter_.data(),     slip_.data(),
-          load_.data(), detail_.data(), reverse_offset_.data(), reverse_slot_.data()};
+  return {count_,       offset_.data(),   partner_.data(),        emitter_.data(),     slip_.data(),
+          load_.data(), phases_.detail(), reverse_offset_.data(), reverse_slot_.data()};
 }
 
 template <class Real>
@@ -351,7 +364,10 @@ void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>&
   std::vector<physics::PairLoad<Real>> load(result ? count : 0);
   std::vector<physics::PairDetail<Real>> detail(result ? count : 0);
   copy(load, load_);
-  copy(detail, detail_);
+  if (!detail.empty())
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(detail.data(), phases_.detail(),
+                                      detail.size() * sizeof(detail[0]), cudaMemcpyDeviceToHost,
+                                      stream_));
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
   if (result) {
     result->resize(count);
@@ -361,9 +377,7 @@ void PairListBuilder<Real>::download(std::vector<int>& offset, std::vector<int>&
 
 template <class Real>
 void PairListBuilder<Real>::clear_details() const {
-  if (detail_.size() > 0)
-    TRIDEM_CUDA_CHECK(
-        cudaMemsetAsync(detail_.data(), 0, detail_.size() * sizeof(detail_.data()[0]), stream_));
+  phases_.clear_details(phases_.slots(), stream_);
 }
 
 template class PairListBuilder<float>;

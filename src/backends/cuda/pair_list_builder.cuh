@@ -12,6 +12,7 @@
 #include "backends/cuda/grid_types.cuh"
 #include "backends/cuda/row_history.cuh"
 #include "backends/cuda/single_domain_kernels.cuh"
+#include "backends/cuda/slot_phases.cuh"
 #include "broadphase/periodic_grid.hpp"
 #include "tridem/scene.hpp"
 
@@ -81,7 +82,9 @@ class PairListBuilder {
   /// Throws RunError, naming the pairs and the memory, when growing the slots to `pairs`
   /// needs more GPU memory than is free.
   void refuse_unless_pairs_fit(std::size_t pairs) const;
-  void size_temp_storage();
+  /// CUB's scratch: temp_ for the cells' sort and the scans; returns the bytes the reverse
+  /// index's sort of `pairs` slots needs (in phases_).
+  std::size_t size_temp_storage(std::size_t pairs);
   CandidateSearch<Real> search(const ParticleArrays<Real>& p) const;
   SingleDomainSearch<Real> single_domain_search(const ParticleArrays<Real>& p) const;
   /// Single-domain: the paper's count and fill kernels, plain or periodic.
@@ -94,11 +97,12 @@ class PairListBuilder {
   /// Grid or all-pairs: the rows counted, sized and filled by a finder.
   template <class Finder>
   void fill_rows(const Finder& find);
-  /// From row_count_: the offsets of the new rows (the old ones kept for the history), the
-  /// number of pairs (one synchronisation) and room for them.
+  /// From row_count_: the offsets of the new rows (the old list kept in phases_ for the
+  /// history), the number of pairs (one synchronisation) and room for them.
   void size_rows();
   RowHistory<Real> history() const;
-  /// The reverse index of the new rows.
+  /// The reverse index of the new rows; then the details' room is cleared of the build's
+  /// scratch.
   void index_rows();
 
   int n_;
@@ -109,6 +113,7 @@ class PairListBuilder {
   unsigned int beyond_;  ///< key of particles outside the grid; > every cell index
   int cell_bits_, particle_bits_;
   int count_ = 0;
+  int old_count_ = 0;  ///< the old list's pairs, while size_rows holds them in phases_
   std::int64_t builds_ = 0;
   int n_large_ = 0;
   bool periodic_ = false;
@@ -123,16 +128,17 @@ class PairListBuilder {
   DeviceBuffer<int> index_, sorted_;
   DeviceBuffer<int> cell_start_, cell_end_;
   DeviceBuffer<int> row_count_;
-  // The list and the one it replaces (for the history), swapped at each build.
+  // The rows' offsets and the old ones (for the history), swapped at each build.
   DeviceBuffer<int> offset_, old_offset_;
-  DeviceBuffer<int> partner_, old_partner_;
-  DeviceBuffer<physics::PairSlip<Real>> slip_, old_slip_;
-  DeviceBuffer<int> emitter_, slot_id_;
+  DeviceBuffer<int> partner_;
+  DeviceBuffer<physics::PairSlip<Real>> slip_;
+  DeviceBuffer<int> emitter_;
   DeviceBuffer<physics::PairLoad<Real>> load_;
-  DeviceBuffer<physics::PairDetail<Real>> detail_;  ///< zeroed when allocated
   // Reverse index: slots sorted by partner.
-  DeviceBuffer<int> sorted_partner_, reverse_slot_, reverse_offset_;
-  DeviceBuffer<std::uint8_t> temp_;  ///< CUB scratch
+  DeviceBuffer<int> reverse_slot_, reverse_offset_;
+  /// The old list, slot ids and reverse-index sort of a build; the details between builds.
+  SlotPhases<Real> phases_;
+  DeviceBuffer<std::uint8_t> temp_;  ///< CUB scratch of the per-particle sort and scans
   PinnedBuffer<int> total_;
 };
 
