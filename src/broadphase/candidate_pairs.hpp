@@ -6,6 +6,7 @@
 // wider than L that overlap then have corners in neighbouring cells, so a 3×3 scan finds
 // them. Boundary triangles larger than L (walls, hopper sides) are kept in a short list
 // that every small particle checks directly. Who emits a pair is broadphase/emitter_rule.hpp.
+#include "broadphase/default_init_allocator.hpp"
 #include "broadphase/pair_list.hpp"
 #include "broadphase/periodic_grid.hpp"
 #include "physics/geometry.hpp"
@@ -102,7 +103,9 @@ class CandidatePairs {
   Real origin_x_ = 0, origin_y_ = 0, grid_cell_ = 0;
   std::int64_t nx_ = 0, ny_ = 0;
   PeriodicGrid periodic_grid_;  ///< the periodic grid of the current step
-  std::vector<std::int64_t> cell_of_, cell_start_, cell_count_;
+  std::vector<std::int64_t> cell_of_;
+  /// Sized for 4 cells a particle; bin() writes the cells a scene uses before reading them.
+  UnfilledVector<std::int64_t> cell_start_, cell_count_;
   std::vector<std::int32_t> sorted_;
   std::vector<std::int64_t> row_count_;
   // The small particles' corners' extent and widest box, summed by the team's threads
