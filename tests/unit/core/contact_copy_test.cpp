@@ -133,15 +133,6 @@ class CopyChoice final : public Solver {
   int& started_;
 };
 
-/// Every file under `dir` (relative name -> contents).
-std::map<std::string, std::string> files_under(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() != ".ckpt")
-      files[fs::relative(e.path(), dir).string()] = test::read_file(e.path());
-  return files;
-}
-
 class ContactCopyRunTest : public BackendTest {
  protected:
   /// The files of `scene` run with or without copies; `started`: the copies started.
@@ -158,7 +149,7 @@ class ContactCopyRunTest : public BackendTest {
     };
     run_scene(scene, o);
     std::fclose(o.log);
-    return files_under(dir);
+    return test::files_under(dir, ".ckpt");
   }
 };
 

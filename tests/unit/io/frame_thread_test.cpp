@@ -30,14 +30,6 @@ Snapshot frame_at(int k) {
   return s;
 }
 
-/// Every file under `dir` (path relative to it) with its contents.
-std::map<std::string, std::string> files_under(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) out[fs::relative(e.path(), dir).string()] = test::read_file(e.path());
-  return out;
-}
-
 TEST(FrameThread, WritesTheBytesOfInlineFrames) {
   test::TempDir tmp;
   OutputSettings settings;
@@ -51,8 +43,8 @@ TEST(FrameThread, WritesTheBytesOfInlineFrames) {
     }
     beside_set.finish_frames();
   }
-  const auto made = files_under(tmp.path() / "beside");
-  const auto expected = files_under(tmp.path() / "inline");
+  const auto made = test::files_under(tmp.path() / "beside");
+  const auto expected = test::files_under(tmp.path() / "inline");
   // 4 frames, 4 contact networks as .vtp and .csv, the two collections, energy.csv and
   // walls.csv (their headers).
   EXPECT_EQ(expected.size(), 4u * 3u + 2u + 2u);

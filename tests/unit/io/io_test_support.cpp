@@ -50,6 +50,15 @@ TempDir::~TempDir() {
   std::filesystem::remove_all(path_, ec);
 }
 
+std::map<std::string, std::string> files_under(const std::filesystem::path& dir,
+                                               const std::string& skip_extension) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.is_regular_file() && (skip_extension.empty() || e.path().extension() != skip_extension))
+      files[std::filesystem::relative(e.path(), dir).string()] = read_file(e.path());
+  return files;
+}
+
 std::string read_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + file.string());

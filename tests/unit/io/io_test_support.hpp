@@ -3,6 +3,7 @@
 #include "tridem/snapshot.hpp"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ class TempDir {
 
 std::vector<std::string> read_lines(const std::filesystem::path&);
 std::string read_file(const std::filesystem::path&);
+/// Every regular file under `dir`, by its path relative to `dir`, with its contents; files
+/// ending in `skip_extension` (e.g. ".ckpt") left out.
+std::map<std::string, std::string> files_under(const std::filesystem::path& dir,
+                                               const std::string& skip_extension = "");
 
 /// Splits one CSV row of numbers.
 std::vector<double> numbers(const std::string& row);
