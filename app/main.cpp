@@ -1,7 +1,7 @@
 // tridem: the command line. Every failure, a usage error included, reaches the user as one
 // "error: ..." message and exit code 1 (README.md).
 #include "commands.hpp"
-#include "omp_wait_policy.hpp"
+#include "startup_environment.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
 
@@ -66,7 +66,7 @@ CLI::Validator port_number() {
 
 int main(int argc, char** argv) {
   using namespace tridem::app;
-  wait_passively_unless_told(argv);
+  restart_with_startup_environment(argv);
 #ifdef TRIDEM_WITH_MPI
   // Under mpirun every rank runs this; only rank 0 prints errors (the ranks agree on them).
   const tridem::mpi::World world(argc, argv);

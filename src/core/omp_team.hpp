@@ -9,7 +9,7 @@
 // A step still has about 18 barriers; how a thread waits at them matters more than their
 // number: with the runtime's default spinning the OpenMP step collapses on busy cores,
 // region or not, and with passive waiting it does not (docs/performance.md, "OpenMP on
-// shared cores"; the tridem program waits passively: app/omp_wait_policy.hpp).
+// shared cores"; the tridem program waits passively: app/startup_environment.hpp).
 #include <exception>
 #include <omp.h>
 

@@ -221,12 +221,26 @@ wait_for_start() {
   done
   kill -KILL "$1"; fail "the run printed nothing in 60 s :: $(cat err.txt)"
 }
+# The program restarts itself once with huge pages asked of the C library (and passive
+# OpenMP waits), unless the user's GLIBC_TUNABLES names that setting (app/startup_environment).
+tunables_INT=""
+tunables_TERM="glibc.malloc.hugetlb=0"
+expected_tunables_INT="glibc.malloc.hugetlb=1"
+expected_tunables_TERM="glibc.malloc.hugetlb=0"
 for sig in INT TERM; do
   overrides=overrides_$sig
+  tunables=tunables_$sig
+  expected_tunables=expected_tunables_$sig
   # shellcheck disable=SC2086
-  "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" ${!overrides} >out.txt 2>err.txt &
+  GLIBC_TUNABLES="${!tunables}" "$tridem" run long.toml --quiet --backend cpu --out "long_$sig" ${!overrides} >out.txt 2>err.txt &
   pid=$!
   wait_for_start "$pid"
+  if [ -r "/proc/$pid/environ" ]; then
+    environment=$(tr '\0' '\n' <"/proc/$pid/environ")
+    grep -qx "GLIBC_TUNABLES=${!expected_tunables}" <<<"$environment" ||
+      fail "SIG$sig run: GLIBC_TUNABLES is not ${!expected_tunables} :: $(grep GLIBC_TUNABLES <<<"$environment")"
+    grep -qx "OMP_WAIT_POLICY=passive" <<<"$environment" || fail "SIG$sig run: OpenMP waits are not passive"
+  fi
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?
