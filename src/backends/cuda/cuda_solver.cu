@@ -103,7 +103,9 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
   params_.programs = {programs_.data(), program_knots_.data(),
                       servo_targets_.size() > 0 ? servo_targets_.data() : nullptr};
   params_.time_new = physics::time_after_step(0, params_.dt);
-  d_.upload_initial(model);
+  // The snapshots' staging, page-locked, carries the initial upload first.
+  staging_.allocate(staging_bytes<Real>(n_));
+  d_.upload_initial(model, staging_, stream_);
   if (!model.bodies.empty()) {
     n_bodies_ = model.bodies.size();
     bodies_.upload_initial(model.bodies, n_);
@@ -133,7 +135,6 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(1);
   host_status_.allocate(1);
-  staging_.allocate(staging_bytes<Real>(n_));
   update_geometry(n_bodies_ > 0);
 }
 
