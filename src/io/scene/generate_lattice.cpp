@@ -8,6 +8,7 @@
 
 #include "io/scene/generator_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tridem {
@@ -74,18 +75,27 @@ std::vector<TriangleSpec> generate_lattice(const LatticeSpec& spec) {
   const auto slots = static_cast<long long>(g.k_max) + 1;
   const auto rows = static_cast<long long>(g.rows_up);  // rows_down <= rows_up
 
-  std::vector<TriangleSpec> out;
-  out.reserve(n);
-  TriangleSpec t;
-  t.material = spec.material;
-  t.velocity = spec.velocity;
+  // Each row's first id, so that the rows are filled on the threads in the order one
+  // thread would fill them (a 10^7 lattice, issue 12): a row holds its up triangles, and
+  // its down ones where they fit.
+  std::vector<std::size_t> row_first(static_cast<std::size_t>(std::max(rows, 0LL)) + 1, 0);
+  for (long long j = 0; j < rows; ++j) {
+    const long long ups = j % 2 == 0 ? (slots + 1) / 2 : slots / 2;
+    const bool downs_fit = static_cast<double>(j) < g.rows_down;
+    const auto row = static_cast<std::size_t>(j);
+    row_first[row + 1] = row_first[row] + static_cast<std::size_t>(downs_fit ? slots : ups);
+  }
+  std::vector<TriangleSpec> out(n);
   const Vec2d o = spec.region_min;
+#pragma omp parallel for schedule(static) if (n > 65536)
   for (long long j = 0; j < rows; ++j) {
     const double row_base = o.y + static_cast<double>(j) * g.row_pitch;
     const bool downs_fit = static_cast<double>(j) < g.rows_down;
+    std::size_t id = row_first[static_cast<std::size_t>(j)];
     for (long long k = 0; k < slots; ++k) {
       const double left = o.x + static_cast<double>(k) * g.half_pitch;
       const bool up = (j + k) % 2 == 0;
+      TriangleSpec& t = out[id];
       if (up) {
         t.vertices = {Vec2d{left, row_base}, Vec2d{left + g.s, row_base},
                       Vec2d{left + 0.5 * g.s, row_base + g.h}};
@@ -95,7 +105,9 @@ std::vector<TriangleSpec> generate_lattice(const LatticeSpec& spec) {
         t.vertices = {Vec2d{left + 0.5 * g.s, top - g.h}, Vec2d{left + g.s, top},
                       Vec2d{left, top}};
       }
-      out.push_back(t);
+      t.material = spec.material;
+      t.velocity = spec.velocity;
+      ++id;
     }
   }
   return out;

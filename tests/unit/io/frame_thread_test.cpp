@@ -126,6 +126,23 @@ TEST(FrameThread, LargeFrameIsWhatEachWriterWritesAlone) {
               test::read_file(alone / "contacts.vtp"));
 }
 
+// A large run's final files, written side by side, are those each writes alone.
+TEST(FrameThread, LargeFinalFilesAreWhatEachWriterWritesAlone) {
+  test::TempDir tmp;
+  const Snapshot big = tiled_frame(22000);
+  ASSERT_GE(big.size(), std::size_t{1} << 16);
+  OutputSet(OutputSettings{}, tmp.path() / "set").write_final(big);
+  const fs::path alone = tmp.path() / "alone";
+  fs::create_directories(alone);
+  write_final_csv(alone / "final.csv", big);
+  write_bodies_csv(alone / "bodies.csv", big);
+  for (const char* name : {"final.csv", "bodies.csv"}) {
+    const std::string made = test::read_file(tmp.path() / "set" / name);
+    EXPECT_GT(made.size(), big.size()) << name;
+    EXPECT_TRUE(made == test::read_file(alone / name)) << name;
+  }
+}
+
 // A failure of a writer that ran beside the first is thrown, once all have returned.
 TEST(FrameThread, LargeFrameFailureOfAnyWriterIsThrown) {
   test::TempDir tmp;

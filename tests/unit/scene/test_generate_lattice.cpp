@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -81,9 +82,37 @@ TEST(SceneLattice, CountMatchesGenerationOverManyShapes) {
         if (n == 0) {
           EXPECT_THROW(generate_lattice(spec), SceneError);
         } else {
-          EXPECT_EQ(generate_lattice(spec).size(), n) << w << " x " << h << " gap " << gap;
+          const auto ts = generate_lattice(spec);
+          EXPECT_EQ(ts.size(), n) << w << " x " << h << " gap " << gap;
+          // Every slot made, none left at its default (zero) vertices.
+          for (const TriangleSpec& t : ts)
+            EXPECT_GT(test::twice_area(t.vertices), 0) << w << " x " << h << " gap " << gap;
         }
       }
+}
+
+// Past 65 536 triangles the rows are filled on the threads: the ids still go row by row
+// from the bottom, left to right within a row, each slot once.
+TEST(SceneLattice, ALargeLatticeIsMadeRowByRowLeftToRight) {
+  const double gap = 0.1, a = 1 + gap * std::sqrt(3.0), row_pitch = 0.5 * std::sqrt(3.0) * a;
+  const LatticeSpec spec = lattice({-5, 3}, {-5 + 400, 3 + 300}, 1.0, gap);
+  const auto ts = generate_lattice(spec);
+  ASSERT_EQ(ts.size(), count_lattice(spec));
+  ASSERT_GT(ts.size(), 100000u);
+  long long last_row = -1;
+  double last_left = 0;
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const auto& v = ts[i].vertices;
+    ASSERT_GT(test::twice_area(v), 0) << i;
+    const double bottom = std::min({v[0].y, v[1].y, v[2].y});
+    const double left = std::min({v[0].x, v[1].x, v[2].x});
+    const auto row = static_cast<long long>(std::floor((bottom - 3) / row_pitch + 1e-9));
+    ASSERT_TRUE(row > last_row || (row == last_row && left > last_left + 0.25 * a))
+        << "triangle " << i << " (row " << row << ", left " << left << ") after row " << last_row
+        << ", left " << last_left;
+    last_row = row;
+    last_left = left;
+  }
 }
 
 TEST(SceneLattice, CopiesMaterialAndVelocity) {

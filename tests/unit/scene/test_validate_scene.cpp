@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tridem {
@@ -72,6 +73,22 @@ TEST(SceneValidate, RefusesBadTriangles) {
   expect_refused([](Scene& s) { s.triangles.clear(); }, {"no triangles"});
 }
 
+/// What validate_scene and build_particle_model say of `s` (empty: accepted).
+std::pair<std::string, std::string> refusals(const Scene& s) {
+  std::string validated, modelled;
+  try {
+    validate_scene(s);
+  } catch (const SceneError& e) {
+    validated = e.what();
+  }
+  try {
+    build_particle_model(s);
+  } catch (const SceneError& e) {
+    modelled = e.what();
+  }
+  return {validated, modelled};
+}
+
 // The solver's particle model refuses a triangle by the same rule and message as
 // validate_scene: a scene built in code and never validated cannot reach a solver with a
 // triangle the reader would refuse (the two once had their own checks, and the model
@@ -94,20 +111,27 @@ TEST(SceneValidate, ParticleModelRefusesByTheSameRules) {
   for (std::size_t k = 0; k < spoils.size(); ++k) {
     Scene s = valid_scene();
     spoils[k](s);
-    std::string validated, modelled;
-    try {
-      validate_scene(s);
-    } catch (const SceneError& e) {
-      validated = e.what();
-    }
-    try {
-      build_particle_model(s);
-    } catch (const SceneError& e) {
-      modelled = e.what();
-    }
+    const auto [validated, modelled] = refusals(s);
     EXPECT_FALSE(validated.empty()) << "spoil " << k;
     EXPECT_EQ(modelled, validated) << "spoil " << k;
   }
+}
+
+// Past 65 536 triangles both checks run on the threads: the refusal still names the
+// lowest id at fault, whichever thread finds which.
+TEST(SceneValidate, ALargeSceneIsRefusedForItsLowestBadTriangle) {
+  Scene s = valid_scene();
+  const TriangleSpec good = s.triangles[0];
+  s.triangles.assign(200000, good);
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    for (Vec2d& v : s.triangles[i].vertices) v.x += 2.0 * static_cast<double>(i);
+  for (const std::size_t bad : {std::size_t{190000}, std::size_t{123457}, std::size_t{150001}})
+    s.triangles[bad].vertices[2] = s.triangles[bad].vertices[1];  // degenerate
+  s.triangles[160000].material = 3;
+  const auto [validated, modelled] = refusals(s);
+  EXPECT_NE(validated.find("particle id 123457: triangle is degenerate"), std::string::npos)
+      << validated;
+  EXPECT_EQ(modelled, validated);
 }
 
 TEST(SceneValidate, RefusesBadMaterials) {
