@@ -536,21 +536,42 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
 // at logging steps only, and the result does not depend on the thread schedule.
 template <class Real>
 EnergyBudget CudaSolver<Real>::energy() const {
-  std::vector<double> sums(n_);
-  double totals[kEnergyAccumulators + 1] = {};
+  // The accumulators, then (with results) each row's elastic energy.
+  const int arrays = kEnergyAccumulators + (results_ ? 1 : 0);
+  const auto source = [&](int k) -> const DeviceBuffer<double>& {
+    return k < kEnergyAccumulators ? d_.energy[k] : d_.row_elastic;
+  };
   if (results_) {
     row_elastic_kernel<Real><<<blocks(n_), kBlock, 0, stream_>>>(static_cast<int>(n_),
                                                                   pairs_->arrays(),
                                                                   d_.row_elastic.data());
     TRIDEM_CUDA_CHECK_LAUNCH("row_elastic_kernel");
-    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    d_.row_elastic.download(sums);
-    for (double v : sums) totals[kEnergyAccumulators] += v;
   }
-  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
-  for (int k = 0; k < kEnergyAccumulators; ++k) {
-    d_.energy[k].download(sums);
-    for (double v : sums) totals[k] += v;
+  double totals[kEnergyAccumulators + 1] = {};
+  const std::size_t bytes = n_ * sizeof(double);
+  if (staging_.size() < static_cast<std::size_t>(arrays) * bytes) {
+    std::vector<double> sums(n_);
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    for (int k = 0; k < arrays; ++k) {
+      source(k).download(sums);
+      for (double v : sums) totals[k] += v;
+    }
+  } else {
+    // All of them into the snapshots' page-locked staging at once, one synchronisation,
+    // each summed on a thread of its own: the same sums in the same order, without a
+    // pageable download per array (some 0.2 s a log row at 10^7, issue 12).
+    for (int k = 0; k < arrays; ++k)
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(staging_.data() + static_cast<std::size_t>(k) * bytes,
+                                        source(k).data(), bytes, cudaMemcpyDeviceToHost, stream_));
+    TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+#pragma omp parallel for schedule(static, 1) if (n_ > 65536)
+    for (int k = 0; k < arrays; ++k) {
+      const auto* from =
+          reinterpret_cast<const double*>(staging_.data() + static_cast<std::size_t>(k) * bytes);
+      double total = 0;
+      for (std::size_t i = 0; i < n_; ++i) total += from[i];
+      totals[k] = total;
+    }
   }
   EnergyBudget b;
   b.elastic = totals[kEnergyAccumulators];
