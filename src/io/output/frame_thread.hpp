@@ -34,6 +34,10 @@ class FrameThread {
   /// Waits until no frame is in flight; throws the failure of the last one, if any.
   void wait();
 
+  /// How much nicer (Linux's scheduling priority) the thread and its writers run than
+  /// the thread that made it.
+  static constexpr int kNicer = 5;
+
  private:
   void run();
   /// Under the lock: waits until idle, then throws a kept failure (once).

@@ -2,6 +2,7 @@
 // frame_thread): the same bytes as frames written inline, every frame written, the
 // caller's snapshot swapped not copied, and a failure on the output thread thrown on the
 // caller's.
+#include "io/output/frame_thread.hpp"
 #include "io_test_support.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
@@ -12,6 +13,10 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <thread>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace tridem {
 namespace {
@@ -156,6 +161,25 @@ TEST(FrameThread, LargeFrameFailureOfAnyWriterIsThrown) {
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find(blocked.string()), std::string::npos) << e.what();
   }
+}
+
+// The writers run below the stepping thread's priority, and so do the threads they start.
+TEST(FrameThread, WritesAtALowerPriorityThanTheCaller) {
+  const int caller = getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
+  ASSERT_LT(caller, 19) << "this test's thread is already as nice as can be";
+  int writer = caller, helper = caller;
+  {
+    io::FrameThread thread([&](const Snapshot&) {
+      writer = getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
+      std::thread([&] { helper = getpriority(PRIO_PROCESS, static_cast<id_t>(gettid())); }).join();
+    });
+    Snapshot s = frame_at(1);
+    thread.submit(s);
+    thread.wait();
+  }
+  EXPECT_EQ(writer, std::min(caller + io::FrameThread::kNicer, 19));
+  EXPECT_EQ(helper, writer);
+  EXPECT_EQ(getpriority(PRIO_PROCESS, static_cast<id_t>(gettid())), caller);
 }
 
 TEST(FrameThread, TakesTheSnapshotBySwap) {
