@@ -95,19 +95,18 @@ std::vector<TriangleSpec> generate_lattice(const LatticeSpec& spec) {
     for (long long k = 0; k < slots; ++k) {
       const double left = o.x + static_cast<double>(k) * g.half_pitch;
       const bool up = (j + k) % 2 == 0;
-      TriangleSpec& t = out[id];
+      if (!up && !downs_fit) continue;
+      TriangleSpec& t = out[id++];
       if (up) {
         t.vertices = {Vec2d{left, row_base}, Vec2d{left + g.s, row_base},
                       Vec2d{left + 0.5 * g.s, row_base + g.h}};
       } else {
-        if (!downs_fit) continue;
         const double top = row_base + g.down_top;
         t.vertices = {Vec2d{left + 0.5 * g.s, top - g.h}, Vec2d{left + g.s, top},
                       Vec2d{left, top}};
       }
       t.material = spec.material;
       t.velocity = spec.velocity;
-      ++id;
     }
   }
   return out;
