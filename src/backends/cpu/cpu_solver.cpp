@@ -321,6 +321,12 @@ void CpuSolver<Real>::compute_pair_slots(Part part) {
     if (polls && e % 256 == 0) poll_();
     const bool received_e = received && received[e] != 0;
     if (part == Part::Own && received_e) continue;
+    // The pass on ghosts: an own row without a received partner has nothing for it.
+    if (ghosts && !received_e &&
+        std::none_of(pairs_.partner.begin() + pairs_.offset[e],
+                     pairs_.partner.begin() + pairs_.offset[e + 1],
+                     [&](std::int32_t j) { return received[j] != 0; }))
+      continue;
     OldRow<std::int64_t, physics::PairSlip<Real>> old{old_pairs_.partner.data(), old_slip_.data(),
                                                       old_pairs_.offset[e],
                                                       old_pairs_.offset[e + 1]};
