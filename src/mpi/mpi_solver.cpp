@@ -398,6 +398,7 @@ void MpiSolver<Real>::step_once() {
 template <class Real>
 void MpiSolver<Real>::exchange_ghosts() {
   local_->pack();
+  const auto start = std::chrono::steady_clock::now();
   MPI_Alltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
                 local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
                 comm_);
@@ -405,6 +406,7 @@ void MpiSolver<Real>::exchange_ghosts() {
     MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(), body_send_displs_.data(),
                   MPI_DOUBLE, local_->body_receive_buffer(), body_recv_counts_.data(),
                   body_recv_displs_.data(), MPI_DOUBLE, comm_);
+  exchange_wait_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   local_->unpack();
 }
 
@@ -424,7 +426,9 @@ void MpiSolver<Real>::start_exchange() {
 template <class Real>
 void MpiSolver<Real>::finish_exchange() {
   if (!in_flight_) return;
+  const auto start = std::chrono::steady_clock::now();
   MPI_Waitall(2, requests_, MPI_STATUSES_IGNORE);
+  exchange_wait_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   in_flight_ = false;
   local_->unpack();
 }
@@ -1157,6 +1161,7 @@ std::string MpiSolver<Real>::statistics() const {
       fmt::format("{} plan{} (the first and {} after particles moved half the skin "
                   "{:.3g} m); rank 0 holds {} particles: {} its own",
                   plans_, plans_ == 1 ? "" : "s", plans_ - 1, skin_, global_.size(), own);
+  s += fmt::format("; rank 0 waited {:.3g} s for its ghosts", exchange_wait_);
   GhostOverlapCounts c = earlier_overlap_;
   c += local_->overlap_counts();
   if (c.steps > 0)

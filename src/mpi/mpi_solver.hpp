@@ -175,6 +175,7 @@ class MpiSolver final : public Solver {
   bool in_flight_ = false;
   MPI_Request requests_[2] = {MPI_REQUEST_NULL, MPI_REQUEST_NULL};
   GhostOverlapCounts earlier_overlap_;  ///< of the local solvers replaced by new plans
+  double exchange_wait_ = 0;            ///< seconds in the ghost exchange's MPI calls that wait
 
   StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
   std::int64_t plans_ = 0;
