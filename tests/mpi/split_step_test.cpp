@@ -9,6 +9,7 @@
 #include "core/time_step.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
+#include "tridem/error.hpp"
 
 #include <gtest/gtest.h>
 #include <limits>
@@ -25,48 +26,67 @@ void for_each_state(CpuSolver<Real>& s, F&& f) {
   });
 }
 
+/// A solver on the split step whose every third free grain plays a received ghost: before
+/// each step its State is NaN, and the take hook writes the true State back.
+template <class Real>
+class SplitRun {
+ public:
+  explicit SplitRun(const Scene& s)
+      : model_(build_particle_model(s)),
+        solver_(s, model_, estimate_time_step(s, model_), SolverConfig{}, false) {
+    std::vector<std::uint8_t> received(model_.size(), 0);
+    for (std::size_t i = 0; i < model_.size(); ++i)
+      if (model_.motion[i] == Motion::Free && i % 3 == 0) {
+        received[i] = 1;
+        ghosts_.push_back(i);
+      }
+    solver_.set_ghost_hooks(
+        received,
+        [this] {
+          std::size_t at = 0;
+          for (std::size_t i : ghosts_)
+            for_each_state(solver_, [&](std::vector<double>& v) { v[i] = stash_[at++]; });
+          ++takes_;
+        },
+        [] {});
+  }
+  CpuSolver<Real>& solver() { return solver_; }
+  std::int64_t takes() const { return takes_; }
+  /// `steps` steps, one advance each (as MPI ranks step).
+  void advance(std::int64_t steps) {
+    for (std::int64_t k = 0; k < steps; ++k) {
+      stash_.clear();
+      for (std::size_t i : ghosts_)
+        for_each_state(solver_, [&](std::vector<double>& v) {
+          stash_.push_back(v[i]);
+          v[i] = std::numeric_limits<double>::quiet_NaN();
+        });
+      solver_.advance(1);
+    }
+  }
+
+ private:
+  ParticleModel model_;
+  CpuSolver<Real> solver_;
+  std::vector<std::size_t> ghosts_;
+  std::vector<double> stash_;
+  std::int64_t takes_ = 0;
+};
+
 template <class Real>
 void expect_split_step_is_serial(Precision precision) {
   Scene s = test::jostling_pile(20, 12);
   s.simulation.precision = precision;
   const std::int64_t steps = 400;
   const Snapshot serial = test::run_to(s, Backend::Cpu, steps, precision);
-  const ParticleModel model = build_particle_model(s);
-  CpuSolver<Real> split(s, model, estimate_time_step(s, model), SolverConfig{}, false);
-  ASSERT_TRUE(split.can_take_ghosts_mid_step());
-  // A third of the grains, spread through the pile: on most steps some touch the others.
-  std::vector<std::uint8_t> received(model.size(), 0);
-  std::vector<std::size_t> ghosts;
-  for (std::size_t i = 0; i < model.size(); ++i)
-    if (model.motion[i] == Motion::Free && i % 3 == 0) {
-      received[i] = 1;
-      ghosts.push_back(i);
-    }
-  std::vector<double> stash;
-  std::int64_t takes = 0;
-  split.set_ghost_hooks(
-      received,
-      [&] {
-        std::size_t at = 0;
-        for (std::size_t i : ghosts)
-          for_each_state(split, [&](std::vector<double>& v) { v[i] = stash[at++]; });
-        ++takes;
-      },
-      [] {});
-  for (std::int64_t k = 0; k < steps; ++k) {
-    stash.clear();
-    for (std::size_t i : ghosts)
-      for_each_state(split, [&](std::vector<double>& v) {
-        stash.push_back(v[i]);
-        v[i] = std::numeric_limits<double>::quiet_NaN();
-      });
-    split.advance(1);
-  }
+  SplitRun<Real> split(s);
+  ASSERT_TRUE(split.solver().can_take_ghosts_mid_step());
+  split.advance(steps);
   Snapshot got;
-  split.snapshot(got, true);
+  split.solver().snapshot(got, true);
   test::expect_identical(serial, got);
-  EXPECT_EQ(takes, steps) << "the hook runs once a step";
-  const GhostOverlapCounts& c = split.overlap_counts();
+  EXPECT_EQ(split.takes(), steps) << "the hook runs once a step";
+  const GhostOverlapCounts& c = split.solver().overlap_counts();
   EXPECT_EQ(c.steps, steps);
   EXPECT_GT(c.overlapped, steps / 2) << "most steps keep their list and split their pairs";
   EXPECT_GT(c.rebuilt, 1);
@@ -81,6 +101,33 @@ TEST(MpiSplitStep, GhostsTakenMidStepGiveTheSerialBitsInDouble) {
 
 TEST(MpiSplitStep, GhostsTakenMidStepGiveTheSerialBitsInFloat) {
   expect_split_step_is_serial<float>(Precision::Float);
+}
+
+// A pair too deep is reported once both passes are done: the lowest emitter, own or ghost,
+// at the step one solver reports it. Here an own grain's pair with a ghost (its pass after
+// the take), on a step that kept its list.
+TEST(MpiSplitStep, ADeepPairIsTheOneTheSerialSolverReports) {
+  Scene s = test::jostling_pile(20, 12);
+  s.simulation.max_penetration = 0.2;
+  auto message = [](auto&& advance) {
+    try {
+      advance();
+    } catch (const RunError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no blow-up");
+  };
+  const ParticleModel model = build_particle_model(s);
+  CpuSolver<double> serial(s, model, estimate_time_step(s, model), SolverConfig{}, false);
+  const std::string expected = message([&] { serial.advance(400); });
+  ASSERT_NE(expected.find("deeper than"), std::string::npos) << expected;
+  SplitRun<double> split(s);
+  split.advance(serial.step());
+  const std::int64_t overlapped = split.solver().overlap_counts().overlapped;
+  EXPECT_EQ(message([&] { split.advance(1); }), expected);
+  EXPECT_EQ(split.solver().step(), serial.step());
+  EXPECT_EQ(split.solver().overlap_counts().overlapped, overlapped + 1)
+      << "the failing step kept its list";
 }
 
 // Where the list is built every step from every box, ghosts' included, nothing of a step
