@@ -126,8 +126,8 @@ struct SimulationSettings {
   bool bbox_prefilter = true;
   DecompositionSettings decomposition;
   double local_damping = 0;            ///< Cundall's α in [0, 1); 0 = off
-  /// Verlet skin of the CUDA pair list, per side of a bounding box, as a fraction of the
-  /// grid cell L: the list is rebuilt only when a box leaves its grown copy.
+  /// Verlet skin of the CUDA pair list (and CPU MPI ranks', docs/scaling.md), per side of a
+  /// box, as a fraction of the grid cell L: rebuilt only when a box leaves its grown copy.
   double skin = 0.05;
   /// Deepest overlap accepted, as φ of the deepest boundary point (0 at the edge, 1 at
   /// the centroid); deeper stops the run as a blow-up. 1 = off.

@@ -6,6 +6,7 @@
 // drift test, and the last step's pairs and energies by local index. CPU ranks
 // (mpi/cpu_rank.hpp) and GPU ranks (backends/cuda/cuda_rank.cu) implement it. Plain C++:
 // no MPI and no CUDA types, so that either side compiles without the other.
+#include "core/ghost_overlap.hpp"
 #include "physics/contact_force.hpp"
 #include "tridem/body_fields.hpp"
 #include "tridem/particle_fields.hpp"
@@ -87,6 +88,20 @@ class RankSolver {
   /// row's sum). Added in ascending (emitter, partner) order they give that total.
   virtual void elastic_terms(
       const std::function<void(std::int32_t emitter, std::int32_t partner, double)>& f) const = 0;
+
+  /// The exchange overlapped with the step (docs/scaling.md, "Overlap"): whether this rank's
+  /// solver takes the ghosts' states in the middle of its steps, after the pairs of its own
+  /// particles, by calling `take` (which completes the exchange started after the last step
+  /// and runs unpack()), and `poll` now and then before; false (the default): the exchange
+  /// completes between steps. Called after set_plan.
+  virtual bool take_ghosts_mid_step(const std::function<void()>& take,
+                                    const std::function<void()>& poll) {
+    (void)take;
+    (void)poll;
+    return false;
+  }
+  /// What the overlap did on this rank since its plan (zeros without).
+  virtual GhostOverlapCounts overlap_counts() const { return {}; }
 
   /// How the ghosts reach MPI, for the start line ("host memory", "pinned host memory,
   /// packed on the GPU").

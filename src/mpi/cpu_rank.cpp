@@ -56,6 +56,18 @@ void CpuRank<Real>::set_plan(const std::vector<std::int32_t>& send,
 }
 
 template <class Real>
+bool CpuRank<Real>::take_ghosts_mid_step(const std::function<void()>& take,
+                                         const std::function<void()>& poll) {
+  // Elsewhere (a periodic cell, the paper's methods) the list is built every step from
+  // every particle's box, ghosts included: nothing of the step can go before the exchange.
+  if (!solver_.can_take_ghosts_mid_step()) return false;
+  std::vector<std::uint8_t> received(solver_.size(), 0);
+  for (std::int32_t i : receive_) received[static_cast<std::size_t>(i)] = 1;
+  solver_.set_ghost_hooks(std::move(received), take, poll);
+  return true;
+}
+
+template <class Real>
 void CpuRank<Real>::pack() {
   std::size_t at = 0;
   for (std::int32_t i : send_)

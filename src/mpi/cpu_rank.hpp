@@ -43,6 +43,9 @@ class CpuRank final : public RankSolver<Real> {
   void elastic_terms(
       const std::function<void(std::int32_t, std::int32_t, double)>& f) const override;
   std::string transport() const override { return "through host memory"; }
+  bool take_ghosts_mid_step(const std::function<void()>& take,
+                            const std::function<void()>& poll) override;
+  GhostOverlapCounts overlap_counts() const override { return solver_.overlap_counts(); }
 
  private:
   CpuSolver<Real> solver_;

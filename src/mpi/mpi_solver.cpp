@@ -360,11 +360,14 @@ void MpiSolver<Real>::advance(std::int64_t steps) {
 template <class Real>
 void MpiSolver<Real>::run_steps(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) step_once();
+  // Between advances the ghosts are their owners' (snapshots, states, a new plan).
+  finish_exchange();
 }
 
 template <class Real>
 void MpiSolver<Real>::step_once() {
   if (redecompose_) {
+    finish_exchange();  // its buffers belong to the local solver the plan replaces
     SolverState whole;
     gather_state(whole);
     decompose(whole);
@@ -374,12 +377,17 @@ void MpiSolver<Real>::step_once() {
   try {
     local_->solver().advance(1);
   } catch (const std::exception& e) {
+    // Every rank started the exchange: each completes it (the others may be waiting on it).
+    finish_exchange();
     // This rank failed before or in its Check: tell the others, which are waiting in
     // their check hook. When the hook threw, the agreement is already made.
     if (!check_agreed_) agreed_ = agree(comm_, global_ids(e.what())).value_or(e.what());
     throw RunError(agreed_);
   }
-  exchange_ghosts();
+  if (overlap_)
+    start_exchange();
+  else
+    exchange_ghosts();
   int mine[2] = {os_interrupt_ ? os_interrupt_->load() : 0, drifted() ? 1 : 0};
   int all[2] = {0, 0};
   MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, comm_);
@@ -390,6 +398,7 @@ void MpiSolver<Real>::step_once() {
 template <class Real>
 void MpiSolver<Real>::exchange_ghosts() {
   local_->pack();
+  const auto start = std::chrono::steady_clock::now();
   MPI_Alltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
                 local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
                 comm_);
@@ -397,7 +406,38 @@ void MpiSolver<Real>::exchange_ghosts() {
     MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(), body_send_displs_.data(),
                   MPI_DOUBLE, local_->body_receive_buffer(), body_recv_counts_.data(),
                   body_recv_displs_.data(), MPI_DOUBLE, comm_);
+  exchange_wait_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   local_->unpack();
+}
+
+template <class Real>
+void MpiSolver<Real>::start_exchange() {
+  local_->pack();
+  MPI_Ialltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
+                 local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
+                 comm_, &requests_[0]);
+  if (!model_.bodies.empty())  // on every rank, even one that holds none
+    MPI_Ialltoallv(local_->body_send_buffer(), body_send_counts_.data(), body_send_displs_.data(),
+                   MPI_DOUBLE, local_->body_receive_buffer(), body_recv_counts_.data(),
+                   body_recv_displs_.data(), MPI_DOUBLE, comm_, &requests_[1]);
+  in_flight_ = true;
+}
+
+template <class Real>
+void MpiSolver<Real>::finish_exchange() {
+  if (!in_flight_) return;
+  const auto start = std::chrono::steady_clock::now();
+  MPI_Waitall(2, requests_, MPI_STATUSES_IGNORE);
+  exchange_wait_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  in_flight_ = false;
+  local_->unpack();
+}
+
+template <class Real>
+void MpiSolver<Real>::poll_exchange() {
+  // Without a progress thread, MPI moves a large message only inside MPI calls.
+  int done = 0;
+  if (in_flight_) MPI_Testall(2, requests_, &done, MPI_STATUSES_IGNORE);
 }
 
 template <class Real>
@@ -570,6 +610,7 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
     local_of_[static_cast<std::size_t>(global_[k])] = static_cast<std::int32_t>(k);
 
   if (local_) {
+    earlier_overlap_ += local_->overlap_counts();
     const StageTimes t = local_->solver().stage_times();
     for (int s = 0; s < kStageCount; ++s) earlier_times_.seconds[s] += t.seconds[s];
     earlier_times_.steps += t.steps;
@@ -695,6 +736,8 @@ void MpiSolver<Real>::build_local(const SolverState& whole) {
   body_recv_counts_ = std::move(b.recv_counts);
   body_recv_displs_ = std::move(b.recv_displs);
   local_->set_body_plan(b.send_all, b.recv_all);
+  overlap_ =
+      local_->take_ghosts_mid_step([this] { finish_exchange(); }, [this] { poll_exchange(); });
   ++plans_;
 }
 
@@ -1114,9 +1157,19 @@ std::string MpiSolver<Real>::statistics() const {
   std::size_t own = 0;
   for (std::int32_t g : global_)
     if (plan_.owns(rank_, g)) ++own;
-  return fmt::format("{} plan{} (the first and {} after particles moved half the skin "
-                     "{:.3g} m); rank 0 holds {} particles: {} its own",
-                     plans_, plans_ == 1 ? "" : "s", plans_ - 1, skin_, global_.size(), own);
+  std::string s =
+      fmt::format("{} plan{} (the first and {} after particles moved half the skin "
+                  "{:.3g} m); rank 0 holds {} particles: {} its own",
+                  plans_, plans_ == 1 ? "" : "s", plans_ - 1, skin_, global_.size(), own);
+  s += fmt::format("; rank 0 waited {:.3g} s for its ghosts", exchange_wait_);
+  GhostOverlapCounts c = earlier_overlap_;
+  c += local_->overlap_counts();
+  if (c.steps > 0)
+    s += fmt::format("; rank 0 overlapped the ghost exchange with its own pairs on {} of {} "
+                     "steps (list built on {}, {} of them after a ghost left its box; pairs on "
+                     "ghosts touching on {})",
+                     c.overlapped, c.steps, c.rebuilt, c.discarded, c.ghost_contacts);
+  return s;
 }
 
 template <class Real>

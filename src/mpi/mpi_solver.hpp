@@ -10,7 +10,9 @@
 //
 // Every step: the local step up to its Check; the ranks agree the step is good (else all
 // stop at the last good state with one message); the local Integrate; the ghosts' new
-// states from their owners (one MPI_Alltoallv of the State fields); the ranks agree
+// states from their owners (one MPI_Alltoallv of the State fields; on CPU ranks on the
+// grid an MPI_Ialltoallv, in flight until the next step has computed the pairs of this
+// rank's own particles: docs/scaling.md, "Overlap"); the ranks agree
 // whether to stop (a signal on any rank) and whether some particle has moved half the
 // skin since the plan. If so, the next step first gathers the whole state (with contact
 // history, which therefore migrates with its particles) and plans again, borders moved to
@@ -82,6 +84,11 @@ class MpiSolver final : public Solver {
   void run_steps(std::int64_t steps);
   void step_once();
   void exchange_ghosts();
+  /// The overlapped exchange (overlap_): started after a step, completed by the local
+  /// solver in the middle of the next (its take hook) or before anything else reads it.
+  void start_exchange();
+  void finish_exchange();
+  void poll_exchange();
   bool drifted() const;
   /// The whole state on every rank (collective).
   void gather_state(SolverState& out) const;
@@ -161,6 +168,14 @@ class MpiSolver final : public Solver {
                      static_cast<std::int32_t>(scene_.bonds[k].b)) == rank_;
   }
   std::vector<int> body_send_counts_, body_send_displs_, body_recv_counts_, body_recv_displs_;
+  // The overlapped exchange (docs/scaling.md, "Overlap"; CPU ranks on the grid, not
+  // periodic): MPI_Ialltoallv of the particles' and the bodies' states, in flight from the
+  // end of a step to the middle of the next.
+  bool overlap_ = false;
+  bool in_flight_ = false;
+  MPI_Request requests_[2] = {MPI_REQUEST_NULL, MPI_REQUEST_NULL};
+  GhostOverlapCounts earlier_overlap_;  ///< of the local solvers replaced by new plans
+  double exchange_wait_ = 0;            ///< seconds in the ghost exchange's MPI calls that wait
 
   StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
   std::int64_t plans_ = 0;

@@ -39,6 +39,18 @@ case "$mode" in
     fi
     diff -r "$work/one" "$work/many" || fail "$np ranks differ from one rank"
     grep "plans" "$work/many.log"
+    # EXPECT_OVERLAP=P: rank 0 computed its own pairs with the ghost exchange in flight on
+    # more than 0 and at least P % of the steps; EXPECT_GHOST_CONTACTS=P: pairs on its
+    # ghosts touched on at least P % of them (docs/scaling.md, "Overlap").
+    if [ -n "${EXPECT_OVERLAP:-}${EXPECT_GHOST_CONTACTS:-}" ]; then
+      counts=$(sed -nE 's/.*overlapped the ghost exchange with its own pairs on ([0-9]+) of ([0-9]+) steps.*touching on ([0-9]+)\).*/\1 \2 \3/p' "$work/many.log")
+      [ -n "$counts" ] || fail "no overlap in the summary: $(grep plans "$work/many.log")"
+      read -r overlapped steps touching <<<"$counts"
+      [ "$overlapped" -gt 0 ] && [ $((100 * overlapped)) -ge $((${EXPECT_OVERLAP:-0} * steps)) ] ||
+        fail "overlapped on $overlapped of $steps steps, expected ${EXPECT_OVERLAP:-0} % or more"
+      [ $((100 * touching)) -ge $((${EXPECT_GHOST_CONTACTS:-0} * steps)) ] ||
+        fail "pairs on ghosts touched on $touching of $steps steps, expected ${EXPECT_GHOST_CONTACTS:-0} % or more"
+    fi
     echo "$np ranks: the output directory equals one rank's ($(find "$work/one" -type f | wc -l) files)"
     ;;
   restart)

@@ -50,6 +50,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     for_each_array(column(field),
                    [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
   });
+  margin_ = static_cast<Real>(scene.simulation.skin * static_cast<double>(finder_.cell_size()));
   walls_move_ = walls_move(model);
   cell_ = scene.simulation.periodic;
   periodic_ = cell_.any();
@@ -114,11 +115,19 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) {
     parallel_ = choice_.parallel();
     pair_energy_ = s + 1 == steps;
+    // A step that throws leaves no list to keep (its build boxes may be a newer list's).
+    may_keep_ = list_kept_;
+    list_kept_ = false;
     const auto start = std::chrono::steady_clock::now();
     run_step_on_team();
     choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
+    if (take_ghosts_) {
+      list_kept_ = true;
+      ++overlap_counts_.steps;
+      if (ghost_contact_ != 0) ++overlap_counts_.ghost_contacts;
+    }
     ++step_;
     time_ += dt_;
   }
@@ -137,6 +146,8 @@ void CpuSolver<Real>::run_step_on_team() {
   if (timed) clock.begin_step();
   too_deep_ = kNoIndex;
   first_runaway_ = kNoIndex;
+  left_box_ = 0;
+  ghost_contact_ = 0;
   // From the poses at the step's start, which only Integrate changes; read by Check and
   // Integrate.
   if (!servo_targets_.empty()) update_servo_targets();
@@ -168,11 +179,16 @@ void CpuSolver<Real>::run_step_on_team() {
 
 template <class Real>
 void CpuSolver<Real>::run_stage(Stage stage) {
+  // MPI ranks' split step (set_ghost_hooks): the ghosts arrive during the pair stages.
+  const bool split = static_cast<bool>(take_ghosts_);
   switch (stage) {
-    case Stage::Geometry: return update_geometry();
-    case Stage::PairList: return find_pairs();
+    case Stage::Geometry: return update_geometry(split ? Part::Own : Part::All);
+    case Stage::PairList: return split ? split_pair_list() : find_pairs();
     case Stage::PairForces:
-      compute_pair_forces();
+      if (split)
+        split_pair_forces();
+      else
+        compute_pair_forces();
       if (bonds() > 0) compute_bond_forces();
       return;
     case Stage::Gather:
@@ -199,10 +215,13 @@ StageTimes CpuSolver<Real>::stage_times() const {
 }
 
 template <class Real>
-void CpuSolver<Real>::update_geometry() {
+void CpuSolver<Real>::update_geometry(Part part) {
   const auto n = static_cast<std::int64_t>(n_);
+  const std::uint8_t* received = part == Part::All ? nullptr : received_.data();
+  const bool ghosts = part == Part::Ghosts;
 #pragma omp for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
+    if (received && (received[i] != 0) != ghosts) continue;
     Vec2<Real> body_frame[3];
     physics::load_vertices(offset_x_, offset_y_, i, body_frame);
     const physics::PlacedBody<Real> placed =
@@ -238,6 +257,11 @@ void CpuSolver<Real>::find_pairs() {
     finder_.find({lo_x_.data(), lo_y_.data(), hi_x_.data(), hi_y_.data()}, method_, parallel_,
                  pairs_);
   }
+  finish_pair_list();
+}
+
+template <class Real>
+void CpuSolver<Real>::finish_pair_list() {
   team_single([&] {
     grow_to(slip_, pairs_.count());
     grow_to(result_, pairs_.count());
@@ -270,33 +294,64 @@ physics::PeriodicFrame CpuSolver<Real>::frame_at(double t) const {
 
 template <class Real>
 void CpuSolver<Real>::compute_pair_forces() {
+  compute_pair_slots(Part::All);
+  report_too_deep();
+}
+
+// A slot's result depends on its own inputs only, and every sum over slots runs in a fixed
+// order (pair_sums.hpp, row_energy.hpp): the passes of the split step, which compute the
+// slots in another order, give the same bits.
+template <class Real>
+void CpuSolver<Real>::compute_pair_slots(Part part) {
   const auto n = static_cast<std::int64_t>(n_);
   // The lowest emitter with a pair deeper than the limit: a min over the threads, so the
   // same pair is reported whatever the threads.
   std::int64_t too_deep = kNoIndex;
+  int ghost_contact = 0;
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
+  // The split step: its list may hold pairs whose boxes no longer overlap, and its passes
+  // take the slots with or without a received particle.
+  const std::uint8_t* received = received_.empty() ? nullptr : received_.data();
+  const bool ghosts = part == Part::Ghosts, same_list = same_list_;
+  const bool polls = part == Part::Own && poll_ && omp_get_thread_num() == 0;
 #pragma omp for schedule(dynamic, 256) nowait
   for (std::int64_t e = 0; e < n; ++e) {
     const auto emitter = static_cast<std::int32_t>(e);
+    if (polls && e % 256 == 0) poll_();
+    const bool received_e = received && received[e] != 0;
+    if (part == Part::Own && received_e) continue;
+    // The pass on ghosts: an own row without a received partner has nothing for it.
+    if (ghosts && !received_e &&
+        std::none_of(pairs_.partner.begin() + pairs_.offset[e],
+                     pairs_.partner.begin() + pairs_.offset[e + 1],
+                     [&](std::int32_t j) { return received[j] != 0; }))
+      continue;
     OldRow<std::int64_t, physics::PairSlip<Real>> old{old_pairs_.partner.data(), old_slip_.data(),
                                                       old_pairs_.offset[e],
                                                       old_pairs_.offset[e + 1]};
     // The pair's frame: origin at the emitter's centroid (physics/local_frame.hpp).
     const Vec2d origin{x_[e], y_[e]};
     const physics::Body<Real> a = body(emitter, origin);
+    const physics::Aabb<Real> box_e = physics::box_of(lo_x_[e], lo_y_[e], hi_x_[e], hi_y_[e]);
     const auto dt = static_cast<Real>(dt_);
     const std::int32_t* body_of = n_bodies_ > 0 ? member_body_.data() : nullptr;
     double image_power = 0;
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
-      // Members of one body, and triangles an intact bond holds: exact zeros, no history.
-      if (physics::same_body(body_of, e, j) || physics::intact_bond_between(bond_view_, e, j)) {
+      const bool on_ghost = received && (received_e || received[j] != 0);
+      if (part != Part::All && on_ghost != ghosts) continue;
+      // Members of one body, and triangles an intact bond holds: exact zeros, no history;
+      // so is a kept pair whose boxes no longer overlap, as if it were not listed.
+      if (physics::same_body(body_of, e, j) || physics::intact_bond_between(bond_view_, e, j) ||
+          (received && !physics::boxes_overlap(
+                           box_e, physics::box_of(lo_x_[j], lo_y_[j], hi_x_[j], hi_y_[j])))) {
         result_[s] = physics::PairForce<Real>{};
         slip_[s] = physics::PairSlip<Real>{};
         continue;
       }
-      physics::PairSlip<Real> slip = old.history_of(j);
+      // The last step's list, slot by slot: its slot's history is the pair's.
+      physics::PairSlip<Real> slip = same_list ? old_slip_[s] : old.history_of(j);
       const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
       const auto force = [&](const physics::Body<Real>& b) {
         return pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
@@ -311,11 +366,127 @@ void CpuSolver<Real>::compute_pair_forces() {
       }
       slip_[s] = slip;
       if (result_[s].depth > penetration_limit_) too_deep = std::min(too_deep, e);
+      if (on_ghost && result_[s].touching) ghost_contact = 1;
     }
     if (!image_power_.empty()) image_power_[e] = image_power;
   }
   team_fold(too_deep_, too_deep, [](std::int64_t a, std::int64_t b) { return std::min(a, b); });
-  if (too_deep_ < n) team_single([&] { report_penetration(static_cast<std::int32_t>(too_deep_)); });
+  if (received)
+    team_fold(ghost_contact_, ghost_contact, [](int a, int b) { return std::max(a, b); });
+}
+
+template <class Real>
+void CpuSolver<Real>::report_too_deep() {
+  if (too_deep_ < static_cast<std::int64_t>(n_))
+    team_single([&] { report_penetration(static_cast<std::int32_t>(too_deep_)); });
+}
+
+template <class Real>
+void CpuSolver<Real>::set_ghost_hooks(std::vector<std::uint8_t> received,
+                                      std::function<void()> take, std::function<void()> poll) {
+  if (!can_take_ghosts_mid_step() || received.size() != n_)
+    throw RunError("internal error: this solver cannot take its ghosts mid-step");
+  received_ = std::move(received);
+  take_ghosts_ = std::move(take);
+  poll_ = std::move(poll);
+  for (auto* v : {&build_lo_x_, &build_lo_y_, &build_hi_x_, &build_hi_y_}) v->assign(n_, Real(0));
+  list_kept_ = false;  // the first split step builds its list
+}
+
+// The split step (set_ghost_hooks), its PairList stage: the own particles' geometry is
+// there (Geometry skipped the received ones). The list is kept when it was built with build
+// boxes and no own box has left its build box; else the ghosts are needed now, to build it.
+template <class Real>
+void CpuSolver<Real>::split_pair_list() {
+  if (may_keep_) test_build_boxes(Part::Own);
+  if (!may_keep_ || left_box_ != 0) {
+    take_ghosts();
+    build_grown_list();
+    return;
+  }
+  team_single([&] {
+    // The last step's list: its slots, and its reverse index, which reverse_ still holds.
+    ghosts_taken_ = false;
+    same_list_ = true;
+    pairs_.offset = old_pairs_.offset;
+    grow_to(pairs_.partner, old_pairs_.count());
+    std::copy(old_pairs_.partner.begin(), old_pairs_.partner.begin() + old_pairs_.count(),
+              pairs_.partner.begin());
+  });
+}
+
+// The PairForces stage: on a kept list, the pairs of own particles while the ghosts are in
+// flight, then the ghosts, then theirs; unless a ghost's box has left its build box, when
+// the list is built again and every pair computed on it (the early ones thrown away).
+template <class Real>
+void CpuSolver<Real>::split_pair_forces() {
+  if (ghosts_taken_) {
+    compute_pair_slots(Part::All);
+    return report_too_deep();
+  }
+  compute_pair_slots(Part::Own);
+  take_ghosts();
+  test_build_boxes(Part::Ghosts);
+  if (left_box_ != 0) {
+    team_single([&] {
+      too_deep_ = kNoIndex;
+      ghost_contact_ = 0;
+      ++overlap_counts_.discarded;
+    });
+    build_grown_list();
+    compute_pair_slots(Part::All);
+  } else {
+    compute_pair_slots(Part::Ghosts);
+    team_single([&] { ++overlap_counts_.overlapped; });
+  }
+  report_too_deep();
+}
+
+// The received particles' State written (the hook), then their geometry.
+template <class Real>
+void CpuSolver<Real>::take_ghosts() {
+  team_master(take_ghosts_);
+  update_geometry(Part::Ghosts);
+  team_single([&] { ghosts_taken_ = true; });
+}
+
+// The grid's list of the boxes grown by the skin (the build boxes), which holds every pair
+// whose boxes overlap until some box leaves its build box. Not periodic
+// (can_take_ghosts_mid_step): under shear the images move without their particles, which the
+// build boxes do not see.
+template <class Real>
+void CpuSolver<Real>::build_grown_list() {
+  const auto n = static_cast<std::int64_t>(n_);
+#pragma omp for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    build_lo_x_[i] = lo_x_[i] - margin_;
+    build_lo_y_[i] = lo_y_[i] - margin_;
+    build_hi_x_[i] = hi_x_[i] + margin_;
+    build_hi_y_[i] = hi_y_[i] + margin_;
+  }
+  finder_.find({build_lo_x_.data(), build_lo_y_.data(), build_hi_x_.data(), build_hi_y_.data()},
+               method_, parallel_, pairs_);
+  finish_pair_list();
+  team_single([&] {
+    same_list_ = false;
+    ++overlap_counts_.rebuilt;
+  });
+}
+
+// Whether a box of `part` has left its build box (a non-finite one has), into left_box_.
+template <class Real>
+void CpuSolver<Real>::test_build_boxes(Part part) {
+  const auto n = static_cast<std::int64_t>(n_);
+  const bool ghosts = part == Part::Ghosts;
+  int left = 0;
+#pragma omp for schedule(static) nowait
+  for (std::int64_t i = 0; i < n; ++i) {
+    if ((received_[i] != 0) != ghosts) continue;
+    if (!(lo_x_[i] >= build_lo_x_[i] && lo_y_[i] >= build_lo_y_[i] && hi_x_[i] <= build_hi_x_[i] &&
+          hi_y_[i] <= build_hi_y_[i]))
+      left = 1;
+  }
+  team_fold(left_box_, left, [](int a, int b) { return std::max(a, b); });
 }
 
 // One thread per bond, each writing its own slot: OpenMP equals serial. The bond's frame:

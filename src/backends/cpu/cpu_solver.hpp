@@ -7,6 +7,7 @@
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/single_domain.hpp"
 #include "core/bond_columns.hpp"
+#include "core/ghost_overlap.hpp"
 #include "core/particle_model.hpp"
 #include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
@@ -80,13 +81,41 @@ class CpuSolver final : public Solver {
   /// leaves every rank at the last good state).
   void set_check_hook(std::function<void()> hook) { check_hook_ = std::move(hook); }
 
+  /// MPI ranks (mpi/cpu_rank, docs/scaling.md "Overlap"): whether this solver can take its
+  /// ghosts' states in the middle of a step, after the pairs of its own particles: the grid
+  /// method, without a periodic cell, with a skin (the list is kept between steps).
+  bool can_take_ghosts_mid_step() const {
+    return method_ == Method::Grid && !periodic_ && margin_ > Real(0);
+  }
+  /// Turns that on: `received` flags (one a particle) the particles whose State arrives from
+  /// other ranks; `take()` writes it, once a step, before anything of this step reads it
+  /// (on the team's first thread); `poll()` is called now and then meanwhile (the first
+  /// thread), to let the transfer progress.
+  void set_ghost_hooks(std::vector<std::uint8_t> received, std::function<void()> take,
+                       std::function<void()> poll);
+  /// What the split step did (set_ghost_hooks; zeros without).
+  const GhostOverlapCounts& overlap_counts() const { return overlap_counts_; }
+
  private:
   void run_step_on_team();
   // The stages' functions are team code (core/omp_team.hpp): every thread of the step's
   // team calls them, their loops are worksharing loops, their serial parts team_single.
-  void update_geometry();
   void find_pairs();
+  /// The reverse index and the pairs' slots for the list just built.
+  void finish_pair_list();
   void compute_pair_forces();
+  // Which particles (geometry) or slots (pair forces) a pass of the split step covers:
+  // all, those of no received particle (Own), or those of some received one (Ghosts).
+  enum class Part { All, Own, Ghosts };
+  void update_geometry(Part part);
+  void compute_pair_slots(Part part);
+  void report_too_deep();
+  // The split step's stages (set_ghost_hooks).
+  void split_pair_list();
+  void split_pair_forces();
+  void take_ghosts();
+  void build_grown_list();
+  void test_build_boxes(Part part);
   [[noreturn]] void report_penetration(std::int32_t emitter) const;
   void accumulate();
   void check_runaway() const;
@@ -202,6 +231,22 @@ class CpuSolver final : public Solver {
   // Lees-Edwards only (empty otherwise): each emitter row's image_power of this step, booked
   // as wall work when the step is written (the GPU's StepParams::image_power).
   std::vector<double> image_power_;
+  // The split step of MPI ranks (set_ghost_hooks; empty without): the list is built from
+  // the boxes grown by margin_ on each side (the build boxes), and kept while every box is
+  // inside its build box, so that a step's own pairs need no ghost. A kept list holds pairs
+  // whose boxes no longer overlap: those get the exact zeros of an unlisted pair (the
+  // current boxes are tested in compute_pair_slots), so that the results are one rank's.
+  Real margin_ = 0;  ///< the skin (scene.simulation.skin times the grid's cell)
+  std::vector<std::uint8_t> received_;
+  std::function<void()> take_ghosts_, poll_;
+  std::vector<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
+  bool list_kept_ = false;  ///< the last step completed on a list built with build boxes
+  bool may_keep_ = false;   ///< this step started with such a list
+  bool same_list_ = false;  ///< this step's list is the last step's (history by slot)
+  bool ghosts_taken_ = false;
+  int left_box_ = 0;       ///< some box left its build box (folded by the team)
+  int ghost_contact_ = 0;  ///< some pair on a ghost touched (folded by the team)
+  GhostOverlapCounts overlap_counts_;
 };
 
 }  // namespace tridem

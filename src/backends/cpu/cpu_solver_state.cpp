@@ -51,6 +51,7 @@ void CpuSolver<Real>::load_state(const SolverState& in) {
   load_bonds(in, bonds_, description());
 
   history_rows(in, n_, old_pairs_.offset, old_pairs_.partner, old_slip_);
+  list_kept_ = false;  // those rows are the history, not a list to keep
   // The forces of those pairs are not stored: the loaded step reports no contacts.
   grow_to(result_, static_cast<std::int64_t>(in.pairs()));
   std::fill(result_.begin(), result_.end(), physics::PairForce<Real>{});
