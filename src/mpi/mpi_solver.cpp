@@ -397,17 +397,8 @@ void MpiSolver<Real>::step_once() {
 
 template <class Real>
 void MpiSolver<Real>::exchange_ghosts() {
-  local_->pack();
-  const auto start = std::chrono::steady_clock::now();
-  MPI_Alltoallv(local_->send_buffer(), send_counts_.data(), send_displs_.data(), MPI_DOUBLE,
-                local_->receive_buffer(), recv_counts_.data(), recv_displs_.data(), MPI_DOUBLE,
-                comm_);
-  if (!model_.bodies.empty())  // on every rank, even one that holds none
-    MPI_Alltoallv(local_->body_send_buffer(), body_send_counts_.data(), body_send_displs_.data(),
-                  MPI_DOUBLE, local_->body_receive_buffer(), body_recv_counts_.data(),
-                  body_recv_displs_.data(), MPI_DOUBLE, comm_);
-  exchange_wait_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  local_->unpack();
+  start_exchange();
+  finish_exchange();
 }
 
 template <class Real>

@@ -4,6 +4,7 @@
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/device_views.cuh"
 #include "core/particle_columns.hpp"
+#include "tridem/error.hpp"
 
 #include <type_traits>
 
@@ -20,7 +21,8 @@ struct ParticleBuffers {
   /// the host's threads straight into `staging` (page-locked: copied at the bus's speed,
   /// where a pageable vector per array was copied through the driver's own bounce buffers,
   /// issue 12's set-up of a 10^7 run); an array that does not fit beside those in flight
-  /// waits for them.
+  /// waits for them. The staging holds the snapshots' six doubles a particle and more, so
+  /// any one array fits.
   void upload_initial(const ParticleModel& model, const PinnedBuffer<unsigned char>& staging,
                       cudaStream_t stream) {
     const std::size_t n = model.size();
@@ -29,12 +31,10 @@ struct ParticleBuffers {
       for_each_array(column(field), [&](auto& b, int k) {
         using T = typename std::decay_t<decltype(b)>::value_type;
         const std::size_t bytes = n * sizeof(T);
-        if (bytes > staging.size()) {
-          b.upload(initial_column<Real>(field, model, k));
-          return;
-        }
         b.allocate(n);
         if (n == 0) return;
+        if (bytes > staging.size())
+          throw RunError("internal error: the snapshot staging cannot hold a particle array");
         if (at + bytes > staging.size()) {
           TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
           at = 0;
