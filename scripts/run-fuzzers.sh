@@ -15,15 +15,32 @@ cmake --build build-fuzz --target scene_reader_fuzz checkpoint_reader_fuzz
 mkdir -p build-fuzz/artifacts
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export ASAN_OPTIONS=detect_leaks=1:${ASAN_OPTIONS:-}
-for target in scene_reader checkpoint_reader; do
-  corpus=build-fuzz/corpus/$target
+# The targets run side by side: each fuzzer is one process on one core, so on CI's two
+# cores both get their whole time in the wall time of one.
+fuzz() {
+  local target=$1 corpus=build-fuzz/corpus/$1
   mkdir -p "$corpus"
   echo "fuzzing $target for $seconds s"
   # -timeout: an input taking over 10 s counts as a hang; -rss_limit_mb: as a memory blow-up.
   build-fuzz/tests/fuzz/${target}_fuzz "$corpus" "tests/fuzz/corpus/$target" \
     -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-    -artifact_prefix=build-fuzz/artifacts/${target}- -print_final_stats=1 2>build-fuzz/$target.log \
-    || { tail -60 build-fuzz/$target.log; echo "FAIL: $target fuzzer found a problem"; exit 1; }
-  grep -E "^stat::number_of_executed_units|^stat::new_units_added" build-fuzz/$target.log || true
+    -artifact_prefix=build-fuzz/artifacts/${target}- -print_final_stats=1 2>build-fuzz/$target.log
+}
+targets=(scene_reader checkpoint_reader)
+pids=()
+for target in "${targets[@]}"; do
+  fuzz "$target" &
+  pids+=($!)
 done
+failed=0
+for i in "${!targets[@]}"; do
+  target=${targets[$i]}
+  if ! wait "${pids[$i]}"; then
+    tail -60 "build-fuzz/$target.log"
+    echo "FAIL: $target fuzzer found a problem"
+    failed=1
+  fi
+  grep -E "^stat::number_of_executed_units|^stat::new_units_added" "build-fuzz/$target.log" || true
+done
+[ "$failed" = 0 ] || exit 1
 echo "fuzzers: no crash, hang or leak in ${seconds} s each"
