@@ -51,6 +51,9 @@
 //                     openmp), kept as a SolverState (what a checkpoint holds) and loaded
 //                     into each repetition's solver; counter `settle_steps`
 //   --settle_steps=N  steps that settle settled_pile (default 50000)
+//   --skin=X          every case's [simulation] skin (default the scenes' 0.05): the CUDA
+//                     list's and the CPU solvers' kept list's; 0 builds the CPU list every
+//                     step from the boxes themselves (same results: what keeping it gives)
 #include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "tridem/setting_names.hpp"
@@ -67,6 +70,7 @@
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -138,6 +142,9 @@ bool g_stage_timing = true;
 /// How pairs are found in every case (--method, --contact_test, --bbox_prefilter).
 tridem::SimulationSettings g_method;
 
+/// --skin: the scenes' skin, when given.
+std::optional<double> g_skin;
+
 /// Which standard pile a case measures.
 enum class Pile { Dense, Bodies, Bonded, Settled };
 constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled};
@@ -182,6 +189,7 @@ const tridem::Scene& pile(Pile kind, std::size_t n) {
     scene.simulation.contact_test = g_method.contact_test;
     scene.simulation.bbox_prefilter = g_method.bbox_prefilter;
     scene.simulation.decomposition = g_method.decomposition;
+    if (g_skin) scene.simulation.skin = *g_skin;
     cached_n = n;
   }
   return scene;
@@ -365,6 +373,15 @@ int main(int argc, char** argv) {
   }
   if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
     g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
+  if (const std::string text = take_flag(argc, argv, "skin"); !text.empty()) {
+    g_skin = parse_number("tridem_bench", "skin", text);
+    if (!(*g_skin >= 0 && *g_skin <= 1)) {
+      std::cerr << "tridem_bench: --skin wants a number in [0, 1] (a fraction of the grid cell); "
+                   "got '"
+                << text << "'\n";
+      return 2;
+    }
+  }
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
   tridem::DecompositionSettings& d = g_method.decomposition;
   using tridem::bench::take_choice;

@@ -54,6 +54,9 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   walls_move_ = walls_move(model);
   cell_ = scene.simulation.periodic;
   periodic_ = cell_.any();
+  keeps_lists_ = can_take_ghosts_mid_step();
+  if (keeps_lists_)
+    for (auto* v : {&build_lo_x_, &build_lo_y_, &build_hi_x_, &build_hi_y_}) v->assign(n_, Real(0));
   if (periodic_ && cell_.shear_rate != 0) image_power_.assign(n_, 0.0);
   programs_ = model.programs;
   program_knots_ = model.program_knots;
@@ -101,6 +104,9 @@ std::string CpuSolver<Real>::description() const {
 template <class Real>
 std::string CpuSolver<Real>::statistics() const {
   std::string s = decomposed_ ? decomposed_->decomposition().summary() : std::string();
+  if (keeps_lists_ && !take_ghosts_)
+    s += fmt::format("pair list built {} times in {} steps (skin {:.3g} m)", list_builds_,
+                     choice_.steps(), static_cast<double>(margin_));
   const std::int64_t one = choice_.steps() - choice_.parallel_steps();
   if (openmp_ && one > 0)
     s += fmt::format("{}{} of {} steps on one thread, timed faster than the threads on "
@@ -123,8 +129,8 @@ void CpuSolver<Real>::advance(std::int64_t steps) {
     choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     std::swap(pairs_, old_pairs_);
     std::swap(slip_, old_slip_);
+    list_kept_ = keeps_lists_;
     if (take_ghosts_) {
-      list_kept_ = true;
       ++overlap_counts_.steps;
       if (ghost_contact_ != 0) ++overlap_counts_.ghost_contacts;
     }
@@ -183,7 +189,9 @@ void CpuSolver<Real>::run_stage(Stage stage) {
   const bool split = static_cast<bool>(take_ghosts_);
   switch (stage) {
     case Stage::Geometry: return update_geometry(split ? Part::Own : Part::All);
-    case Stage::PairList: return split ? split_pair_list() : find_pairs();
+    case Stage::PairList:
+      if (split) return split_pair_list();
+      return keeps_lists_ ? kept_pair_list() : find_pairs();
     case Stage::PairForces:
       if (split)
         split_pair_forces();
@@ -310,10 +318,10 @@ void CpuSolver<Real>::compute_pair_slots(Part part) {
   int ghost_contact = 0;
   const physics::PeriodicFrame frame =
       periodic_ ? frame_at(static_cast<double>(step_) * dt_) : physics::PeriodicFrame{};
-  // The split step: its list may hold pairs whose boxes no longer overlap, and its passes
-  // take the slots with or without a received particle.
+  // A list built from build boxes may hold pairs whose boxes no longer overlap; the split
+  // step's passes take the slots with or without a received particle.
   const std::uint8_t* received = received_.empty() ? nullptr : received_.data();
-  const bool ghosts = part == Part::Ghosts, same_list = same_list_;
+  const bool ghosts = part == Part::Ghosts, same_list = same_list_, grown = keeps_lists_;
   const bool polls = part == Part::Own && poll_ && omp_get_thread_num() == 0;
 #pragma omp for schedule(dynamic, 256) nowait
   for (std::int64_t e = 0; e < n; ++e) {
@@ -344,8 +352,8 @@ void CpuSolver<Real>::compute_pair_slots(Part part) {
       // Members of one body, and triangles an intact bond holds: exact zeros, no history;
       // so is a kept pair whose boxes no longer overlap, as if it were not listed.
       if (physics::same_body(body_of, e, j) || physics::intact_bond_between(bond_view_, e, j) ||
-          (received && !physics::boxes_overlap(
-                           box_e, physics::box_of(lo_x_[j], lo_y_[j], hi_x_[j], hi_y_[j])))) {
+          (grown && !physics::boxes_overlap(
+                        box_e, physics::box_of(lo_x_[j], lo_y_[j], hi_x_[j], hi_y_[j])))) {
         result_[s] = physics::PairForce<Real>{};
         slip_[s] = physics::PairSlip<Real>{};
         continue;
@@ -389,8 +397,32 @@ void CpuSolver<Real>::set_ghost_hooks(std::vector<std::uint8_t> received,
   received_ = std::move(received);
   take_ghosts_ = std::move(take);
   poll_ = std::move(poll);
-  for (auto* v : {&build_lo_x_, &build_lo_y_, &build_hi_x_, &build_hi_y_}) v->assign(n_, Real(0));
   list_kept_ = false;  // the first split step builds its list
+}
+
+// The PairList stage on the grid without a periodic cell, with a skin (keeps_lists_): the
+// last step's list when no box has left its build box, else a list built from the boxes
+// grown by the skin. The same pairs get forces as from a list built every step, with the
+// same bits (a kept pair whose boxes do not overlap gets an unlisted pair's zeros, rows stay
+// sorted by partner), for a list built every few steps and each pair's history by slot.
+template <class Real>
+void CpuSolver<Real>::kept_pair_list() {
+  if (may_keep_) test_build_boxes(Part::All);
+  if (!may_keep_ || left_box_ != 0) return build_grown_list();
+  keep_last_list();
+}
+
+// This step's list is the last step's: its slots, and its reverse index, which reverse_
+// still holds.
+template <class Real>
+void CpuSolver<Real>::keep_last_list() {
+  team_single([&] {
+    same_list_ = true;
+    pairs_.offset = old_pairs_.offset;
+    grow_to(pairs_.partner, old_pairs_.count());
+    std::copy(old_pairs_.partner.begin(), old_pairs_.partner.begin() + old_pairs_.count(),
+              pairs_.partner.begin());
+  });
 }
 
 // The split step (set_ghost_hooks), its PairList stage: the own particles' geometry is
@@ -404,15 +436,8 @@ void CpuSolver<Real>::split_pair_list() {
     build_grown_list();
     return;
   }
-  team_single([&] {
-    // The last step's list: its slots, and its reverse index, which reverse_ still holds.
-    ghosts_taken_ = false;
-    same_list_ = true;
-    pairs_.offset = old_pairs_.offset;
-    grow_to(pairs_.partner, old_pairs_.count());
-    std::copy(old_pairs_.partner.begin(), old_pairs_.partner.begin() + old_pairs_.count(),
-              pairs_.partner.begin());
-  });
+  team_single([&] { ghosts_taken_ = false; });
+  keep_last_list();
 }
 
 // The PairForces stage: on a kept list, the pairs of own particles while the ghosts are in
@@ -470,6 +495,7 @@ void CpuSolver<Real>::build_grown_list() {
   team_single([&] {
     same_list_ = false;
     ++overlap_counts_.rebuilt;
+    ++list_builds_;
   });
 }
 
@@ -481,7 +507,7 @@ void CpuSolver<Real>::test_build_boxes(Part part) {
   int left = 0;
 #pragma omp for schedule(static) nowait
   for (std::int64_t i = 0; i < n; ++i) {
-    if ((received_[i] != 0) != ghosts) continue;
+    if (part != Part::All && (received_[i] != 0) != ghosts) continue;
     if (!(lo_x_[i] >= build_lo_x_[i] && lo_y_[i] >= build_lo_y_[i] && hi_x_[i] <= build_hi_x_[i] &&
           hi_y_[i] <= build_hi_y_[i]))
       left = 1;

@@ -93,6 +93,9 @@ class CpuSolver final : public Solver {
   /// thread), to let the transfer progress.
   void set_ghost_hooks(std::vector<std::uint8_t> received, std::function<void()> take,
                        std::function<void()> poll);
+  /// How many times the kept list (grid, no periodic cell, a skin) was built from build
+  /// boxes: the other steps kept the last step's list.
+  std::int64_t list_builds() const { return list_builds_; }
   /// What the split step did (set_ghost_hooks; zeros without).
   const GhostOverlapCounts& overlap_counts() const { return overlap_counts_; }
 
@@ -110,6 +113,8 @@ class CpuSolver final : public Solver {
   void update_geometry(Part part);
   void compute_pair_slots(Part part);
   void report_too_deep();
+  void kept_pair_list();
+  void keep_last_list();
   // The split step's stages (set_ghost_hooks).
   void split_pair_list();
   void split_pair_forces();
@@ -231,12 +236,15 @@ class CpuSolver final : public Solver {
   // Lees-Edwards only (empty otherwise): each emitter row's image_power of this step, booked
   // as wall work when the step is written (the GPU's StepParams::image_power).
   std::vector<double> image_power_;
-  // The split step of MPI ranks (set_ghost_hooks; empty without): the list is built from
+  // Kept lists (keeps_lists_: the grid, no periodic cell, a skin): the list is built from
   // the boxes grown by margin_ on each side (the build boxes), and kept while every box is
-  // inside its build box, so that a step's own pairs need no ghost. A kept list holds pairs
-  // whose boxes no longer overlap: those get the exact zeros of an unlisted pair (the
-  // current boxes are tested in compute_pair_slots), so that the results are one rank's.
+  // inside its build box; so, in the split step of MPI ranks (set_ghost_hooks), a step's own
+  // pairs need no ghost. A kept list holds pairs whose boxes no longer overlap: those get
+  // the exact zeros of an unlisted pair (the current boxes are tested in
+  // compute_pair_slots), so that the results are those of a list built every step.
   Real margin_ = 0;  ///< the skin (scene.simulation.skin times the grid's cell)
+  bool keeps_lists_ = false;
+  std::int64_t list_builds_ = 0;  ///< lists built from build boxes
   std::vector<std::uint8_t> received_;
   std::function<void()> take_ghosts_, poll_;
   std::vector<Real> build_lo_x_, build_lo_y_, build_hi_x_, build_hi_y_;
