@@ -1,11 +1,13 @@
 #pragma once
 // What both benchmark programs need around Google Benchmark: their own --name=value flags
 // (taken out of argv before benchmark::Initialize sees it) and the host's CPU model.
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include "tridem/setting_names.hpp"
@@ -28,16 +30,23 @@ inline std::string take_flag(int& argc, char** argv, const std::string& name) {
   return value;
 }
 
-/// A positive number, or exit 2 with a message naming the program and the flag.
-inline double parse_number(const char* program, const std::string& flag, const std::string& text) {
+/// A number in [lo, hi], or exit 2 with a message naming the program and the flag.
+inline double parse_number_in(const char* program, const std::string& flag, const std::string& text,
+                              double lo, double hi, const char* wanted) {
   try {
     std::size_t used = 0;
     const double v = std::stod(text, &used);
-    if (used == text.size() && v > 0) return v;
+    if (used == text.size() && v >= lo && v <= hi) return v;
   } catch (const std::exception&) {
   }
-  std::cerr << program << ": --" << flag << " wants a positive number, got '" << text << "'\n";
+  std::cerr << program << ": --" << flag << " wants " << wanted << ", got '" << text << "'\n";
   std::exit(2);
+}
+
+/// A positive number, or exit 2 with a message naming the program and the flag.
+inline double parse_number(const char* program, const std::string& flag, const std::string& text) {
+  return parse_number_in(program, flag, text, std::nextafter(0.0, 1.0),
+                         std::numeric_limits<double>::infinity(), "a positive number");
 }
 
 /// Takes "--name=spelling" out of argv into `value`, for a setting spelt in `table`

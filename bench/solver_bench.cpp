@@ -374,15 +374,9 @@ int main(int argc, char** argv) {
   }
   if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
     g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
-  if (const std::string text = take_flag(argc, argv, "skin"); !text.empty()) {
-    g_skin = parse_number("tridem_bench", "skin", text);
-    if (!(*g_skin >= 0 && *g_skin <= 1)) {
-      std::cerr << "tridem_bench: --skin wants a number in [0, 1] (a fraction of the grid cell); "
-                   "got '"
-                << text << "'\n";
-      return 2;
-    }
-  }
+  if (const std::string text = take_flag(argc, argv, "skin"); !text.empty())
+    g_skin = tridem::bench::parse_number_in("tridem_bench", "skin", text, 0, 1,
+                                            "a number in [0, 1] (a fraction of the grid cell)");
   const std::string prefilter_flag = take_flag(argc, argv, "bbox_prefilter");
   tridem::DecompositionSettings& d = g_method.decomposition;
   using tridem::bench::take_choice;
