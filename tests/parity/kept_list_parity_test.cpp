@@ -67,7 +67,9 @@ void expect_kept_list_is_exact(const KeptListCase& c, Backend backend) {
   EXPECT_TRUE(test::same_bits(every.energy.wall_work, kept.energy.wall_work));
   EXPECT_TRUE(test::same_bits(every.energy.dissipated_fracture, kept.energy.dissipated_fracture));
   EXPECT_GT(every.snapshot.contacts.size(), 10u) << "the scene's grains touch";
-  if (c.breaks) EXPECT_GT(kept.energy.dissipated_fracture, 0);
+  if (c.breaks) {
+    EXPECT_GT(kept.energy.dissipated_fracture, 0);
+  }
   EXPECT_GT(kept.list_builds, 1) << "the list is built again as grains move";
   EXPECT_LT(kept.list_builds, c.steps / 2) << "and kept most steps";
   EXPECT_NE(kept.statistics.find("pair list built " + std::to_string(kept.list_builds) +
@@ -91,7 +93,7 @@ TEST_P(KeptPairList, OpenMpGivesTheBitsOfAListBuiltEveryStep) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, KeptPairList, ::testing::ValuesIn(kCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& scene) { return std::string(scene.param.name); });
 
 // A restart in the middle of a kept list's life: the loaded state builds a new list, and the
 // run goes on with the bits of one that never stopped.
