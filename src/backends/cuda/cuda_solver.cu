@@ -225,20 +225,23 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       if (decomposed_) {
         // The paper's sub-domains, every step; in a periodic cell at this step's frame.
         decomposed_->build(p, *pairs_, periodic_ ? &params_.frame : nullptr);
+      } else if (take_ghosts_) {
+        split_pair_list(p);
       } else if (rebuild_ || pairs_->single_step() || images_slid()) {
         // A single-domain list holds the pairs that pass the contact test at this step's
         // positions only: no skin can keep it valid, so it is rebuilt every step.
-        pairs_->rebuild(p, margin_, params_.frame);
-        rebuild_ = false;
-        built_at_ = static_cast<double>(step_) * params_.dt;
+        rebuild_list(p);
       }
       step_pairs_ = pairs_->arrays();
       return;
     case Stage::PairForces: {
-      *host = {0, INT_MAX, INT_MAX};
+      *host = {0, INT_MAX, INT_MAX, 0};
       TRIDEM_CUDA_CHECK(
           cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
-      launch_pair_forces(p, status);
+      if (take_ghosts_ && !ghosts_taken_)
+        split_pair_forces(p, status);
+      else
+        launch_pair_forces(p, status);
       if (bonds_.size() > 0) {  // each bond's force, in the same step as the contacts
         if (periodic_)
           bond_forces_kernel<Real, true>
@@ -295,6 +298,7 @@ void CudaSolver<Real>::run_stage(Stage stage) {
         if (n_bodies_ > 0) report_body_runaway(host->bad);
         report_runaway(host->bad);
       }
+      if (take_ghosts_ && host->ghost_touch != 0) ++overlap_counts_.ghost_contacts;
       if (check_hook_) {  // before Integrate (kRankPipeline): state_written reads the rebuild
         check_hook_();
         results_ = true;
@@ -346,6 +350,99 @@ void CudaSolver<Real>::launch_pair_forces_with(const ParticleArrays<Real>& p, St
     pair_forces_kernel<Real, kDetails, false, false, kPeriodic>
         <<<grid, threads, 0, stream_>>>(p, q, params_, status, nullptr, bonds);
   TRIDEM_CUDA_CHECK_LAUNCH("pair_forces_kernel");
+}
+
+template <class Real>
+void CudaSolver<Real>::rebuild_list(const ParticleArrays<Real>& p) {
+  pairs_->rebuild(p, margin_, params_.frame);
+  rebuild_ = false;
+  built_at_ = static_cast<double>(step_) * params_.dt;
+}
+
+template <class Real>
+bool CudaSolver<Real>::can_take_ghosts_mid_step() const {
+  return method_ == Method::Grid && !decomposed_ && !pairs_->single_step() && !periodic_ &&
+         margin_ > Real(0);
+}
+
+template <class Real>
+void CudaSolver<Real>::set_ghost_hooks(const std::vector<std::uint8_t>& received,
+                                       std::function<void()> take) {
+  if (!can_take_ghosts_mid_step() || received.size() != n_)
+    throw RunError("internal error: this solver cannot take its ghosts mid-step");
+  received_.upload(received);
+  // Every pass of the pair kernel flags a touching pair on a ghost (overlap_counts_), the
+  // split ones (params_.slots) also skip the other part's slots.
+  params_.received = received_.data();
+  take_ghosts_ = std::move(take);
+  ghosts_taken_ = true;
+}
+
+// The split step's PairList stage (docs/scaling.md, "Overlap"). The Integrate kernel of
+// the last step tested every box against its build box, the ghosts' provisional ones
+// (integrated here without their other ranks' pairs) included: read back, it can only ask
+// for a build a step early, never miss one of an own particle. A build needs every box, so
+// the ghosts are taken first; a kept list lets the own pairs go first.
+template <class Real>
+void CudaSolver<Real>::split_pair_list(const ParticleArrays<Real>& p) {
+  StepStatus* host = host_status_.data();
+  TRIDEM_CUDA_CHECK(
+      cudaMemcpyAsync(host, status_.data(), sizeof *host, cudaMemcpyDeviceToHost, stream_));
+  TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  ++overlap_counts_.steps;
+  ghosts_taken_ = false;
+  if (!rebuild_ && host->rebuild == 0) return;
+  take_ghosts();
+  rebuild_list(p);
+  ++overlap_counts_.rebuilt;
+}
+
+// The split step's pairs on a kept list: the slots of no received particle go to the GPU,
+// the host meanwhile completes the exchange (take_ghosts_: MPI_Waitall, the received State
+// written, their geometry and build-box test read back), then the slots on ghosts. Each
+// slot's result depends on its own pair only and the gather sums slots in a fixed order, so
+// the two passes give one pass's bits. When a ghost's box left its build box, the list is
+// built again and every pair computed on it, from the last step's slips (the own pass has
+// overwritten its slots' in place: a copy restores them).
+template <class Real>
+void CudaSolver<Real>::split_pair_forces(const ParticleArrays<Real>& p, StepStatus* status) {
+  const auto count = static_cast<std::size_t>(step_pairs_.count);
+  if (slip_backup_.size() < count) slip_backup_.allocate(count + count / 5 + 16);
+  if (count > 0)
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(slip_backup_.data(), step_pairs_.slip,
+                                      count * sizeof(physics::PairSlip<Real>),
+                                      cudaMemcpyDeviceToDevice, stream_));
+  params_.slots = kOwnSlots;
+  launch_pair_forces(p, status);
+  take_ghosts();
+  if (rebuild_) {
+    if (count > 0)
+      TRIDEM_CUDA_CHECK(cudaMemcpyAsync(step_pairs_.slip, slip_backup_.data(),
+                                        count * sizeof(physics::PairSlip<Real>),
+                                        cudaMemcpyDeviceToDevice, stream_));
+    StepStatus* host = host_status_.data();
+    *host = {0, INT_MAX, INT_MAX, 0};  // the own pass's flags go with its results
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
+    rebuild_list(p);
+    step_pairs_ = pairs_->arrays();
+    params_.slots = kAllSlots;
+    launch_pair_forces(p, status);
+    ++overlap_counts_.rebuilt;
+    ++overlap_counts_.discarded;
+  } else {
+    params_.slots = kGhostSlots;
+    launch_pair_forces(p, status);
+    ++overlap_counts_.overlapped;
+  }
+  params_.slots = kAllSlots;
+}
+
+// The received particles' State, their geometry and the rebuild test (state_written, by
+// the hook's unpack).
+template <class Real>
+void CudaSolver<Real>::take_ghosts() {
+  take_ghosts_();
+  ghosts_taken_ = true;
 }
 
 template <class Real>

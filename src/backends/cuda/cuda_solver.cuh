@@ -11,6 +11,7 @@
 #include "backends/cuda/particle_buffers.cuh"
 #include "backends/cuda/stage_events.cuh"
 #include "backends/cuda/touching_pairs.cuh"
+#include "core/ghost_overlap.hpp"
 #include "core/particle_model.hpp"
 #include "core/stage_pipeline.hpp"
 #include "core/time_step.hpp"
@@ -94,6 +95,17 @@ class CudaSolver final : public Solver {
   /// The pair list of the step in progress, its loads computed from the PairForces stage
   /// on (a check hook reads a servo wall's pairs there).
   PairArrays<Real> step_pair_arrays() const { return step_pairs_; }
+  /// The split step (docs/scaling.md, "Overlap"): whether this solver can take its ghosts'
+  /// states in the middle of a step, after the pairs of its own particles: the grid's kept
+  /// list (not single-domain or decomposition), no periodic cell, a skin.
+  bool can_take_ghosts_mid_step() const;
+  /// Turns it on: `received` flags (one a particle) the particles whose State arrives from
+  /// other ranks; `take()` completes the exchange and writes them (then state_written()),
+  /// once a step, before anything of the step reads them. The host waits in it while the
+  /// GPU computes the own particles' pairs.
+  void set_ghost_hooks(const std::vector<std::uint8_t>& received, std::function<void()> take);
+  /// What the split step did (set_ghost_hooks; zeros without).
+  const GhostOverlapCounts& overlap_counts() const { return overlap_counts_; }
 
  private:
   friend class CudaStateCopy<Real>;  ///< the live view's copy reads the buffers and stream
@@ -107,6 +119,13 @@ class CudaSolver final : public Solver {
   void launch_pair_forces_with(const ParticleArrays<Real>& p, StepStatus* status);
   /// Lees-Edwards: whether the images have slid farther than the build's slack since it.
   bool images_slid() const;
+  /// The list built from the current boxes grown by the skin, history carried over.
+  void rebuild_list(const ParticleArrays<Real>& p);
+  // The split step's stages (set_ghost_hooks): the list kept unless some box left its build
+  // box (then the ghosts are taken first); the own pairs, the ghosts, then theirs.
+  void split_pair_list(const ParticleArrays<Real>& p);
+  void split_pair_forces(const ParticleArrays<Real>& p, StepStatus* status);
+  void take_ghosts();
   /// The geometry of the current state (and a rebuild); with `place`, the members placed
   /// on their bodies first (at the start, as CpuSolver's constructor does).
   void update_geometry(bool place = false);
@@ -168,6 +187,14 @@ class CudaSolver final : public Solver {
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
   std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)
+  // The split step (set_ghost_hooks; empty without): the received flags, the hook that
+  // takes the ghosts, the last step's slips while the own pass overwrites theirs (restored
+  // if a ghost's box left and the list is built again), what it did.
+  std::function<void()> take_ghosts_;
+  DeviceBuffer<std::uint8_t> received_;
+  DeviceBuffer<physics::PairSlip<Real>> slip_backup_;
+  bool ghosts_taken_ = true;
+  GhostOverlapCounts overlap_counts_;
   mutable PinnedBuffer<unsigned char> staging_;  ///< the shown fields a snapshot copies
   mutable PinnedBuffer<TouchingPair<Real>> touching_;  ///< a snapshot's contacts, as copied
 };

@@ -64,13 +64,22 @@ struct StepParams {
   /// Lees-Edwards only (else null): each emitter row's image_power of this step, booked
   /// as wall work when the step is written (CpuSolver's image_power_).
   double* image_power;
+  /// The split step of MPI ranks (docs/scaling.md, "Overlap"; else null): a flag per
+  /// particle whose State arrives from another rank (a touching pair on one sets
+  /// StepStatus::ghost_touch), and which slots this launch of the pair kernel computes:
+  /// kAllSlots, kOwnSlots (no received particle) or kGhostSlots.
+  const std::uint8_t* received;
+  int slots;
 };
+
+constexpr int kAllSlots = 0, kOwnSlots = 1, kGhostSlots = 2;
 
 /// What the host reads back after every step.
 struct StepStatus {
   int rebuild;  ///< 1 when some particle has left its build box
   int bad;      ///< lowest particle whose step ran away, or INT_MAX
   int deep;     ///< lowest emitter of a pair deeper than max_depth, or INT_MAX
+  int ghost_touch;  ///< 1 when a pair on a received particle touched (the split step's count)
 };
 
 }  // namespace tridem::cuda

@@ -80,6 +80,9 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s >= q.count) return;
   const int e = q.emitter[s], j = q.partner[s];
+  // The split step's passes: the slots of no received particle, then the others.
+  const bool on_ghost = sp.received != nullptr && (sp.received[e] | sp.received[j]) != 0;
+  if (sp.slots != kAllSlots && on_ghost != (sp.slots == kGhostSlots)) return;
   if constexpr (kBodies || kBonds) {
     if ((kBodies && physics::same_body(member_body, e, j)) ||
         (kBonds && physics::intact_bond_between(bonds, e, j))) {
@@ -110,6 +113,7 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
   if (kDetails || deep) q.detail[s] = physics::detail_of(result);
   // The lowest emitter, as the CPU reports it, whatever order the threads run in.
   if (deep) atomicMin(&status->deep, e);
+  if (on_ghost && result.touching) status->ghost_touch = 1;
 }
 
 /// Lees-Edwards: the image_power of each emitter row (physics::image_power of each pair's
