@@ -20,7 +20,7 @@ struct KeptListCase {
   const char* name;
   Scene (*scene)();
   std::int64_t steps;
-  double skin;  ///< small where the grains move slowly, so that the list is built again
+  double skin;          ///< small where the grains move slowly, so that the list is built again
   bool breaks = false;  ///< bonds break (fracture dissipates energy) while the list is kept
 };
 
