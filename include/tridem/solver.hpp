@@ -9,10 +9,15 @@
 #include "tridem/state_copy.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 
 namespace tridem {
+
+// tridem/checkpoint.hpp (C++20: declared here for the CUDA sources, compiled as C++17).
+struct Checkpoint;
+struct CheckpointMeta;
 
 /// The stages of one step. Each backend runs them through run_stage() in the order of its
 /// pipeline (core/stage_pipeline.hpp), which times each one; a stage that a backend fuses
@@ -94,6 +99,12 @@ class Solver {
   /// and precision), so that the next advance() continues that run exactly. Throws
   /// tridem::Error (via validate_solver_state) on a state that does not fit this solver.
   virtual void load_state(const SolverState& in) = 0;
+  /// Writes the state as the checkpoint `file` with `meta`, atomically (tridem/checkpoint.hpp).
+  /// `scratch` is the caller's, kept between checkpoints so that its arrays are reused. The
+  /// default saves the state into it and writes the file from this process; the ranks of an
+  /// MPI run each write their part of the file, side by side (mpi/parallel_checkpoint.hpp).
+  virtual void save_checkpoint(const std::filesystem::path& file, const CheckpointMeta& meta,
+                               Checkpoint& scratch) const;
   /// The energy budget at the current step (energy.csv): the elastic energy of the
   /// contacts of the last step (0 before the first) and the cumulative dissipations and
   /// wall work since step 0. Reduces per-particle sums: call it at logging steps.

@@ -198,9 +198,7 @@ void TimeLoop::keep_state(const std::filesystem::path& file) {
 }
 
 void TimeLoop::save_checkpoint(const std::filesystem::path& file) {
-  solver_.save_state(checkpoint_.state);
-  checkpoint_.meta = meta_;
-  write_checkpoint(file, checkpoint_);
+  solver_.save_checkpoint(file, meta_, checkpoint_);
 }
 
 }  // namespace tridem

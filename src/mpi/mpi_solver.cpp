@@ -4,6 +4,7 @@
 #include "core/particle_columns.hpp"
 #include "core/periodic_checks.hpp"
 #include "mpi/agreement.hpp"
+#include "mpi/collectives.hpp"
 #include "mpi/cpu_rank.hpp"
 #include "mpi/device_choice.hpp"
 #include "physics/rigid_body.hpp"
@@ -45,35 +46,6 @@ ParticleModel slice(const ParticleModel& m, const std::vector<std::int32_t>& ids
   out.program_knots = m.program_knots;
   return out;  // the bodies: slice_bodies
 }
-
-/// Every rank's `mine`, one after the other in rank order: on every rank (`all`) or on
-/// rank 0 only (others get nothing).
-std::vector<double> collect(MPI_Comm comm, const std::vector<double>& mine, bool all) {
-  int ranks = 1, rank = 0;
-  MPI_Comm_size(comm, &ranks);
-  MPI_Comm_rank(comm, &rank);
-  const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
-  if (all)
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  else
-    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  long long total = 0;
-  for (int r = 0; r < ranks; ++r) {
-    displs[static_cast<std::size_t>(r)] = static_cast<int>(total);
-    total += counts[static_cast<std::size_t>(r)];
-  }
-  std::vector<double> out(all || rank == 0 ? static_cast<std::size_t>(total) : 0);
-  if (all)
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, out.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, comm);
-  else
-    MPI_Gatherv(mine.data(), count, MPI_DOUBLE, out.data(), counts.data(), displs.data(),
-                MPI_DOUBLE, 0, comm);
-  return out;
-}
-
-std::int32_t as_id(double v) { return static_cast<std::int32_t>(v); }
 
 /// An Alltoallv's counts and displacements (doubles), `per` doubles per item, from the
 /// items sent to and received from each rank, and the items in buffer order.
@@ -337,6 +309,7 @@ bool MpiSolver<Real>::serve() {
         case kAdvance: run_steps(command[1]); break;
         case kSnapshot: gather_snapshot(nullptr, command[1] != 0); break;
         case kSave: gather_state(whole); break;
+        case kCheckpoint: write_checkpoint_part(nullptr, nullptr); break;
         case kLoad:
           broadcast_state(whole);
           decompose(whole);
@@ -446,30 +419,32 @@ int MpiSolver<Real>::authority(std::int32_t a, std::int32_t b) const {
 }
 
 template <class Real>
-void MpiSolver<Real>::gather_state(SolverState& out) const {
-  SolverState& ls = scratch_state_;
-  local_->solver().save_state(ls);
-  std::vector<double> mine;
-  std::vector<std::size_t> own;
-  for (std::size_t k = 0; k < global_.size(); ++k) {
-    if (reports(global_[k])) own.push_back(k);
-  }
-  std::size_t pairs = 0;
+typename MpiSolver<Real>::Reported MpiSolver<Real>::reported(const SolverState& ls) const {
+  Reported own;
+  for (std::size_t k = 0; k < global_.size(); ++k)
+    if (reports(global_[k])) own.particles.push_back(k);
   for (std::size_t p = 0; p < ls.pairs(); ++p)
     if (authority(global_[static_cast<std::size_t>(ls.pair_emitter[p])],
                   global_[static_cast<std::size_t>(ls.pair_partner[p])]) == rank_)
-      ++pairs;
-  std::vector<std::size_t> own_bodies;
+      own.pairs.push_back(p);
   for (std::size_t b = 0; b < global_body_.size(); ++b)
-    if (reports_body(b)) own_bodies.push_back(b);
-  std::vector<std::size_t> own_bonds;
+    if (reports_body(b)) own.bodies.push_back(b);
   for (std::size_t k = 0; k < global_bond_.size(); ++k)
-    if (reports_bond(static_cast<std::size_t>(global_bond_[k]))) own_bonds.push_back(k);
-  mine.push_back(static_cast<double>(own.size()));
-  mine.push_back(static_cast<double>(pairs));
-  mine.push_back(static_cast<double>(own_bodies.size()));
-  mine.push_back(static_cast<double>(own_bonds.size()));
-  for (std::size_t k : own) {
+    if (reports_bond(static_cast<std::size_t>(global_bond_[k]))) own.bonds.push_back(k);
+  return own;
+}
+
+template <class Real>
+void MpiSolver<Real>::gather_state(SolverState& out) const {
+  SolverState& ls = scratch_state_;
+  local_->solver().save_state(ls);
+  const Reported own = reported(ls);
+  std::vector<double> mine;
+  mine.push_back(static_cast<double>(own.particles.size()));
+  mine.push_back(static_cast<double>(own.pairs.size()));
+  mine.push_back(static_cast<double>(own.bodies.size()));
+  mine.push_back(static_cast<double>(own.bonds.size()));
+  for (std::size_t k : own.particles) {
     mine.push_back(global_[k]);
     SolverState::for_each_field([&](auto field) {
       for_each_array(ls.column(field), [&](const std::vector<double>& v, int) {
@@ -477,20 +452,17 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
       });
     });
   }
-  for (std::size_t p = 0; p < ls.pairs(); ++p) {
-    const std::int32_t e = global_[static_cast<std::size_t>(ls.pair_emitter[p])];
-    const std::int32_t j = global_[static_cast<std::size_t>(ls.pair_partner[p])];
-    if (authority(e, j) != rank_) continue;
-    mine.push_back(e);
-    mine.push_back(j);
+  for (std::size_t p : own.pairs) {
+    mine.push_back(global_[static_cast<std::size_t>(ls.pair_emitter[p])]);
+    mine.push_back(global_[static_cast<std::size_t>(ls.pair_partner[p])]);
     for (double s : ls.pair_slip[p]) mine.push_back(s);
   }
-  for (std::size_t b : own_bodies) {
+  for (std::size_t b : own.bodies) {
     mine.push_back(global_body_[b]);
     SolverState::for_each_body_column([&](auto field) { mine.push_back(ls.column(field)[b]); });
   }
   constexpr std::size_t kPoints = SolverState::kBondStatePoints;
-  for (std::size_t k : own_bonds) {
+  for (std::size_t k : own.bonds) {
     mine.push_back(global_bond_[k]);
     for (std::size_t q = 0; q < kPoints; ++q) mine.push_back(ls.bond_damage[kPoints * k + q]);
     mine.push_back(ls.bond_dissipated[k]);
@@ -1160,6 +1132,11 @@ std::string MpiSolver<Real>::statistics() const {
                      "steps (list built on {}, {} of them after a ghost left its box; pairs on "
                      "ghosts touching on {})",
                      c.overlapped, c.steps, c.rebuilt, c.discarded, c.ghost_contacts);
+  if (checkpoints_ > 0)
+    s += fmt::format("; {} checkpoint{} written by the {} ranks side by side (MPI-IO), "
+                     "{:.3g} MB in {:.3g} s",
+                     checkpoints_, checkpoints_ == 1 ? "" : "s", ranks_, checkpoint_bytes_ / 1e6,
+                     checkpoint_seconds_);
   return s;
 }
 

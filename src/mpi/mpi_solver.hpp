@@ -27,9 +27,11 @@
 #include "core/rank_solver.hpp"
 #include "core/time_step.hpp"
 #include "mpi/strip_plan.hpp"
+#include "tridem/checkpoint.hpp"
 #include "tridem/solver.hpp"
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <mpi.h>
 #include <string>
@@ -62,6 +64,9 @@ class MpiSolver final : public Solver {
   void snapshot(Snapshot& out, bool with_contacts) const override;
   void save_state(SolverState& out) const override;
   void load_state(const SolverState& in) override;
+  /// Every rank writes its slice of the file side by side (mpi/parallel_checkpoint.cpp).
+  void save_checkpoint(const std::filesystem::path& file, const CheckpointMeta& meta,
+                       Checkpoint& scratch) const override;
   EnergyBudget energy() const override;
   std::int64_t step() const override { return local_->solver().step(); }
   double time() const override { return local_->solver().time(); }
@@ -77,7 +82,16 @@ class MpiSolver final : public Solver {
   bool serve();
 
  private:
-  enum Command : long long { kAdvance = 1, kSnapshot, kSave, kLoad, kEnergy, kStop, kAbort };
+  enum Command : long long {
+    kAdvance = 1,
+    kSnapshot,
+    kSave,
+    kLoad,
+    kEnergy,
+    kCheckpoint,
+    kStop,
+    kAbort
+  };
   /// backend = "auto" (collective): whether the ranks run on GPUs.
   bool auto_takes_gpus(const Scene& scene, const ParticleModel& model) const;
   void order(Command c, long long arg) const;
@@ -90,8 +104,20 @@ class MpiSolver final : public Solver {
   void finish_exchange();
   void poll_exchange();
   bool drifted() const;
+  /// What this rank reports of its local solver's state `ls` (indices into it): its own
+  /// particles, the pairs it is the authority for, its bodies and its bonds.
+  struct Reported {
+    std::vector<std::size_t> particles, pairs, bodies, bonds;
+  };
+  Reported reported(const SolverState& ls) const;
   /// The whole state on every rank (collective).
   void gather_state(SolverState& out) const;
+  /// Collective: this rank's part of checkpoint `file` (its name and `meta` on rank 0 only,
+  /// null on the others). The ranks send each particle, pair, body and bond to the rank
+  /// whose slice of the file holds it (slices by id), and each writes its slice of every
+  /// array where the file has it (io/checkpoint/checkpoint_pieces.hpp, mpi/shared_file.hpp):
+  /// the bytes one rank writes, and no rank holds more than its slice.
+  void write_checkpoint_part(const std::filesystem::path* file, const CheckpointMeta* meta) const;
   /// A new plan and local solver from the whole state (collective).
   void decompose(const SolverState& whole);
   void build_local(const SolverState& whole);
@@ -180,6 +206,9 @@ class MpiSolver final : public Solver {
   StageTimes earlier_times_;  ///< of the local solvers replaced by new plans
   std::int64_t plans_ = 0;
   double bandwidth_ = 0;  ///< bytes/s of the first exchange
+  // Checkpoints written side by side: how many, their bytes and seconds (rank 0's clock).
+  mutable std::int64_t checkpoints_ = 0;
+  mutable double checkpoint_bytes_ = 0, checkpoint_seconds_ = 0;
   std::string library_;
   mutable SolverState scratch_state_;
   mutable Snapshot scratch_snapshot_;

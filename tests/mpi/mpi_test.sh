@@ -3,12 +3,14 @@
 # usage: mpi_test.sh TRIDEM WORK_DIR MODE ARGS...
 #   parity NP SCENE [tridem run options]: the output directory of NP ranks equals that of
 #                  one rank byte for byte (final.csv, energy.csv, walls.csv, frames,
-#                  contacts, checkpoint)
+#                  contacts, checkpoint), the checkpoint written by the NP ranks
 #   restart FROM TO SCENE STEPS: FROM ranks run to STEPS, TO ranks continue from its
 #                  checkpoint to the scene's end; equal to one uninterrupted rank
 #   blowup NP SCENE: the run fails on every rank, exit 1 with one message (the one-rank
 #                  message), and last_good.ckpt, final.csv as one rank leaves them
 #   refused NP PATTERN SCENE [tridem run options]: exit 1, one "error:" line, with PATTERN
+#   checkpoint-fails NP SCENE: the checkpoint cannot be written: exit 1, one "error:" line
+#                  naming the file
 #   refused-without-gpu NP PATTERN SCENE [options]: refused, on a machine without a GPU
 #                  (exit 77, skipped, where nvidia-smi lists one)
 #   parity-without-gpu NP SCENE [options]: parity, on a machine without a GPU (skipped
@@ -36,6 +38,11 @@ case "$mode" in
       # EXPECT_START: what the start line must say (how the ranks cut the scene, on what).
       [ -z "${EXPECT_START:-}" ] || grep -qF "$EXPECT_START" "$work/many.log" ||
         fail "the start line does not say '$EXPECT_START': $(head -3 "$work/many.log")"
+      # Checkpoints are written by every rank, each its slice (mpi/parallel_checkpoint.cpp).
+      if [ -f "$work/one/checkpoint.ckpt" ]; then
+        grep -qE "checkpoints? written by the $np ranks side by side" "$work/many.log" ||
+          fail "the checkpoint was not written by the $np ranks: $(grep plans "$work/many.log")"
+      fi
     fi
     diff -r "$work/one" "$work/many" || fail "$np ranks differ from one rank"
     grep "plans" "$work/many.log"
@@ -82,6 +89,19 @@ case "$mode" in
       cmp "$work/one/$f" "$work/many/$f" || fail "$f differs from one rank's"
     done
     echo "$np ranks stop with one rank's message: $(grep '^error: ' "$work/many.err" | cut -c1-120)"
+    ;;
+  checkpoint-fails)
+    # The checkpoint's temporary file cannot be made (a directory is in its place, which
+    # stops root too): every rank stops with one message naming it, none hangs.
+    np=$1 scene=$2
+    mkdir -p "$work/many/checkpoint.ckpt.tmp"
+    ranks "$np" run "$scene" --out "$work/many" --quiet >"$work/many.log" 2>"$work/many.err"
+    code=$?
+    [ "$code" = 1 ] || fail "exit code $code, expected 1 (124: a rank hung) :: $(cat "$work/many.err")"
+    [ "$(grep -c '^error: ' "$work/many.err")" = 1 ] || fail "not one message: $(cat "$work/many.err")"
+    grep -q "checkpoint.ckpt.tmp" "$work/many.err" || fail "the message does not name the file: $(cat "$work/many.err")"
+    [ ! -e "$work/many/checkpoint.ckpt" ] || fail "a checkpoint was left"
+    echo "$np ranks stop with one message: $(grep '^error: ' "$work/many.err" | cut -c1-160)"
     ;;
   refused-without-gpu | parity-without-gpu)
     if nvidia-smi -L >/dev/null 2>&1; then echo "SKIP: this machine has a GPU"; exit 77; fi

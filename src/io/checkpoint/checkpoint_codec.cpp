@@ -1,10 +1,12 @@
 // encode_checkpoint / decode_checkpoint: the layout of format.hpp, and every check a
 // file must pass before its numbers are trusted.
 #include "io/checkpoint/byte_codec.hpp"
+#include "io/checkpoint/checkpoint_pieces.hpp"
 #include "io/checkpoint/crc32.hpp"
 #include "io/checkpoint/format.hpp"
 #include "tridem/checkpoint.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -14,14 +16,8 @@ namespace fmt_ = checkpoint_format;
 
 namespace {
 
-void put(io::ByteWriter& w, double v) { w.f64(v); }
-void put(io::ByteWriter& w, std::int32_t v) { w.i32(v); }
 void get(io::ByteReader& r, double& v, const char* what) { v = r.f64(what); }
 void get(io::ByteReader& r, std::int32_t& v, const char* what) { v = r.i32(what); }
-
-void put_u32_at(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
-  for (int k = 0; k < 4; ++k) bytes[at + k] = static_cast<std::uint8_t>(v >> (8 * k));
-}
 
 std::uint32_t header_crc(std::span<const std::uint8_t> bytes) {
   return io::crc32(bytes.first(fmt_::kHeaderCrcOffset));
@@ -157,53 +153,24 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version
 }  // namespace
 
 std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
+  // One writer holding one slice of everything (checkpoint_pieces.hpp).
   const SolverState& s = c.state;
-  const std::size_t n = s.size(), m = s.pairs();
-  std::vector<std::uint8_t> payload;
-  payload.reserve(fmt_::fixed_payload_size(n) + s.bodies() * fmt_::kBytesPerBody +
-                  s.bonds() * fmt_::kBytesPerBond + m * fmt_::kBytesPerPair);
-  io::ByteWriter p(payload);
-  p.i64(s.step);
-  p.f64(s.time);
-  p.u32(static_cast<std::uint32_t>(c.meta.settings.size()));
-  for (const PhysicsSetting& setting : c.meta.settings) {
-    p.text(setting.key);
-    p.text(setting.value);
-  }
-  SolverState::for_each_field([&](auto field) {
-    for_each_array(s.column(field), [&](const std::vector<double>& v, int) {
-      for (double value : v) put(p, value);
-      if (decltype(field)::role == FieldRole::Sum)  // empty: zeros
-        for (std::size_t i = v.size(); i < n; ++i) put(p, 0.0);
-    });
-  });
-  p.u64(s.bodies());
-  SolverState::for_each_body_column([&](auto field) {
-    for (double value : s.column(field)) put(p, value);
-  });
-  p.u64(s.bonds());
-  for (double value : s.bond_damage) put(p, value);
-  for (double value : s.bond_dissipated) put(p, value);
-  p.u64(m);
-  for_each_pair_history_field([&](auto field) {
-    for (const auto& value : s.column(field)) {
-      if constexpr (decltype(field)::count == 1) put(p, value);
-      else for (auto v : value) put(p, v);
-    }
-  });
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(fmt_::kHeaderSize + payload.size());
-  io::ByteWriter h(bytes);
-  for (char ch : fmt_::kMagic) bytes.push_back(static_cast<std::uint8_t>(ch));
-  h.u32(fmt_::kVersion);
-  h.u32(c.meta.precision == Precision::Float ? 1 : 0);
-  h.u64(n);
-  h.u64(c.meta.scene_hash);
-  h.u64(payload.size());
-  h.u32(io::crc32(payload));
-  h.u32(0);  // header checksum, filled below
-  put_u32_at(bytes, fmt_::kHeaderCrcOffset, header_crc(bytes));
-  bytes.insert(bytes.end(), payload.begin(), payload.end());
+  const std::vector<std::uint8_t> opening =
+      checkpoint_pieces::encode_opening(c.meta, s.step, s.time);
+  const checkpoint_pieces::Counts total{s.size(), s.bodies(), s.bonds(), s.pairs()};
+  const std::uint64_t size = checkpoint_pieces::payload_size(opening.size(), total);
+  std::vector<std::uint8_t> bytes(fmt_::kHeaderSize + size);
+  const std::span<std::uint8_t> payload = std::span(bytes).subspan(fmt_::kHeaderSize);
+  std::copy(opening.begin(), opening.end(), payload.begin());
+  checkpoint_pieces::encode_slice(s, {}, total, opening.size(), true,
+                                  [&](std::uint64_t offset, std::span<const std::uint8_t> piece) {
+                                    std::copy(piece.begin(), piece.end(),
+                                              payload.begin() +
+                                                  static_cast<std::ptrdiff_t>(offset));
+                                  });
+  const std::vector<std::uint8_t> header =
+      checkpoint_pieces::encode_header(c.meta, s.size(), size, io::crc32(payload));
+  std::copy(header.begin(), header.end(), bytes.begin());
   return bytes;
 }
 

@@ -4,6 +4,7 @@
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
 #include "tridem/setting_names.hpp"
+#include "tridem/solver.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -14,6 +15,13 @@ namespace tridem {
 
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& checkpoint) {
   io::write_file_atomically(file, encode_checkpoint(checkpoint));
+}
+
+void Solver::save_checkpoint(const std::filesystem::path& file, const CheckpointMeta& meta,
+                             Checkpoint& scratch) const {
+  save_state(scratch.state);
+  scratch.meta = meta;
+  write_checkpoint(file, scratch);
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& file) {

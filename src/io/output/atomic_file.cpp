@@ -78,9 +78,13 @@ void write_file_atomically(const std::filesystem::path& file,
   TemporaryFile temporary(temporary_path(file));
   temporary.write(bytes, fault);
   temporary.sync_and_close();
+  replace_with_temporary(file);
+  temporary.keep();
+}
+
+void replace_with_temporary(const std::filesystem::path& file) {
   if (std::rename(temporary_path(file).c_str(), file.c_str()) != 0)
     fail("cannot replace", file, errno);
-  temporary.keep();
   sync_directory(file.parent_path());
 }
 

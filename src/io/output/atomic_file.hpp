@@ -24,4 +24,9 @@ void write_file_atomically(const std::filesystem::path& file,
 /// The temporary file write_file_atomically uses for `file`.
 std::filesystem::path temporary_path(const std::filesystem::path& file);
 
+/// The last move of write_file_atomically, for a temporary file written and synced by other
+/// means (the MPI ranks' checkpoint): renames temporary_path(file) over `file` and syncs
+/// the directory. Throws RunError naming `file` and the system's reason.
+void replace_with_temporary(const std::filesystem::path& file);
+
 }  // namespace tridem::io
