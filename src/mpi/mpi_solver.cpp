@@ -435,6 +435,62 @@ typename MpiSolver<Real>::Reported MpiSolver<Real>::reported(const SolverState& 
 }
 
 template <class Real>
+void MpiSolver<Real>::pack_particle(std::vector<double>& to, const SolverState& ls,
+                                    std::size_t k) const {
+  to.push_back(global_[k]);
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(ls.column(field), [&](const std::vector<double>& v, int) {
+      to.push_back(v.empty() ? 0.0 : v[k]);
+    });
+  });
+}
+
+template <class Real>
+void MpiSolver<Real>::pack_pair(std::vector<double>& to, const SolverState& ls,
+                                std::size_t p) const {
+  to.push_back(global_[static_cast<std::size_t>(ls.pair_emitter[p])]);
+  to.push_back(global_[static_cast<std::size_t>(ls.pair_partner[p])]);
+  for (double s : ls.pair_slip[p]) to.push_back(s);
+}
+
+template <class Real>
+void MpiSolver<Real>::pack_body(std::vector<double>& to, const SolverState& ls,
+                                std::size_t b) const {
+  to.push_back(global_body_[b]);
+  SolverState::for_each_body_column([&](auto field) { to.push_back(ls.column(field)[b]); });
+}
+
+template <class Real>
+void MpiSolver<Real>::pack_bond(std::vector<double>& to, const SolverState& ls,
+                                std::size_t k) const {
+  constexpr std::size_t kPoints = SolverState::kBondStatePoints;
+  to.push_back(global_bond_[k]);
+  for (std::size_t q = 0; q < kPoints; ++q) to.push_back(ls.bond_damage[kPoints * k + q]);
+  to.push_back(ls.bond_dissipated[k]);
+}
+
+template <class Real>
+typename MpiSolver<Real>::PairRecord MpiSolver<Real>::read_pair(const std::vector<double>& from,
+                                                                std::size_t& at) {
+  PairRecord r{as_id(from[at]), as_id(from[at + 1]), {}};
+  at += 2;
+  for (double& s : std::get<2>(r)) s = from[at++];
+  return r;
+}
+
+template <class Real>
+void MpiSolver<Real>::append_sorted(std::vector<PairRecord>& pairs, SolverState& out) {
+  std::sort(pairs.begin(), pairs.end(), [](const PairRecord& a, const PairRecord& b) {
+    return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
+  });
+  for (const auto& [e, j, slip] : pairs) {
+    out.pair_emitter.push_back(e);
+    out.pair_partner.push_back(j);
+    out.pair_slip.push_back(slip);
+  }
+}
+
+template <class Real>
 void MpiSolver<Real>::gather_state(SolverState& out) const {
   SolverState& ls = scratch_state_;
   local_->solver().save_state(ls);
@@ -444,31 +500,13 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
   mine.push_back(static_cast<double>(own.pairs.size()));
   mine.push_back(static_cast<double>(own.bodies.size()));
   mine.push_back(static_cast<double>(own.bonds.size()));
-  for (std::size_t k : own.particles) {
-    mine.push_back(global_[k]);
-    SolverState::for_each_field([&](auto field) {
-      for_each_array(ls.column(field), [&](const std::vector<double>& v, int) {
-        mine.push_back(v.empty() ? 0.0 : v[k]);
-      });
-    });
-  }
-  for (std::size_t p : own.pairs) {
-    mine.push_back(global_[static_cast<std::size_t>(ls.pair_emitter[p])]);
-    mine.push_back(global_[static_cast<std::size_t>(ls.pair_partner[p])]);
-    for (double s : ls.pair_slip[p]) mine.push_back(s);
-  }
-  for (std::size_t b : own.bodies) {
-    mine.push_back(global_body_[b]);
-    SolverState::for_each_body_column([&](auto field) { mine.push_back(ls.column(field)[b]); });
-  }
-  constexpr std::size_t kPoints = SolverState::kBondStatePoints;
-  for (std::size_t k : own.bonds) {
-    mine.push_back(global_bond_[k]);
-    for (std::size_t q = 0; q < kPoints; ++q) mine.push_back(ls.bond_damage[kPoints * k + q]);
-    mine.push_back(ls.bond_dissipated[k]);
-  }
+  for (std::size_t k : own.particles) pack_particle(mine, ls, k);
+  for (std::size_t p : own.pairs) pack_pair(mine, ls, p);
+  for (std::size_t b : own.bodies) pack_body(mine, ls, b);
+  for (std::size_t k : own.bonds) pack_bond(mine, ls, k);
   const std::vector<double> all = collect(comm_, mine, true);
 
+  constexpr std::size_t kPoints = SolverState::kBondStatePoints;
   out = SolverState{};
   out.step = ls.step;
   out.time = ls.time;
@@ -479,8 +517,7 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
       [&](auto field) { out.column(field).assign(model_.bodies.size(), 0.0); });
   out.bond_damage.assign(kPoints * scene_.bonds.size(), 0.0);
   out.bond_dissipated.assign(scene_.bonds.size(), 0.0);
-  using Slip = std::decay_t<decltype(out.pair_slip[0])>;
-  std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
+  std::vector<PairRecord> history;
   std::size_t at = 0;
   while (at < all.size()) {
     const auto particles = static_cast<std::size_t>(all[at]),
@@ -494,13 +531,7 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
         for_each_array(out.column(field), [&](std::vector<double>& v, int) { v[g] = all[at++]; });
       });
     }
-    for (std::size_t q = 0; q < rank_pairs; ++q) {
-      Slip slip{};
-      const std::int32_t e = as_id(all[at]), j = as_id(all[at + 1]);
-      at += 2;
-      for (double& s : slip) s = all[at++];
-      history.emplace_back(e, j, slip);
-    }
+    for (std::size_t q = 0; q < rank_pairs; ++q) history.push_back(read_pair(all, at));
     for (std::size_t q = 0; q < rank_bodies; ++q) {
       const auto gb = static_cast<std::size_t>(all[at++]);
       SolverState::for_each_body_column([&](auto field) { out.column(field)[gb] = all[at++]; });
@@ -511,14 +542,7 @@ void MpiSolver<Real>::gather_state(SolverState& out) const {
       out.bond_dissipated[gk] = all[at++];
     }
   }
-  std::sort(history.begin(), history.end(), [](const auto& a, const auto& b) {
-    return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
-  });
-  for (const auto& [e, j, slip] : history) {
-    out.pair_emitter.push_back(e);
-    out.pair_partner.push_back(j);
-    out.pair_slip.push_back(slip);
-  }
+  append_sorted(history, out);
 }
 
 template <class Real>

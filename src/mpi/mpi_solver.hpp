@@ -35,6 +35,7 @@
 #include <memory>
 #include <mpi.h>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace tridem::mpi {
@@ -110,6 +111,20 @@ class MpiSolver final : public Solver {
     std::vector<std::size_t> particles, pairs, bodies, bonds;
   };
   Reported reported(const SolverState& ls) const;
+  /// The records gather_state and the parallel checkpoint send, appended to `to`: local
+  /// particle k of `ls` (global id, then its checkpointed fields), pair p (global emitter and
+  /// partner, then its slips), body b (global body, then its fields), bond k (its index in
+  /// the scene, its points' damage, its released energy).
+  void pack_particle(std::vector<double>& to, const SolverState& ls, std::size_t k) const;
+  void pack_pair(std::vector<double>& to, const SolverState& ls, std::size_t p) const;
+  void pack_body(std::vector<double>& to, const SolverState& ls, std::size_t b) const;
+  void pack_bond(std::vector<double>& to, const SolverState& ls, std::size_t k) const;
+  /// A pair record (pack_pair) read from `from` at `at`, which it advances.
+  using PairRecord =
+      std::tuple<std::int32_t, std::int32_t, decltype(SolverState::pair_slip)::value_type>;
+  static PairRecord read_pair(const std::vector<double>& from, std::size_t& at);
+  /// `pairs` sorted by (emitter, partner), appended to out's contact history.
+  static void append_sorted(std::vector<PairRecord>& pairs, SolverState& out);
   /// The whole state on every rank (collective).
   void gather_state(SolverState& out) const;
   /// Collective: this rank's part of checkpoint `file` (its name and `meta` on rank 0 only,

@@ -90,7 +90,6 @@ void MpiSolver<Real>::write_checkpoint_part(const std::filesystem::path* file,
                      slice_start(total.bodies, rank_ + 1, ranks_) - first.bodies,
                      slice_start(total.bonds, rank_ + 1, ranks_) - first.bonds, 0};
   constexpr std::size_t kPoints = SolverState::kBondStatePoints;
-  using Slip = std::decay_t<decltype(std::declval<SolverState>().pair_slip[0])>;
 
   // What this rank reports, each record to the rank whose slice holds it: a particle's,
   // body's and bond's by its id, a pair's by its emitter's.
@@ -100,37 +99,24 @@ void MpiSolver<Real>::write_checkpoint_part(const std::filesystem::path* file,
   agreed(comm_, [&] {
     local_->solver().save_state(ls);
     const Reported own = reported(ls);
-    for (std::size_t k : own.particles) {
-      auto& to = particles[static_cast<std::size_t>(
-          slice_of(static_cast<std::uint64_t>(global_[k]), total.particles, ranks_))];
-      to.push_back(global_[k]);
-      SolverState::for_each_field([&](auto field) {
-        for_each_array(ls.column(field), [&](const std::vector<double>& v, int) {
-          to.push_back(v.empty() ? 0.0 : v[k]);
-        });
-      });
-    }
-    for (std::size_t p : own.pairs) {
-      const std::int32_t e = global_[static_cast<std::size_t>(ls.pair_emitter[p])];
-      auto& to = pairs[static_cast<std::size_t>(
-          slice_of(static_cast<std::uint64_t>(e), total.particles, ranks_))];
-      to.push_back(e);
-      to.push_back(global_[static_cast<std::size_t>(ls.pair_partner[p])]);
-      for (double s : ls.pair_slip[p]) to.push_back(s);
-    }
-    for (std::size_t b : own.bodies) {
-      auto& to = bodies[static_cast<std::size_t>(
-          slice_of(static_cast<std::uint64_t>(global_body_[b]), total.bodies, ranks_))];
-      to.push_back(global_body_[b]);
-      SolverState::for_each_body_column([&](auto field) { to.push_back(ls.column(field)[b]); });
-    }
-    for (std::size_t k : own.bonds) {
-      auto& to = bonds[static_cast<std::size_t>(
-          slice_of(static_cast<std::uint64_t>(global_bond_[k]), total.bonds, ranks_))];
-      to.push_back(global_bond_[k]);
-      for (std::size_t q = 0; q < kPoints; ++q) to.push_back(ls.bond_damage[kPoints * k + q]);
-      to.push_back(ls.bond_dissipated[k]);
-    }
+    for (std::size_t k : own.particles)
+      pack_particle(particles[static_cast<std::size_t>(
+                        slice_of(static_cast<std::uint64_t>(global_[k]), total.particles, ranks_))],
+                    ls, k);
+    for (std::size_t p : own.pairs)
+      pack_pair(
+          pairs[static_cast<std::size_t>(slice_of(
+              static_cast<std::uint64_t>(global_[static_cast<std::size_t>(ls.pair_emitter[p])]),
+              total.particles, ranks_))],
+          ls, p);
+    for (std::size_t b : own.bodies)
+      pack_body(bodies[static_cast<std::size_t>(
+                    slice_of(static_cast<std::uint64_t>(global_body_[b]), total.bodies, ranks_))],
+                ls, b);
+    for (std::size_t k : own.bonds)
+      pack_bond(bonds[static_cast<std::size_t>(
+                    slice_of(static_cast<std::uint64_t>(global_bond_[k]), total.bonds, ranks_))],
+                ls, k);
   });
   const std::vector<double> got_particles = send_each(comm_, particles),
                             got_pairs = send_each(comm_, pairs),
@@ -157,22 +143,9 @@ void MpiSolver<Real>::write_checkpoint_part(const std::filesystem::path* file,
       });
     }
     expect_all(seen, "particles");
-    std::vector<std::tuple<std::int32_t, std::int32_t, Slip>> history;
-    for (std::size_t at = 0; at < got_pairs.size();) {
-      Slip slip{};
-      const std::int32_t e = as_id(got_pairs[at]), j = as_id(got_pairs[at + 1]);
-      at += 2;
-      for (double& s : slip) s = got_pairs[at++];
-      history.emplace_back(e, j, slip);
-    }
-    std::sort(history.begin(), history.end(), [](const auto& a, const auto& b) {
-      return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
-    });
-    for (const auto& [e, j, slip] : history) {
-      part.pair_emitter.push_back(e);
-      part.pair_partner.push_back(j);
-      part.pair_slip.push_back(slip);
-    }
+    std::vector<PairRecord> history;
+    for (std::size_t at = 0; at < got_pairs.size();) history.push_back(read_pair(got_pairs, at));
+    append_sorted(history, part);
     seen.assign(count.bodies, 0);
     SolverState::for_each_body_column(
         [&](auto field) { part.column(field).assign(count.bodies, 0.0); });
