@@ -14,6 +14,10 @@ rm -rf "$dest"
 mkdir -p "$dest/lib" "$dest/app" "$dest/bench" "$dest/tests"
 cp "$build/app/tridem" "$dest/app/"
 cp "$build/bench/tridem_bench" "$build/bench/tridem_paper_bench" "$dest/bench/"
+# Tuning builds of the benchmark put beside it by hand (bench/compare_builds.sh NAME...).
+for variant in "$build"/bench/tridem_bench_*; do
+  if [ -x "$variant" ]; then cp "$variant" "$dest/bench/"; fi
+done
 # The live view's benchmark client (bench/live/run_live_bench.sh), where the build has it.
 if [ -x "$build/bench/tridem_live_client" ]; then cp "$build/bench/tridem_live_client" "$dest/bench/"; fi
 # The frame output benchmark (bench/frame_bench.cpp), where the build has it.
