@@ -10,6 +10,7 @@
 
 namespace tridem::mpi {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(MpiDeviceChoice, RanksOfANodeShareItsGpusRoundRobin) {
   // One GPU: every rank on it (the H200 machine's 2 ranks sharing one GPU).
@@ -99,5 +100,6 @@ TEST(MpiRefusal, WhatBodiesOnCpuRanksCannotDo) {
   EXPECT_EQ(refusal(scene, model), "");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::mpi

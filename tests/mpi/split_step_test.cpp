@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// f(array) for each State array of the solver (x, y, theta, vx, vy, w).
 template <class Real, class F>
@@ -148,5 +149,6 @@ TEST(MpiSplitStep, OnlyTheGridWithoutAPeriodicCellAndWithASkinSplitsItsStep) {
   EXPECT_FALSE(splits(no_skin));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

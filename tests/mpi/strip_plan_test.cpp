@@ -10,6 +10,7 @@
 
 namespace tridem::mpi {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 StripInput cloud(std::size_t n, double width, double height, int ranks, unsigned seed) {
   std::mt19937 rng(seed);
@@ -196,5 +197,6 @@ TEST(MpiStripPlan, UnderShearTheStripsAreCutAlongY) {
   EXPECT_EQ(plan_strips(in).axis, 1);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::mpi

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(CpuParity, OpenMPReproducesSerialBitForBit) {
   const Scene s = test::jostling_pile(20, 12);
@@ -148,5 +149,6 @@ TEST(CpuParity, FloatStaysCloseToDoubleOverShortRun) {
   test::expect_float_follows_double(s, 50, test::run_to(s, Backend::Cpu, 50, Precision::Float));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

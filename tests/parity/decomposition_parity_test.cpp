@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 struct RunResult {
   Snapshot snap;
@@ -149,5 +150,6 @@ TEST(DecompositionParity, DirectAreaTestMissesTheEdgeCrossingPair) {
   EXPECT_EQ(direct.snap.fx[0], 0.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

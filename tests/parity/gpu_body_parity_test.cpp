@@ -18,6 +18,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// The largest difference of the bodies' own columns.
 test::Difference body_difference(const Snapshot& a, const Snapshot& b) {
@@ -136,5 +137,6 @@ TEST(GpuBodyParityAllPairs, CollidingBodiesAgreeWithSerial) {
   EXPECT_GT(contacts, 0u) << "the bodies must collide";
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 void expect_bonds_agree(const test::SolverChoice& choice, const Scene& scene, std::int64_t steps,
                         std::int64_t every) {
@@ -65,5 +66,6 @@ TEST(GpuBondParityAllPairs, LoadedDiscAgreesWithSerial) {
                      100);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

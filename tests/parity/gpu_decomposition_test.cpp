@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 void expect_agrees_with_serial(const Scene& s, std::int64_t steps, const char* what) {
   const Snapshot cpu = test::run_to(s, Backend::Cpu, steps);
@@ -123,5 +124,6 @@ TEST(GpuDecomposition, CapacityBeyondSharedMemoryIsRefused) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(GpuMeasurements, ContactFieldsAndMeasurementsAgreeWithSerial) {
   TRIDEM_SKIP_WITHOUT_GPU();
@@ -61,5 +62,6 @@ TEST(GpuMeasurements, ContactFieldsAndMeasurementsAgreeWithSerial) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

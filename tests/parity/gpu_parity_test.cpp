@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_agreement;
 
@@ -121,5 +122,6 @@ TEST(GpuParity, BlowUpKeepsTheLastGoodState) {
   EXPECT_EQ(before.vx, after.vx);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

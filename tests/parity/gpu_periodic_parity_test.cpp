@@ -19,6 +19,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_agreement;
 
@@ -133,5 +134,6 @@ TEST(GpuPeriodic, AutoBackendRunsPeriodicScenesOnTheGpu) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

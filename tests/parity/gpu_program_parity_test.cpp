@@ -20,6 +20,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 void expect_programs_agree(const test::SolverChoice& choice, const Scene& scene, std::int64_t steps,
                            std::int64_t every) {
@@ -100,5 +101,6 @@ TEST_P(GpuProgramParity, ServoFollowingALengthAgreesWithSerial) {
 INSTANTIATE_TEST_SUITE_P(Gpu, GpuProgramParity,
                          TRIDEM_DOUBLE_SOLVER_CHOICES(::tridem::Backend::Cuda));
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

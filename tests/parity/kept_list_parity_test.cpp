@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 struct KeptListCase {
   const char* name;
@@ -116,5 +117,6 @@ TEST(KeptPairListRestart, ALoadedStateContinuesWithTheSameBits) {
   test::expect_identical(a, b);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

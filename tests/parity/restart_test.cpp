@@ -18,6 +18,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr std::int64_t kSteps = 400;
 
@@ -306,5 +307,6 @@ TEST(Restart, StateAtStepZeroHasNoHistory) {
   EXPECT_EQ(s.size(), solver->size());
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

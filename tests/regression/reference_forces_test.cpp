@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using namespace physics;
 
@@ -59,5 +60,6 @@ TEST(Regression, PairForcesMatchReferenceData) {
   EXPECT_EQ(cases, 40);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

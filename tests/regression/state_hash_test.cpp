@@ -24,6 +24,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// A CUDA entry not yet measured on a GPU: the test fails there and prints the hash.
 constexpr std::uint64_t kToBeRecorded = 0;
@@ -169,5 +170,6 @@ INSTANTIATE_TEST_SUITE_P(Cpu, StateHash,
                          ::testing::ValuesIn(runs({Backend::Cpu, Backend::OpenMP})));
 INSTANTIATE_TEST_SUITE_P(Gpu, StateHash, ::testing::ValuesIn(runs({Backend::Cuda})));
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

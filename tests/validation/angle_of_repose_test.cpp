@@ -24,6 +24,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr double kD = 0.01;  ///< grain diameter (pentagon's circumscribed circle: 0.9 kD), m
 constexpr double kPlatform = 16 * kD;   ///< width of the platform, m
@@ -198,5 +199,6 @@ TEST(AngleOfRepose, PentagonsStandSteeperThanDiscsOfTwelveTriangles) {
                                                 << report("discs", discs);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(AngularDrumExample, DrumTurnsAndHoldsItsGrains) {
   Scene s = read_scene(std::string(TRIDEM_SOURCE_DIR) + "/examples/angular_drum.toml");
@@ -76,5 +77,6 @@ TEST(AngularDrumExample, DrumTurnsAndHoldsItsGrains) {
   EXPECT_GT(fastest, 0.01);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

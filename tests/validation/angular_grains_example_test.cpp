@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(AngularGrainsExample, GrainsAreBodiesOfTheTableAndStayInTheBox) {
   Scene s = read_scene(std::string(TRIDEM_SOURCE_DIR) + "/examples/angular_grains.toml");
@@ -45,5 +46,6 @@ TEST(AngularGrainsExample, GrainsAreBodiesOfTheTableAndStayInTheBox) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -20,6 +20,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // walls.csv: step,time,id,fx,fy,torque,x,y,vx,vy (docs/output-format.md).
 struct WallRow {
@@ -125,5 +126,6 @@ TEST(BiaxialExample, ServosHoldTheConfiningStressAndTheFrictionAngleIsPlausible)
   EXPECT_LT(phi_end, 45.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

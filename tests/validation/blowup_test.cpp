@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// A vertex of particle 1 at (0.3, 0.3), where φ of particle 0 is 0.9.
 Scene deep_overlap() {
@@ -59,5 +60,6 @@ TEST(GpuBlowUp, DeepPenetrationGivesTheCpuMessage) {
   EXPECT_EQ(blow_up_message(s, Backend::Cuda), "");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

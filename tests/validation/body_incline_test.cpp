@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using BodyIncline = test::BackendTest;
 
@@ -99,5 +100,6 @@ INSTANTIATE_TEST_SUITE_P(Cpu, BodyIncline,
                          ::testing::Values(test::SolverChoice(Backend::Cpu),
                                            test::SolverChoice(Backend::OpenMP)));
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

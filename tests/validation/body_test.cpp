@@ -18,6 +18,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr const char* kHead =
     "[simulation]\nsteps = 1\ndt = 1e-6\n[[material]]\nname = \"m\"\ndensity = 2500\n"
@@ -239,11 +240,13 @@ TEST(Bodies, CheckpointHoldsTheBodies) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // relax_overlaps moves a body as one: two heptagons placed 2 mm into each other and the
 // first 1 mm into a fixed floor end apart and above the floor, each body translated by a
@@ -282,5 +285,6 @@ TEST(Bodies, RelaxOverlapsMovesEachBodyAsOne) {
     for (const Vec2d& v : scene.triangles[i].vertices) EXPECT_GE(v.y, -1e-9);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -28,6 +28,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // Two right triangles of legs 1 cm forming a square, bonded along its diagonal; b moves
 // away from a along the diagonal's normal at `speed` (each side half of it).
@@ -346,5 +347,6 @@ TEST(Bonds, CudaRunsABondedSceneOrSaysWhyNot) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -17,6 +17,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(BondedSpecimen, CompressionSlopeGivesTheYoungModulus) {
   const double width = 0.02, height = 0.04, size = 0.0025, young = 40e9;
@@ -167,5 +168,6 @@ TEST(BondedSpecimen, ThreePointBendingKeepsItsEnergyBudget) {
   EXPECT_LT(worst, 0.02);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // The finest mesh of the docs' study (2.5 mm: 20 elements across the diameter), flattened
 // by 20 degree flats, the platen at 0.1 m/s (0.3 m/s read 7% higher: not quasi-static);
@@ -37,11 +38,13 @@ TEST(BrazilianDisc, PeakForceGivesTheTensileStrength) {
   EXPECT_LT(r.steps, 60000) << "the force must fall after its peak (a crack), not run out";
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // The docs' mesh study (docs/fracture.md), too long for CI: run it with
 //   tridem_tests --gtest_also_run_disabled_tests --gtest_filter='*BrazilianMeshStudy*'
@@ -65,11 +68,13 @@ TEST(BrazilianDisc, DISABLED_BrazilianMeshStudy) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // The diagnosis behind docs/fracture.md's "Why the first disc was low": the force, the
 // disc's shortening near the poles and at mid-radius, and where bonds are damaged and
@@ -91,5 +96,6 @@ TEST(BrazilianDisc, DISABLED_Diagnosis) {
               r.sigma_t / r.tensile_strength);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Conservation = test::BackendTest;
 
@@ -76,5 +77,6 @@ TEST_P(Conservation, CollidingCloudConservesMomentum) {
 
 TRIDEM_INSTANTIATE_SOLVERS(Conservation);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using DirectAreaMiss = test::BackendTest;
 
@@ -78,5 +79,6 @@ TEST_P(DirectAreaMiss, ExactTestRepelsDirectAreaTestGivesNoForce) {
 INSTANTIATE_TEST_SUITE_P(Cpu, DirectAreaMiss, ::testing::Values(Backend::Cpu));
 INSTANTIATE_TEST_SUITE_P(Gpu, DirectAreaMiss, ::testing::Values(Backend::Cuda));
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

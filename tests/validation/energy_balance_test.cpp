@@ -20,6 +20,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// 80 grains thrown about in a box (up to 2 m/s), friction 0.4, damping 0.2, gravity;
 /// pushed apart first so that step 0 holds no contact energy.
@@ -175,5 +176,6 @@ TEST(EnergyBudget, OpenMPEqualsSerialBitForBit) {
   EXPECT_GT(a.dissipated_damping, 0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr const char* kScene =
     "[simulation]\nsteps = 1\ndt = 2e-5\n[[material]]\nname = \"m\"\ndensity = 2500\n"
@@ -69,5 +70,6 @@ TEST(FinalCsvRoundTrip, ReadingFinalCsvBackReproducesTheState) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Friction = test::BackendTest;
 
@@ -126,5 +127,6 @@ TEST_P(Friction, EquilateralGrainHoldsOnASlopeFlatterThanAtanMu) {
 
 TRIDEM_INSTANTIATE_SOLVERS(Friction);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

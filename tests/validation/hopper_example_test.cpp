@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 struct Hopper {
   Scene scene;
@@ -114,5 +115,6 @@ TEST(HopperExample, GateCarriesTheSettledGrainsBeforeItOpens) {
       << "at t = " << last_time << " s";
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

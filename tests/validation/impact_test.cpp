@@ -9,6 +9,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Impact = test::BackendTest;
 
@@ -52,5 +53,6 @@ TEST_P(Impact, DampingGivesPredictedRestitution) {
 
 TRIDEM_INSTANTIATE_SOLVERS(Impact);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -8,6 +8,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Incline = test::BackendTest;
 
@@ -58,5 +59,6 @@ TEST_P(Incline, BlockHoldsWhenFrictionExceedsSlope) {
 // Floors of 4 and 10 m under grains of 0.2 m: checked in double (backend_test.hpp).
 TRIDEM_INSTANTIATE_SOLVERS_IN_DOUBLE(Incline);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr double kShearRate = test::kGasShearRate;
 using test::sheared_gas;
@@ -135,5 +136,6 @@ TEST(LeesEdwards, EnergyBudgetClosesWithTheBoundarysWork) {
   EXPECT_LE(worst, 0.03 * dissipated);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

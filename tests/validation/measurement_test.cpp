@@ -17,6 +17,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr double kSqrt3 = 1.7320508075688772;
 
@@ -477,5 +478,6 @@ TEST(Measurements, StressOfAStaticPackingEqualsItsBoundaryTractions) {
               0.5 * (wall.bottom + wall.top) / w, m.sxy, txy / area);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

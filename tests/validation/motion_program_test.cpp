@@ -19,6 +19,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 constexpr double kDt = 1e-4;
 
@@ -225,5 +226,6 @@ TEST(MotionProgram, OpenMPReproducesSerialBitForBit) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -9,6 +9,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using MotionTest = test::BackendTest;  // not "Motion": that is the enum tridem::Motion
 
@@ -91,5 +92,6 @@ TEST_P(MotionTest, LocalDampingSettlesABouncingGrainFaster) {
 
 TRIDEM_INSTANTIATE_SOLVERS(MotionTest);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -18,6 +18,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // What a run of the beam to full fracture gives.
 struct BeamRun {
@@ -132,5 +133,6 @@ TEST(NotchedBeam, DISABLED_MeshAndRateStudy) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

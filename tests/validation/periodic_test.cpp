@@ -20,6 +20,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_same_collision;
 using test::grain;
@@ -271,11 +272,13 @@ TEST(PeriodicRefusal, SceneKeys) {
   EXPECT_EQ(ok.simulation.periodic.shear_rate, 3);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // The GPU's periodic pair list takes each pair's image at its build, exact in cells longer
 // than 8 reaches plus twice the skin (ARCHITECTURE.md); between that and the CPU's 4 reaches
@@ -313,5 +316,6 @@ TEST(PeriodicRefusal, GpuTestScenesAreLongEnoughForTheGpuList) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

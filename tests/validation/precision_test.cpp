@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using PrecisionTest = test::BackendTest;
 
@@ -150,5 +151,6 @@ TEST_P(PrecisionTest, FloatFollowsDoubleInASettlingPile) {
 
 TRIDEM_INSTANTIATE_SOLVERS(PrecisionTest);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

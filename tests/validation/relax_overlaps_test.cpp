@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// An equilateral grain of edge 0.1 m standing `sink` metres into a fixed floor.
 Scene grain_in_floor(double sink) {
@@ -116,5 +117,6 @@ TEST(RelaxOverlaps, RunScenePushesApartAndSaysWhat) {
       << text;
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -8,6 +8,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Resting = test::BackendTest;
 
@@ -39,5 +40,6 @@ TEST_P(Resting, TriangleComesToRestOnFixedFloor) {
 // Floors of 4 and 10 m under grains of 0.2 m: checked in double (backend_test.hpp).
 TRIDEM_INSTANTIATE_SOLVERS_IN_DOUBLE(Resting);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

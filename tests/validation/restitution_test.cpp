@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 enum class Shape { Face, Edge, Vertex };
 
@@ -90,5 +91,6 @@ TEST(Restitution, FaceEdgeAndVertexImpactsOverTwoDecades) {
       }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(RoundingTwin, WithoutKicksIsTheReferenceBitForBit) {
   bool skip = false;
@@ -61,5 +62,6 @@ TEST(RoundingTwin, SpreadOnTheLoadedDiscGrowsFromRoundingSize) {
   EXPECT_GT(late.velocity, 1e3 * early.velocity);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

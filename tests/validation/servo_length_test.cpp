@@ -17,6 +17,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::ServoBox;
 
@@ -125,5 +126,6 @@ TEST(ServoLength, StartsAtItsTargetOverTheStartingGap) {
   EXPECT_EQ(m.programs[0].length_axis.y, 1);  // from the floor up to the lid
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

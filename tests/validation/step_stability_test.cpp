@@ -19,6 +19,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 double critical_step(const Scene& s) {
   return estimate_time_step(s, build_particle_model(s)).critical;
@@ -240,5 +241,6 @@ TEST(StepStabilityScan, DISABLED_ThresholdOverAcceptedStep) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -25,6 +25,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// Not a power of two, so that every coordinate rounds otherwise.
 constexpr Vec2d kOffset{0.0123456789, 0.00987654321};
@@ -99,5 +100,6 @@ TEST(UnstableParity, FloatBondComparisonPassesOtherRoundingAndFailsWeakerBonds) 
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

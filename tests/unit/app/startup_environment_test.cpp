@@ -7,6 +7,7 @@
 
 namespace tridem::app {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using Changes = std::vector<std::pair<std::string, std::string>>;
 
@@ -41,5 +42,6 @@ TEST(StartupEnvironment, AnMpiRankKeepsItsWaitPolicyButGetsHugePages) {
         << launcher;
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::app

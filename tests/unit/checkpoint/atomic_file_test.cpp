@@ -9,6 +9,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Checkpoint checkpoint_at(std::int64_t step, std::size_t particles) {
   Checkpoint c;
@@ -46,5 +47,6 @@ TEST(AtomicCheckpoint, FailureNamesTheFile) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Checkpoint sample_checkpoint() {
   Checkpoint c;
@@ -359,5 +360,6 @@ TEST(CheckpointFile, AnotherPeriodicCellIsRefused) {
   refused(scene, "does not record [simulation] periodic_x");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

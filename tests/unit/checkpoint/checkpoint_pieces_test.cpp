@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace pieces = checkpoint_pieces;
 
@@ -160,5 +161,6 @@ TEST(CheckpointPieces, ASliceThatDoesNotFitIsAnInternalError) {
                RunError);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

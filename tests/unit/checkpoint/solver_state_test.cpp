@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::unique_ptr<Solver> three_particle_solver(const test::SolverChoice& choice) {
   Scene s = test::empty_scene();
@@ -96,5 +97,6 @@ INSTANTIATE_TEST_SUITE_P(Gpu, SolverStateLoad,
                          ::testing::Values(test::SolverChoice(Backend::Cuda),
                                            test::SolverChoice(Backend::Cuda, Method::SingleDomain)));
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(BondedPile, BondsEveryLatticeEdgeOfDensePile) {
   const Scene dense = dense_pile(1000), bonded = bonded_pile(1000);
@@ -70,5 +71,6 @@ TEST(BondedPile, BondsStayIntactThroughTheBenchmarksWindow) {
   EXPECT_EQ(solver->energy().dissipated_fracture, 0.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

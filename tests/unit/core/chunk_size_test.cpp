@@ -7,6 +7,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(ChunkSize, CutShortChunksDoNotGrow) {
   std::int64_t chunk = 1;
@@ -27,5 +28,6 @@ TEST(ChunkSize, SlowChunksShrinkToOne) {
   EXPECT_EQ(next_chunk(8, 8, 0.1), 8);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -22,6 +22,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 using test::BackendTest;
@@ -186,5 +187,6 @@ TEST_P(ContactCopyRunTest, WritesTheFilesOfContactsTakenWithTheSnapshot) {
 
 TRIDEM_INSTANTIATE_SOLVERS(ContactCopyRunTest);
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Scene two_grains(Backend backend) {
   Scene s = test::empty_scene();
@@ -74,5 +75,6 @@ TEST(GpuDeviceChoice, SolverRunsOnTheGpuItIsGiven) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

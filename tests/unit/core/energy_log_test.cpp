@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -92,5 +93,6 @@ TEST(EnergyLog, SceneKeyIsReadAndChecked) {
                        {"bad.toml:", "energy_every", "must be >= 0"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

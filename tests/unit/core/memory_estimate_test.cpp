@@ -22,6 +22,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Scene two_bonded_triangles() {
   Scene s;
@@ -163,5 +164,6 @@ TEST(GpuMemory, PairSlotsAreTheFirstListsCountAndAFifth) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

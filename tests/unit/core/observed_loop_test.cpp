@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// Lets the loop run at most `limit` steps between looks (0: as many as it likes) and
 /// records what it saw.
@@ -86,5 +87,6 @@ TEST(ObservedLoop, GoesStepByStepWhenTold) {
     EXPECT_EQ(seen[k], static_cast<std::int64_t>(k + 1));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(OmpTeam, NestedTeamCodeRunsOnTheCallersTeamAndSharesItsLoops) {
   constexpr int n = 1000;
@@ -101,5 +102,6 @@ TEST(OmpTeam, OutsideATeamItIsSerialCode) {
   EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4, 99}));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

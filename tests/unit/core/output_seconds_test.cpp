@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(OutputSeconds, PartsAreMeasuredAndMakeTheTotal) {
   test::TempDir dir;
@@ -57,5 +58,6 @@ TEST(OutputNotes, ContactsCsvOfALargeRunIsNamed) {
   EXPECT_EQ(output_notes(no_frames, 1000000), "");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -7,6 +7,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::string drawn(std::FILE* f) {
   std::fflush(f);
@@ -41,5 +42,6 @@ TEST(ProgressBar, SilentWhenDisabledOrBeforeTheQuietTime) {
   std::fclose(f);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -147,5 +148,6 @@ TEST(RunCheckpoint, RestartPastTheEndIsRefused) {
   EXPECT_THROW(run(s, 100, dir.path() / "checkpoint.ckpt"), RunError);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -14,6 +14,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::string scene_with(const std::string& length) {
   return fmt::format(R"(
@@ -87,5 +88,6 @@ TEST(RunLength, RunEndsAtTheFirstStepPastTheTime) {
   EXPECT_EQ(run_scene(apply_overrides(s, steps), o).steps, 3);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

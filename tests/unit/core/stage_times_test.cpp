@@ -16,6 +16,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::unique_ptr<Solver> pile_solver(Backend backend) {
   Scene s = test::jostling_pile(4, 3);
@@ -203,5 +204,6 @@ TEST(StageTimes, TableNamesEveryStageAndWhereFusedOnesWent) {
   EXPECT_EQ(stage_table(StageTimes{}), "");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::BackendTest;
 
@@ -87,5 +88,6 @@ TEST(StateCopy, SnapshotFallbackIsTheSnapshotToo) {
   expect_copy_of_this_step(*solver, *copy, 2);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

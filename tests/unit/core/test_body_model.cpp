@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::string scene_with(const std::string& body) {
   return "[simulation]\nsteps = 1\n[[material]]\nname = \"m\"\ndensity = 2500\n"
@@ -91,5 +92,6 @@ TEST(BodyModel, MembersStartWithTheRigidMotion) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

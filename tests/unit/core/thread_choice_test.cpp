@@ -8,6 +8,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // Runs `steps` steps with the given seconds per step on the threads and on one; returns the
 // seconds they took.
@@ -79,5 +80,6 @@ TEST(ThreadChoice, SerialAndPinnedSolversNeverChoose) {
   EXPECT_EQ(alternating.parallel_steps(), 250);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

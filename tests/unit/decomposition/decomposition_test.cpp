@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::PairSet;
 using test::TriangleCloud;
@@ -288,5 +289,6 @@ TEST(Decomposition, CapacityBelowTwoIsRefused) {
   EXPECT_THROW(make(c, DecompositionLayout::Strips, 1), SceneError);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

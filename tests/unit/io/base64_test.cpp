@@ -5,6 +5,7 @@
 
 namespace tridem::io {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::vector<std::uint8_t> bytes(std::string_view s) { return {s.begin(), s.end()}; }
 
@@ -40,5 +41,6 @@ TEST(Base64, DecodeRejectsBadInput) {
   EXPECT_THROW(base64_decode("TW=u", "test"), Error);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::io

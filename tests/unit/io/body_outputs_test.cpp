@@ -21,6 +21,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// Two free square bodies of two triangles each, side by side ([0, 1]² and [1, 2] × [0, 1],
 /// touching along x = 1), and a fixed lone triangle below them: bodies 0, 1 and 2,
@@ -344,5 +345,6 @@ TEST(BodyOutputs, RunWritesBodiesFinalAndFramesOfAKnownScene) {
   EXPECT_TRUE(std::filesystem::is_regular_file(tmp.path() / "frame.png"));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Snapshot with_bonds() {
   Snapshot s = test::sample_snapshot();
@@ -77,5 +78,6 @@ TEST(BondOutputs, NoBondFilesWithoutBonds) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() / "bonds.pvd"));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

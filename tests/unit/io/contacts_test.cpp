@@ -9,6 +9,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(Contacts, CsvHoldsEveryContact) {
   test::TempDir tmp;
@@ -110,5 +111,6 @@ TEST(Contacts, NotWrittenWhenSettingsSayNo) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() / "contacts"));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

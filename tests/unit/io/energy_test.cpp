@@ -4,6 +4,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Snapshot particles(std::size_t n) {
   Snapshot s;
@@ -55,5 +56,6 @@ TEST(ComputeEnergy, EmptyAndAllFixedGiveZero) {
   EXPECT_EQ(e.angular_momentum, 0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

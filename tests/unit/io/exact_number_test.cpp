@@ -13,6 +13,7 @@
 
 namespace tridem::io {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::uint64_t bits_of(double d) {
   std::uint64_t b;
@@ -54,5 +55,6 @@ TEST(ExactNumber, PrintsWhatFmtG17Prints) {
             "7,0.10000000000000001,-1.9999999999999999e-07");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::io

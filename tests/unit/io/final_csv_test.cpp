@@ -6,6 +6,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(FinalCsv, HeaderAndRowsRoundTrip) {
   test::TempDir tmp;
@@ -32,5 +33,6 @@ TEST(FinalCsv, InconsistentSnapshotIsRefused) {
   EXPECT_THROW(write_final_csv(tmp.path() / "final.csv", s), Error);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

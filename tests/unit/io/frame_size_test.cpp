@@ -19,6 +19,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -155,5 +156,6 @@ TEST(FrameSize, CompressedFloat32FrameReadsBackWithinFloatRoundOff) {
   expect_float_close(depth_read, depth, 0, "contact depth");
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -20,6 +20,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -228,5 +229,6 @@ TEST(FrameThread, FailureSurfacesAtTheNextHandOver) {
   EXPECT_THROW(out.write_frame_beside(next), RunError);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

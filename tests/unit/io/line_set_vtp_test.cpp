@@ -19,6 +19,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Snapshot with_bonds_and_contacts() {
   Snapshot s = test::sample_snapshot();  // its two contacts
@@ -102,5 +103,6 @@ TEST(LineSetVtp, FormerBondsFilesReadBack) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -5,6 +5,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(LogFiles, EnergyCsvHasOneRowPerLog) {
   test::TempDir tmp;
@@ -93,5 +94,6 @@ TEST(LogFiles, WallsCsvEndsWithTheWallsCentroidAndVelocity) {
             (std::vector<double>{0.125, -2.5, 0.75, -0.0625}));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

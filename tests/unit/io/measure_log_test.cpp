@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -139,5 +140,6 @@ TEST(MeasureLog, FramesWithoutContactsLeaveTheStressArraysOut) {
   EXPECT_GT(test::numbers(rows.back()).at(4), 0) << "the measure counted no contact";
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

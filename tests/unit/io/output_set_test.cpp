@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// Runs `make` and checks that it throws RunError whose message names `path`.
 template <class F>
@@ -176,5 +177,6 @@ TEST(OutFile, ErrorWhileFormattingRowsReachesTheCaller) {
   omp_set_num_threads(threads);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

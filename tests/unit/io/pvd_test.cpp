@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 struct Listed {
   double time;
@@ -80,5 +81,6 @@ TEST(Pvd, FailedReplacementNamesTheFileAndLeavesNoTemporary) {
   EXPECT_FALSE(std::filesystem::exists(io::temporary_path(pvd)));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

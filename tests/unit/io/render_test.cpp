@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 struct Pixel {
   int r, g, b;
@@ -170,5 +171,6 @@ TEST(Render, EmptySnapshotGivesABlankImage) {
   EXPECT_EQ(png.at(png.width() / 2, png.height() / 2), kWhite);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

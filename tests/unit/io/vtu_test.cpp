@@ -8,6 +8,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 void expect_round_trip(VtkFormat format) {
   test::TempDir tmp;
@@ -235,5 +236,6 @@ TEST_F(VtuAppendedMalformed, Base64AppendedData) {
 }
 TEST_F(VtuAppendedMalformed, UnclosedBlock) { expect_refused("</AppendedData>", "</Appended>"); }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

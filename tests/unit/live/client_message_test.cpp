@@ -7,6 +7,7 @@
 
 namespace tridem::live {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using K = ClientMessage::Kind;
 
@@ -55,5 +56,6 @@ TEST(LiveClientMessage, DropsOversizedMessagesUnread) {
   EXPECT_EQ(parse_client_message(longest).kind, K::Invalid);  // too many digits, but read
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::live

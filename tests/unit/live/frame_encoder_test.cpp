@@ -9,6 +9,7 @@
 
 namespace tridem::live {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// Triangle k: local vertices L_k turned by theta_k about centroid c_k. 0 and 1 free,
 /// 2 a fixed wall.
@@ -133,5 +134,6 @@ TEST(LiveFrameEncoder, RefillReusesTheBuffersAndNonFiniteValuesBecomeZeroOrNull)
   EXPECT_NE(stats.find("\"wall_fy\":8"), std::string::npos) << stats;
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::live

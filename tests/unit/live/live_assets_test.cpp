@@ -5,6 +5,7 @@
 
 namespace tridem::live {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(LiveAssets, ServesThePageByExactPath) {
   const auto index = find_asset("/");
@@ -30,5 +31,6 @@ TEST(LiveAssets, NoOtherPathIsServed) {
     EXPECT_FALSE(find_asset(path)) << path;
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::live

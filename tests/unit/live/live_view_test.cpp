@@ -17,6 +17,7 @@
 
 namespace tridem::live {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace asio = boost::asio;
 namespace websocket = boost::beast::websocket;
@@ -184,5 +185,6 @@ TEST(LiveView, StopsItsServerBeforeItGoes) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::live

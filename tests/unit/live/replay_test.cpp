@@ -13,6 +13,7 @@
 
 namespace tridem::live {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -103,5 +104,6 @@ TEST(RenderMovie, EveryFrameIntoAnMp4) {
     EXPECT_EQ(e.path().filename().string().find(".movie.mp4.frames"), std::string::npos);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::live

@@ -9,6 +9,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // Granite of issue 14, on a 1 mm mesh: k = E/h.
 constexpr double kStiffness = 40e9 / 1e-3;
@@ -234,5 +235,6 @@ TEST(CohesiveBond, IntactBondSuppressesTheContact) {
   EXPECT_FALSE(intact_bond_between(nullptr, partner, bond_of, broken, 0, 1));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

@@ -8,6 +8,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using V = Vec2<double>;
 
@@ -125,5 +126,6 @@ TEST(ContactForce, FrictionSpringSticksThenSlides) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

@@ -11,6 +11,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using V = Vec2<double>;
 
@@ -128,5 +129,6 @@ TEST(EdgeLoad, PairOnALatticeMedianGetsTheExactForce) {
   EXPECT_NEAR(f.torque_a, moment, 1e-8 * norm(expect));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

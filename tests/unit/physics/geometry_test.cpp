@@ -6,6 +6,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using T = Triangle<double>;
 using V = Vec2<double>;
@@ -105,5 +106,6 @@ TEST(Geometry, ClipSegmentThroughTriangle) {
   EXPECT_FALSE(clip_to_triangle(V{-1, 4}, V{2, 0}, u, t0, t1));  // through the vertex (0, 4)
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

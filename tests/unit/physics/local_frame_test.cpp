@@ -9,6 +9,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(LocalFrame, DirectedRoundingBracketsTheValueTightly) {
   for (const double v : {1.0, 0.1, -0.1, 1e4 + 1e-9, -123.456789, 1e-30}) {
@@ -62,5 +63,6 @@ TEST(LocalFrame, GridFindsOverlappingBoxesWiderThanItsBaseCell) {
   EXPECT_EQ(pairs.partner[0], 1);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

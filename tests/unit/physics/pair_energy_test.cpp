@@ -13,6 +13,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using V = Vec2<double>;
 
@@ -369,5 +370,6 @@ TEST(PairEnergy, WithoutEnergyTheForceAndHistoryAreTheSameBits) {
   expect_energy_free_force_is_the_same<float>(6);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

@@ -11,6 +11,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using V = Vec2<double>;
 
@@ -103,5 +104,6 @@ TEST(PairRecord, AStepMovesLessThanHalfTheBytesOfAWholeResult) {
   EXPECT_LT(2 * sizeof(PairLoad<float>), sizeof(PairForce<float>) + 1);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

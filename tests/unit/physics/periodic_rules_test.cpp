@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 physics::PeriodicFrame cell(bool px, bool py, double shear_rate = 0, double t = 0) {
   return physics::periodic_frame_at(px, -1.0, 2.0, py, 0.5, 1.5, shear_rate, t);
@@ -151,5 +152,6 @@ TEST(PeriodicWrap, WrapWithWorkIsTheWrapAndItsEnergy) {
   EXPECT_EQ(physics::wrap_with_work(f, inside, 0.25, {0, -9.81}), 0.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

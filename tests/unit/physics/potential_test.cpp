@@ -7,6 +7,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using T = Triangle<double>;
 using V = Vec2<double>;
@@ -68,5 +69,6 @@ TEST(Potential, EdgeLoadMatchesQuadratureOfThePotential) {
   EXPECT_GT(crossing, 50);  // the test exercised real overlaps
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

@@ -9,6 +9,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(RestitutionCalibration, IntegratedLinearContactMatchesTheClosedForm) {
   for (double zeta : {0.05, 0.2, 0.5, 0.8})
@@ -33,5 +34,6 @@ TEST(RestitutionCalibration, CalibratedDampingGivesTheRestitutionBack) {
   EXPECT_EQ(max_damping_ratio(contact_law(1, 1, 0, 1.0)), 0.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

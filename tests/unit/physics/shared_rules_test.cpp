@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 TEST(EmitterRule, LowerIndexEmitsAmongSmallTheSmallOneAgainstAWall) {
   EXPECT_TRUE(emits_pair(1, 2, true, true, true, true));
@@ -77,5 +78,6 @@ TEST(ContactLawSeam, EdgeStiffnessIsThePotentialLawsBound) {
   EXPECT_EQ(physics::SceneContactLaw::edge_stiffness(law, 0.01, 0.02).tangential_ratio, 0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -7,6 +7,7 @@
 
 namespace tridem::physics {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 /// The amplitude after many steps of kick-then-drift on x'' = −ω²x − 2ζωx', from x = 1
 /// (stopped once past 1e6, before it overflows).
@@ -51,5 +52,6 @@ TEST(StabilityLimit, LargestModeOfABodyOnSprings) {
   EXPECT_NEAR(largest_mode(t, 1.0, 1.0), 4, 1e-12);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::physics

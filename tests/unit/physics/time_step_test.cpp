@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Scene right_triangle_scene() {
   Scene s = test::empty_scene(1e6, 1000);
@@ -144,5 +145,6 @@ TEST(TimeStep, ClockwiseTriangleGetsPositiveAreaAndSameMass) {
   EXPECT_DOUBLE_EQ(m.inertia[1], m.inertia[0]);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

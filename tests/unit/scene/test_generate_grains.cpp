@@ -15,6 +15,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kSceneHead;
@@ -340,5 +341,6 @@ TEST(SceneGrains, RefusalsNameTheKey) {
       {"key 'packing_fraction'", "more than the limit"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 LatticeSpec lattice(Vec2d lo, Vec2d hi, double size, double gap) {
   LatticeSpec s;
@@ -166,11 +167,13 @@ TEST(SceneLattice, MillionTrianglesInWellUnderASecond) {
   EXPECT_LT(seconds, 5.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
 
 namespace tridem::scene_detail {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // tridem info on 1.1e8 generated triangles (a units slip) used 24 GB and was killed by the
 // kernel with no message; the reader now refuses such a count before generating.
@@ -186,5 +189,6 @@ TEST(SceneMemory, CountThatCannotBeHeldIsRefusedNamingTheEstimate) {
   EXPECT_GT(available_memory_bytes(), std::size_t{1} << 20);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::scene_detail

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 RandomPackingSpec packing(Vec2d lo, Vec2d hi, double size, double gap, double irregularity = 0,
                           std::uint64_t seed = 1, std::size_t count = 0) {
@@ -174,5 +175,6 @@ TEST(SceneRandom, MillionTrianglesInWellUnderASecond) {
   EXPECT_LT(seconds, 5.0);  // generous: catches accidental quadratic behaviour only
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

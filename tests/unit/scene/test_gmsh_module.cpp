@@ -14,6 +14,7 @@
 
 namespace tridem::scene_detail {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 namespace fs = std::filesystem;
 
@@ -121,5 +122,6 @@ TEST(GmshModule, TheBuildsModuleIsFoundAndLoads) {
 }
 #endif
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem::scene_detail

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kSceneHead;
@@ -172,5 +173,6 @@ TEST(SceneImport, GmshRefusals) {
   expect_refused(importing("/nonexistent/m.msh"), {"no such file"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

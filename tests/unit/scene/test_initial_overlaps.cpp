@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // Line 7: the floor, a fixed triangle whose top edge is y = 0 for x in [-1, 1].
 constexpr std::string_view kFloor =
@@ -185,5 +186,6 @@ TEST(InitialOverlaps, LargeGeneratedSceneIsCheckedFast) {
   RecordProperty("seconds", std::to_string(seconds));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

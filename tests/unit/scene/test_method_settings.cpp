@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kGoodTriangle;
@@ -163,5 +164,6 @@ TEST(SceneMethodSettings, SolverChecksTheMethodItIsGiven) {
   EXPECT_THROW(validate_scene(s), SceneError);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kSceneHead;
@@ -133,5 +134,6 @@ TEST(PolygonTriangulation, SquareWithCollinearPointsKeepsItsArea) {
   EXPECT_DOUBLE_EQ(a, 4.0);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -8,6 +8,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kGoodTriangle;
@@ -110,5 +111,6 @@ TEST(SceneMeasure, ValidationRefusesTheSameInASceneBuiltInCode) {
   EXPECT_NO_THROW(validate_scene(s));
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -12,6 +12,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 
@@ -250,5 +251,6 @@ TEST(SceneMesh, SharedEdgesBecomeBonds) {
   EXPECT_EQ(b[0].b, 1u);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::string wall(const std::string& program, const std::string& extra = "") {
   return test::with_triangle("material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
@@ -143,5 +144,6 @@ TEST(ParseProgram, RefusesBadPrograms) {
                        {"'force'", "reverse direction"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

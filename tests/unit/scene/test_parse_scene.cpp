@@ -11,6 +11,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 const std::filesystem::path kScenes =
     std::filesystem::path(TRIDEM_SOURCE_DIR) / "tests/data/scenes";
@@ -301,5 +302,6 @@ velocity = [1, 0]
   EXPECT_EQ(s.triangles[1].motion, Motion::Prescribed);
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -10,6 +10,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 std::string refusal_of(const std::filesystem::path& file) {
   try {
@@ -47,5 +48,6 @@ TEST(SceneRead, MessagesCarryThePathAndLine) {
   EXPECT_NE(message.find("key 'density'"), std::string::npos) << message;
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -6,6 +6,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 using test::expect_refused;
 using test::kGoodTriangle;
@@ -248,5 +249,6 @@ TEST(SceneRefusals, GeneratorMakingNoneOrTooMany) {
                  {"bad.toml:11:", "key 'size'", "more than the limit"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Scene valid_scene() {
   Scene s;
@@ -159,5 +160,6 @@ TEST(SceneValidate, RefusesBadSettingsAndNamesTheSource) {
   expect_refused([](Scene& s) { s.output.checkpoint_every = -2; }, {"checkpoint_every"});
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -13,6 +13,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 Snapshot three_particles() {
   Snapshot s;
@@ -85,5 +86,6 @@ TEST(SnapshotCompare, SeesEveryFieldOfEveryContactRecord) {
   }
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem

@@ -7,6 +7,7 @@
 
 namespace tridem {
 namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
 
 // The hash is the documented FNV-1a: its published test vectors.
 TEST(StateHashFunction, IsFnv1a64) {
@@ -36,5 +37,6 @@ TEST(StateHashFunction, WritesValuesLittleEndianAtTheirWidth) {
   EXPECT_NE(zero.value(), negative_zero.value());
 }
 
+}  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
