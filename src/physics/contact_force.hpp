@@ -158,14 +158,18 @@ struct TargetShape {
   Vec2<Real> centroid;
   Real to_phi;          ///< 3/(2A): φ in sub-triangle k is to_phi times edge area k
   Real edge_length[3];  ///< |v_k+1 − v_k|
+  Vec2<Real> edge[3];   ///< v_k+1 − v_k, once per target rather than once per loaded piece
 };
 
 template <class Real>
 TRIDEM_HD inline TargetShape<Real> target_shape(const Triangle<Real>& t, Real area,
                                                 Vec2<Real> centroid) {
-  TargetShape<Real> s{t, centroid, Real(3) / (Real(2) * area), {}};
+  TargetShape<Real> s{t, centroid, Real(3) / (Real(2) * area), {}, {}};
   TRIDEM_UNROLL
-  for (int k = 0; k < 3; ++k) s.edge_length[k] = norm(t.v[(k + 1) % 3] - t.v[k]);
+  for (int k = 0; k < 3; ++k) {
+    s.edge[k] = t.v[(k + 1) % 3] - t.v[k];
+    s.edge_length[k] = norm(s.edge[k]);
+  }
   return s;
 }
 
@@ -210,7 +214,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     TRIDEM_UNROLL
     for (int j = 0; j < 3; ++j) {
       if (j == k || !(fd[j] < fdk)) continue;
-      const Real crossing = (f0[j] - f0k) / (fdk - fd[j]);
+      const Real crossing = math::divide(f0[j] - f0k, fdk - fd[j]);
       if (crossing < t_next) {
         t_next = crossing;
         next = j;
@@ -233,7 +237,7 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     // A piece of length ℓ in S_k, of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k, and
     // ∇φ = to_phi·perp(e_k) (|∇φ| = 3/h_k).
     load.stiffness += length * target.to_phi * pick(target.edge_length, k);
-    const Vec2<Real> e_k = vertex(target.tri, (k + 1) % 3) - vertex(target.tri, k);
+    const Vec2<Real> e_k = pick(target.edge, k);
     load.gradient += Vec2<Real>{-e_k.y, e_k.x} * (length * target.to_phi);
     load.shape += length * high;
     if (next < 0) break;
@@ -295,7 +299,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       out.depth = load.peak > out.depth ? load.peak : out.depth;
       if (!(load.integral > Real(0))) continue;
       const Vec2<Real> d = p1 - p0;
-      const Real per_length = Real(1) / load.length;
+      const Real per_length = math::divide(Real(1), load.length);
       const Vec2<Real> normal{d.y * per_length, -d.x * per_length};  // outward, CCW contactor
       const Vec2<Real> f_on_c = normal * (-law.penalty * load.integral);
       const Vec2<Real> f_on_a = role == 0 ? f_on_c : -f_on_c;

@@ -187,7 +187,7 @@ TRIDEM_HD inline Real overlap_area(const Triangle<Real>& a, const Triangle<Real>
 template <class Real>
 TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
   if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
-  const Real t = -f0 / fd;
+  const Real t = math::divide(-f0, fd);
   if (fd > Real(0)) t0 = t > t0 ? t : t0;
   else t1 = t < t1 ? t : t1;
   return t1 > t0;
