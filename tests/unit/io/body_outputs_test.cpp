@@ -229,7 +229,7 @@ TEST(BodyColors, NeighboursInAChainAndAGridDiffer) {
   s.resize_bodies(nx * ny);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const std::size_t b = static_cast<std::size_t>(j * nx + i);
+      const std::size_t b = static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i);
       const double x = i, y = j;
       const double tris[2][6] = {{x, y, x + 1, y, x + 1, y + 1}, {x, y, x + 1, y + 1, x, y + 1}};
       for (std::size_t m = 0; m < 2; ++m) {
