@@ -16,20 +16,19 @@ if [ -z "$ncu_bin" ]; then echo "no ncu on this machine"; exit 1; fi
 "$ncu_bin" --version | tail -1
 status=0
 for backend in cuda cuda-float; do
+  # One profiled launch into a report, then its summary and its SASS page from the report.
   "$ncu_bin" --kernel-name regex:pair_forces_kernel --launch-skip 20 --launch-count 1 \
     --section SpeedOfLight --section WarpStateStats --section SchedulerStats \
     --section Occupancy --section MemoryWorkloadAnalysis --section ComputeWorkloadAnalysis \
     --section InstructionStats --section LaunchStats --section SourceCounters \
+    -f -o "$out/sass_$backend" \
     "$bin" --backends="$backend" --min_n="$n" --max_n="$n" --scenes=dense_pile \
-    --benchmark_repetitions=1 >"$out/ncu_$backend.txt" 2>&1 || status=1
+    --benchmark_repetitions=1 >"$out/ncu_run_$backend.txt" 2>&1 || status=1
+  "$ncu_bin" -i "$out/sass_$backend.ncu-rep" --page details >"$out/ncu_$backend.txt" 2>&1 || status=1
   grep -E "Duration|Registers Per|Achieved Occupancy|Compute \(SM\) Throughput|Memory Throughput|Warp Cycles Per Issued|Stall|Issue Slots|Executed Ipc|Local|Spill|Theoretical Occ|Block Limit" \
     "$out/ncu_$backend.txt" | head -60
   # Per SASS instruction: executions and stall samples, summed by opcode (what the
   # instructions are, beyond the pipes' totals).
-  "$ncu_bin" --kernel-name regex:pair_forces_kernel --launch-skip 20 --launch-count 1 \
-    --section SourceCounters --section WarpStateStats -f -o "$out/sass_$backend" \
-    "$bin" --backends="$backend" --min_n="$n" --max_n="$n" --scenes=dense_pile \
-    --benchmark_repetitions=1 >/dev/null 2>&1 || status=1
   "$ncu_bin" -i "$out/sass_$backend.ncu-rep" --page source --print-source sass --csv \
     >"$out/sass_$backend.csv" 2>&1 || status=1
   python3 "$root/bench/sass_opcode_table.py" "$out/sass_$backend.csv" | tee "$out/opcodes_$backend.txt" | head -40
