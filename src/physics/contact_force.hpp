@@ -127,24 +127,6 @@ TRIDEM_HD inline bool edge_may_enter(const EdgeAreas<Real>& r, int e) {
   return true;
 }
 
-/// Element i of a small array with a run-time index, without forcing the array out of
-/// registers on the device (the loop unrolls to predicated moves).
-template <class T, int N>
-TRIDEM_HD inline T pick(const T (&array)[N], int i) {
-  T v = array[0];
-  TRIDEM_UNROLL
-  for (int k = 1; k < N; ++k)
-    if (k == i) v = array[k];
-  return v;
-}
-
-template <class T, int N>
-TRIDEM_HD inline void put(T (&array)[N], int i, const T& v) {
-  TRIDEM_UNROLL
-  for (int k = 0; k < N; ++k)
-    if (k == i) array[k] = v;
-}
-
 /// Vertex k of t for a run-time k.
 template <class Real>
 TRIDEM_HD inline Vec2<Real> vertex(const Triangle<Real>& t, int k) {
@@ -176,10 +158,13 @@ TRIDEM_HD inline TargetShape<Real> target_shape(const Triangle<Real>& t, Real ar
 /// The contactor edge p0 + t·(p1 − p0), t in [0, 1]. Along it φ_T(t) = max(0, min_k g_k(t))
 /// with g_k = to_phi·(edge area k), linear in t (inside T the minimum is Munjiza's φ,
 /// outside it is negative). The part where the minimum is positive is [t_lo, t_hi] (three
-/// half-plane clips); being concave, the minimum takes its lines in order of falling slope,
-/// so walking from t_lo each piece ends where the first line of smaller slope crosses the
-/// active one. Each piece is integrated once, whatever line a tie picks: an edge lying on a
-/// centroid ray (two lines equal along it) is no longer counted twice.
+/// half-plane clips). Line k is the minimum on the part of it where g_k <= g_j for both
+/// other lines j: two more clips, at the crossings of k with each of them. Each of the three
+/// crossings is divided once and clips both of its lines, so the lines' parts meet without
+/// a gap or an overlap; each part is integrated with its own line, known at compile time
+/// (no run-time line index: on the GPU the three parts are the same instructions for every
+/// thread of a warp). Two equal lines (an edge lying on a centroid ray) give their common
+/// part to the one of lower index only, so it is counted once.
 template <class Real>
 TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
                                           const TargetShape<Real>& target) {
@@ -195,38 +180,41 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
   const Vec2<Real> d = p1 - p0;
   const Real edge_length = norm(d);
   load.length = edge_length;
-  // The active line at t_lo: the smallest value there; on a tie, the one that falls faster.
-  int k = 0;
-  Real gk = f0[0] + t_lo * fd[0];
+  Real lo[3] = {t_lo, t_lo, t_lo}, hi[3] = {t_hi, t_hi, t_hi};
   TRIDEM_UNROLL
-  for (int j = 1; j < 3; ++j) {
-    const Real gj = f0[j] + t_lo * fd[j];
-    if (gj < gk || (gj == gk && fd[j] < pick(fd, k))) {
-      k = j;
-      gk = gj;
-    }
-  }
-  Real t = t_lo;
-  for (int piece = 0; piece < 3; ++piece) {
-    const Real f0k = pick(f0, k), fdk = pick(fd, k);
-    Real t_next = t_hi;
-    int next = -1;
+  for (int j = 0; j < 2; ++j) {
     TRIDEM_UNROLL
-    for (int j = 0; j < 3; ++j) {
-      if (j == k || !(fd[j] < fdk)) continue;
-      const Real crossing = math::divide(f0[j] - f0k, fdk - fd[j]);
-      if (crossing < t_next) {
-        t_next = crossing;
-        next = j;
+    for (int k = j + 1; k < 3; ++k) {
+      const Real rise = fd[k] - fd[j];  // the slope of g_k − g_j
+      if (rise == Real(0)) {
+        // Parallel: the lower line throughout; of two equal ones, j.
+        if (f0[k] - f0[j] >= Real(0))
+          hi[k] = t_lo;
+        else
+          hi[j] = t_lo;
+        continue;
+      }
+      const Real crossing = math::divide(f0[j] - f0[k], rise);  // where g_k = g_j
+      // Compares written so that a crossing that is not a number clips nothing.
+      if (rise > Real(0)) {  // g_k is the lower before the crossing, g_j after it
+        hi[k] = crossing < hi[k] ? crossing : hi[k];
+        lo[j] = crossing > lo[j] ? crossing : lo[j];
+      } else {
+        hi[j] = crossing < hi[j] ? crossing : hi[j];
+        lo[k] = crossing > lo[k] ? crossing : lo[k];
       }
     }
-    t_next = t_next > t ? t_next : t;  // rounding: never step back
-    Real phi0 = target.to_phi * (f0k + t * fdk);
-    Real phi1 = target.to_phi * (f0k + t_next * fdk);
+  }
+  TRIDEM_UNROLL
+  for (int k = 0; k < 3; ++k) {
+    if (!(hi[k] > lo[k])) continue;
+    const Real t0 = lo[k], t1 = hi[k];
+    Real phi0 = target.to_phi * (f0[k] + t0 * fd[k]);
+    Real phi1 = target.to_phi * (f0[k] + t1 * fd[k]);
     phi0 = phi0 > Real(0) ? phi0 : Real(0);  // zero at t_lo and t_hi up to rounding
     phi1 = phi1 > Real(0) ? phi1 : Real(0);
-    const Real length = edge_length * (t_next - t);
-    const Vec2<Real> q0 = p0 + d * t, q1 = p0 + d * t_next;
+    const Real length = edge_length * (t1 - t0);
+    const Vec2<Real> q0 = p0 + d * t0, q1 = p0 + d * t1;
     // A linear load φ0 → φ1 over [q0, q1]: ∫ φ = ℓ(φ0 + φ1)/2 and ∫ φ·x = q0·∫ φ +
     // (q1 − q0)·ℓ(φ0 + 2φ1)/6 (the trapezoid's centroid times its integral).
     const Real integral = length * (phi0 + phi1) * Real(0.5);
@@ -236,13 +224,10 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     load.moment += q0 * integral + (q1 - q0) * (length * (phi0 + Real(2) * phi1) / Real(6));
     // A piece of length ℓ in S_k, of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k, and
     // ∇φ = to_phi·perp(e_k) (|∇φ| = 3/h_k).
-    load.stiffness += length * target.to_phi * pick(target.edge_length, k);
-    const Vec2<Real> e_k = pick(target.edge, k);
+    load.stiffness += length * target.to_phi * target.edge_length[k];
+    const Vec2<Real> e_k = target.edge[k];
     load.gradient += Vec2<Real>{-e_k.y, e_k.x} * (length * target.to_phi);
     load.shape += length * high;
-    if (next < 0) break;
-    t = t_next;
-    k = next;
   }
   return load;
 }
