@@ -23,9 +23,10 @@
 // Extra flags (before or among the --benchmark_* ones):
 //   --max_n=N         skip sizes above N (e.g. --max_n=1e5 to fit a time budget)
 //   --min_n=N         skip sizes below N
-//   --backends=LIST   cpu,openmp,cuda,cuda-float (default cpu,openmp); cuda-float is the
-//                     GPU in precision = "float" (the mixed mode: double state, float
-//                     pairs; docs/model.md, "Precision"), the others double
+//   --backends=LIST   cpu,openmp,cuda,cuda-float,cpu-float,openmp-float (default
+//                     cpu,openmp); NAME-float is the backend in precision = "float" (the
+//                     mixed mode: double state, float pairs; docs/model.md, "Precision"),
+//                     the others double
 //   --stage_timing=0  run without per-stage times (what timing costs: compare s_per_step)
 //   --frames=1        also time one output frame (snapshot) per variant and size
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
@@ -131,10 +132,9 @@ struct Variant {
 };
 
 const Variant kVariants[] = {
-    {Backend::Cpu, tridem::Precision::Double},
-    {Backend::OpenMP, tridem::Precision::Double},
-    {Backend::Cuda, tridem::Precision::Double},
-    {Backend::Cuda, tridem::Precision::Float},
+    {Backend::Cpu, tridem::Precision::Double},  {Backend::OpenMP, tridem::Precision::Double},
+    {Backend::Cuda, tridem::Precision::Double}, {Backend::Cuda, tridem::Precision::Float},
+    {Backend::Cpu, tridem::Precision::Float},   {Backend::OpenMP, tridem::Precision::Float},
 };
 
 /// --stage_timing: per-stage times on (the default) or off.
@@ -345,8 +345,10 @@ int main(int argc, char** argv) {
     const auto* v = std::find_if(std::begin(kVariants), std::end(kVariants),
                                  [&](const Variant& x) { return name == x.name(); });
     if (v == std::end(kVariants)) {
-      std::cerr << "tridem_bench: --backends wants a list of cpu, openmp, cuda, cuda-float; got '"
-                << name << "'\n";
+      std::cerr
+          << "tridem_bench: --backends wants a list of cpu, openmp, cuda, cuda-float, cpu-float, "
+             "openmp-float; got '"
+          << name << "'\n";
       return 2;
     }
     variants.push_back(*v);
