@@ -16,16 +16,14 @@ out="${1:?give an output folder}"
 mkdir -p "$out"
 bin="$root/.devbin/tests/tridem_tests"
 skip=" ${SKIP:-} "
-summary() { grep -E '^\[  (PASSED|FAILED|SKIPPED) |tests? from .* ran|FAILED TEST' "$1" | sort -u | head -40; }
-nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$out/gpu.txt"
-timeout 60 "$bin" --gtest_filter='Gpu/StateHash.*' >"$out/state_hash.log" 2>&1
-echo "== 1 state hashes: exit $?"; summary "$out/state_hash.log"
+echo "== 1"
+check_state_hashes "$out"
 slow='Gpu/Incline.*:Gpu/PrecisionTest.*:Gpu/StepStability.*:Gpu/Friction.*:Gpu/MotionTest.*:Gpu/MotionProgramTest.*:Gpu/Resting.*'
 filter="Gpu*:*Cuda*:*Gpu*:Bonds.*:*StateCopy*-Gpu/StateHash.*"
 [ "${FULL:-0}" = 1 ] || filter="$filter:$slow"
 start=$(date +%s)
 timeout "${TEST_SECONDS:-200}" stdbuf -oL "$bin" --gtest_filter="$filter" >"$out/tests.log" 2>&1
-echo "== 2 GPU tests: exit $? after $(( $(date +%s) - start )) s"; summary "$out/tests.log"
+echo "== 2 GPU tests: exit $? after $(( $(date +%s) - start )) s"; gtest_summary "$out/tests.log"
 # A diagnostic a session may have compiled in (DISABLED_ tests of GpuServoDiag), if any.
 timeout 60 "$bin" --gtest_filter='GpuServoDiag.*' --gtest_also_run_disabled_tests >"$out/diag.log" 2>&1
 grep -E '^follow|FAILED|PASSED' "$out/diag.log" | head -40

@@ -1,7 +1,23 @@
 # Sourced by the scripts that run on the GPU machine: unpacks the carried libraries
 # (device_unpack.sh), puts them on the loader's path, and makes the tests' compiled-in
-# source path (/work/main) point at this checkout. Sets `root`.
+# source path (/work/main) point at this checkout. Sets `root`; defines gtest_summary and
+# check_state_hashes.
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ ! -e /work/main/tests ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
+
+# The pass/fail lines of a gtest log.
+gtest_summary() {
+  grep -E '^\[  (PASSED|FAILED|SKIPPED) |tests? from .* ran|FAILED TEST' "$1" | sort -u | head -40
+}
+
+# The GPU's name into OUT/gpu.txt, then the CUDA state hashes (Gpu/StateHash: the GPU's
+# arithmetic, bit for bit) into OUT/state_hash.log, with their summary.
+check_state_hashes() {  # OUT
+  nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$1/gpu.txt"
+  timeout 60 "$root/.devbin/tests/tridem_tests" --gtest_filter='Gpu/StateHash.*' \
+    >"$1/state_hash.log" 2>&1
+  echo "== state hashes: exit $?"
+  gtest_summary "$1/state_hash.log"
+}

@@ -13,6 +13,19 @@
 
 namespace tridem {
 
+/// One step the clock samples (its sample_this_step() said so): each stage timed.
+template <class Backend, class Clock, std::size_t N>
+void run_timed_step(Backend& backend, const std::array<Stage, N>& pipeline, Clock& clock) {
+  const auto start = std::chrono::steady_clock::now();
+  clock.begin_step();
+  for (const Stage stage : pipeline) {
+    backend.run_stage(stage);
+    clock.end_stage(stage);
+  }
+  clock.end_step();
+  clock.add_step_wall(std::chrono::steady_clock::now() - start);
+}
+
 /// Runs the stages of `pipeline` in order on `backend` (a member run_stage(Stage)), the
 /// clock reading the time after each one. A stage that throws (a blow-up) ends the step
 /// before the clock counts it.
@@ -22,18 +35,10 @@ void run_step(Backend& backend, const std::array<Stage, N>& pipeline, Clock& clo
     for (const Stage stage : pipeline) backend.run_stage(stage);
     return;
   }
+  if (clock.sample_this_step()) return run_timed_step(backend, pipeline, clock);
   const auto start = std::chrono::steady_clock::now();
-  if (!clock.sample_this_step()) {
-    for (const Stage stage : pipeline) backend.run_stage(stage);
-    clock.count_untimed_step();
-  } else {
-    clock.begin_step();
-    for (const Stage stage : pipeline) {
-      backend.run_stage(stage);
-      clock.end_stage(stage);
-    }
-    clock.end_step();
-  }
+  for (const Stage stage : pipeline) backend.run_stage(stage);
+  clock.count_untimed_step();
   clock.add_step_wall(std::chrono::steady_clock::now() - start);
 }
 

@@ -132,6 +132,22 @@ class CudaSolver final : public Solver {
   // Bodies of several members (n_bodies_ > 0): the stages' kernels for them.
   void gather(const ParticleArrays<Real>& p, StepStatus* status);
   void integrate(const ParticleArrays<Real>& p, StepStatus* status);
+  /// A step's status read back: a blow-up it flags is reported (RunError).
+  void report_failure(const StepStatus& status) const;
+  // Run-ahead (docs/performance.md, "Run-ahead"): each step is launched before the host
+  // has read the status of the one before it, so that the GPU never waits for the host.
+  /// Whether advance() runs ahead: the grid's kept list, and no kernel of the step that
+  /// reads what the host decides between steps (periodic cells, bodies, bonds, programs,
+  /// MPI ranks; single-domain and decomposition build every step).
+  bool runs_ahead() const;
+  void advance_ahead(std::int64_t steps);
+  /// Launches step `step` of the call that ends at `end` behind the step whose status is
+  /// `gate` (null: on the host's word), and the copy of its status to the host.
+  void launch_ahead(std::int64_t step, std::int64_t end, const StepStatus* gate);
+  /// Reads the launched step step_'s status (waits for it), reports a blow-up, and counts
+  /// the step; true when the pair list must be built again.
+  bool finish_ahead();
+  static int ahead_slot(std::int64_t step) { return 1 + static_cast<int>(step % 3); }
   [[noreturn]] void report_runaway(int particle) const;
   [[noreturn]] void report_body_runaway(int body) const;
   [[noreturn]] void report_penetration(int emitter) const;
@@ -184,8 +200,14 @@ class CudaSolver final : public Solver {
   double sheared_slack_ = 0;
   double built_at_ = 0;
   DeviceBuffer<double> image_power_;
+  // Statuses: [0] the staged step's (run_stage), [1..3] run-ahead's, one a step in turn;
+  // on the host also [4], a fresh status the run-ahead resets its first step's from.
   DeviceBuffer<StepStatus> status_;
   PinnedBuffer<StepStatus> host_status_;
+  std::array<cudaEvent_t, 3> ahead_copied_{};  ///< a run-ahead step's status is on the host
+  bool run_ahead_ = false;                     ///< SolverConfig::gpu_run_ahead
+  std::int64_t ahead_steps_ = 0;               ///< steps launched behind one not yet read
+  std::int64_t ahead_held_back_ = 0;  ///< of those, launched again after it asked for a list
   std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)
   // The split step (set_ghost_hooks; empty without): the received flags, the hook that
   // takes the ghosts, the last step's slips while the own pass overwrites theirs (restored

@@ -40,6 +40,14 @@ struct PairArrays {
   const int* reverse_slot;
 };
 
+/// What the host reads back after every step.
+struct StepStatus {
+  int rebuild;      ///< 1 when some particle has left its build box
+  int bad;          ///< lowest particle whose step ran away, or INT_MAX
+  int deep;         ///< lowest emitter of a pair deeper than max_depth, or INT_MAX
+  int ghost_touch;  ///< 1 when a pair on a received particle touched (the split step's count)
+};
+
 template <class Real>
 struct StepParams {
   double dt;              ///< the integration's; pairs take it rounded to Real
@@ -70,16 +78,17 @@ struct StepParams {
   /// kAllSlots, kOwnSlots (no received particle) or kGhostSlots.
   const std::uint8_t* received;
   int slots;
+  /// Run-ahead (CudaSolver::advance_ahead; else null): the status of the step before this
+  /// one, which the host had not read when it launched this one. If that step failed or
+  /// asked for a new pair list, this one does nothing (held_back) and the host launches it
+  /// again once it has read why.
+  const StepStatus* gate;
+  /// Run-ahead: the status the next step will write, reset by this step's gather. It is
+  /// the status of the step two before this one (three take turns), whose last readers,
+  /// its copy to the host and the gates of the step after it, came earlier on the stream.
+  StepStatus* next_status;
 };
 
 constexpr int kAllSlots = 0, kOwnSlots = 1, kGhostSlots = 2;
-
-/// What the host reads back after every step.
-struct StepStatus {
-  int rebuild;  ///< 1 when some particle has left its build box
-  int bad;      ///< lowest particle whose step ran away, or INT_MAX
-  int deep;     ///< lowest emitter of a pair deeper than max_depth, or INT_MAX
-  int ghost_touch;  ///< 1 when a pair on a received particle touched (the split step's count)
-};
 
 }  // namespace tridem::cuda

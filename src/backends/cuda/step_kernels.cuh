@@ -62,6 +62,15 @@ struct PairKernelShape<float> {
   static constexpr int threads = 128, min_blocks = TRIDEM_PAIR_BLOCKS_FLOAT;
 };
 
+/// Run-ahead (StepParams::gate): this step was launched behind one that has failed or
+/// asked for a new pair list, so it does nothing; the host launches it again.
+template <class Real>
+__device__ inline bool held_back(const StepParams<Real>& sp) {
+  if (sp.gate == nullptr) return false;
+  const StepStatus before = *sp.gate;
+  return before.rebuild != 0 || before.bad != INT_MAX || before.deep != INT_MAX;
+}
+
 /// kBodies: a scene with bodies of several triangles, whose members of one body
 /// (`member_body`) add exact zeros and keep no history (physics::same_body, as on the CPU);
 /// kBonds: a bonded scene, whose pairs an intact bond holds (`bonds`, physics::
@@ -78,7 +87,7 @@ __global__ void __launch_bounds__(PairKernelShape<Real>::threads, PairKernelShap
                        StepStatus* status, const std::int32_t* member_body,
                        physics::BondArrays<Real> bonds) {
   const int s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s >= q.count) return;
+  if (s >= q.count || held_back(sp)) return;
   const int e = q.emitter[s], j = q.partner[s];
   // The split step's passes: the slots of no received particle, then the others.
   const bool on_ghost = sp.received != nullptr && (sp.received[e] | sp.received[j]) != 0;
@@ -161,7 +170,8 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
                               StepStatus* status, bool prescribed,
                               physics::BondArrays<Real> bonds) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= p.n || (p.free[i] != 0) == prescribed) return;
+  if (sp.next_status != nullptr && i == 0) *sp.next_status = StepStatus{0, INT_MAX, INT_MAX, 0};
+  if (i >= p.n || (p.free[i] != 0) == prescribed || held_back(sp)) return;
   Vec2<Real> f;
   Real t;
   sum_pair_forces(i, q.offset, q.reverse_offset, q.reverse_slot, q.load, f, t);
@@ -233,7 +243,7 @@ template <class Real, bool kPeriodic = false>
 __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                                  StepStatus* status, bool advance) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= p.n) return;
+  if (i >= p.n || held_back(sp)) return;
   if (advance) {
     if (status->bad != INT_MAX || status->deep != INT_MAX) return;
     const physics::Pose<double> before = pose(p, i);
