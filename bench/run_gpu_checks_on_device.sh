@@ -18,9 +18,8 @@ bin="$root/.devbin/tests/tridem_tests"
 skip=" ${SKIP:-} "
 echo "== 1"
 check_state_hashes "$out"
-slow='Gpu/Incline.*:Gpu/PrecisionTest.*:Gpu/StepStability.*:Gpu/Friction.*:Gpu/MotionTest.*:Gpu/MotionProgramTest.*:Gpu/Resting.*'
-filter="Gpu*:*Cuda*:*Gpu*:Bonds.*:*StateCopy*-Gpu/StateHash.*"
-[ "${FULL:-0}" = 1 ] || filter="$filter:$slow"
+filter="$gpu_tests"
+[ "${FULL:-0}" = 1 ] || filter="$filter:$slow_gpu_tests"
 start=$(date +%s)
 timeout "${TEST_SECONDS:-200}" stdbuf -oL "$bin" --gtest_filter="$filter" >"$out/tests.log" 2>&1
 echo "== 2 GPU tests: exit $? after $(( $(date +%s) - start )) s"; gtest_summary "$out/tests.log"

@@ -27,6 +27,10 @@ if [ -x "$build/bench/tridem_write_pile_scene" ]; then cp "$build/bench/tridem_w
 # What one live frame costs the stepping thread (bench/live/frame_cost.cpp), where built.
 if [ -x "$build/bench/tridem_live_frame_cost" ]; then cp "$build/bench/tridem_live_frame_cost" "$dest/bench/"; fi
 cp "$build/tests/tridem_tests" "$dest/tests/"
+# And their test programs, where scripts/build_variant.sh made them (TESTS=1).
+for variant in "$build"/tests/tridem_tests_*; do
+  if [ -x "$variant" ]; then cp "$variant" "$dest/tests/"; fi
+done
 # The Gmsh module, which the programs dlopen from lib/tridem/ beside their directory.
 gmsh_module="$build/lib/tridem/libtridem_gmsh.so"
 for bin in "$dest"/app/tridem "$dest"/bench/tridem_bench "$dest"/bench/tridem_paper_bench "$dest"/tests/tridem_tests $([ -f "$gmsh_module" ] && echo "$gmsh_module"); do

@@ -1,7 +1,7 @@
 # Sourced by the scripts that run on the GPU machine: unpacks the carried libraries
 # (device_unpack.sh), puts them on the loader's path, and makes the tests' compiled-in
-# source path (/work/main) point at this checkout. Sets `root`; defines gtest_summary and
-# check_state_hashes.
+# source path (/work/main) point at this checkout. Sets `root`, gpu_tests and slow_gpu_tests;
+# defines gtest_summary and check_state_hashes.
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/device_unpack.sh"
 export LD_LIBRARY_PATH="$root/.devbin/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
@@ -21,3 +21,8 @@ check_state_hashes() {  # OUT
   echo "== state hashes: exit $?"
   gtest_summary "$1/state_hash.log"
 }
+
+# The GPU tests (state hashes apart), and the slow validation suites among them (5-30 s
+# each), whose GPU arithmetic the state hashes pin.
+gpu_tests="Gpu*:*Cuda*:*Gpu*:Bonds.*:*StateCopy*-Gpu/StateHash.*"
+slow_gpu_tests='Gpu/Incline.*:Gpu/PrecisionTest.*:Gpu/StepStability.*:Gpu/Friction.*:Gpu/MotionTest.*:Gpu/MotionProgramTest.*:Gpu/Resting.*'
