@@ -52,9 +52,9 @@
 //                     openmp), kept as a SolverState (what a checkpoint holds) and loaded
 //                     into each repetition's solver; counter `settle_steps`
 //   --settle_steps=N  steps that settle settled_pile (default 50000)
-//   --run_ahead=1     the CUDA solver with run-ahead (each step launched before the status
-//                     of the one before it is read: docs/performance.md, "Run-ahead"; the
-//                     same results); 0, the default, waits for every step
+//   --run_ahead=0     the CUDA solver without run-ahead (each step waits for the status of
+//                     the one before it; the default launches each step before that status
+//                     is read: docs/performance.md, "Run-ahead"; the same results)
 //   --skin=X          every case's [simulation] skin (default the scenes' 0.05): the CUDA
 //                     list's and the CPU solvers' kept list's; 0 builds the CPU list every
 //                     step from the boxes themselves (same results: what keeping it gives)
@@ -149,8 +149,8 @@ tridem::SimulationSettings g_method;
 /// --skin: the scenes' skin, when given.
 std::optional<double> g_skin;
 
-/// --run_ahead=1: the CUDA solver launches each step before it reads the last one's status.
-bool g_run_ahead = false;
+/// --run_ahead=0: the CUDA solver waits for each step's status before it launches the next.
+bool g_run_ahead = true;
 
 /// Which standard pile a case measures.
 enum class Pile { Dense, Bodies, Bonded, Settled };
@@ -384,7 +384,7 @@ int main(int argc, char** argv) {
   }
   if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
     g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
-  g_run_ahead = take_flag(argc, argv, "run_ahead") == "1";
+  g_run_ahead = take_flag(argc, argv, "run_ahead") != "0";
   if (const std::string text = take_flag(argc, argv, "skin"); !text.empty())
     g_skin = tridem::bench::parse_number_in("tridem_bench", "skin", text, 0, 1,
                                             "a number in [0, 1] (a fraction of the grid cell)");

@@ -74,9 +74,9 @@ struct SolverConfig {
   /// other programs share, threads can cost more than they give.
   ThreadUse thread_use = ThreadUse::Always;
   /// The cuda backend launches each step before it has read the last one's status (the
-  /// same results; docs/performance.md, "Run-ahead"). Off until it has been measured on a
-  /// GPU: every step then waits for the one before it (tests and benchmarks compare both).
-  bool gpu_run_ahead = false;
+  /// same results; docs/performance.md, "Run-ahead"). false: every step waits for the one
+  /// before it, as before run-ahead (tests and benchmarks compare both).
+  bool gpu_run_ahead = true;
 };
 
 class Solver {

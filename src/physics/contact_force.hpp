@@ -197,11 +197,11 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
       const Real crossing = math::divide(f0[j] - f0[k], rise);  // where g_k = g_j
       // Compares written so that a crossing that is not a number clips nothing.
       if (rise > Real(0)) {  // g_k is the lower before the crossing, g_j after it
-        hi[k] = crossing < hi[k] ? crossing : hi[k];
-        lo[j] = crossing > lo[j] ? crossing : lo[j];
+        hi[k] = math::min(crossing, hi[k]);
+        lo[j] = math::max(crossing, lo[j]);
       } else {
-        hi[j] = crossing < hi[j] ? crossing : hi[j];
-        lo[k] = crossing > lo[k] ? crossing : lo[k];
+        hi[j] = math::min(crossing, hi[j]);
+        lo[k] = math::max(crossing, lo[k]);
       }
     }
   }
@@ -211,15 +211,15 @@ TRIDEM_HD inline EdgeLoad<Real> edge_load(Vec2<Real> p0, Vec2<Real> p1,
     const Real t0 = lo[k], t1 = hi[k];
     Real phi0 = target.to_phi * (f0[k] + t0 * fd[k]);
     Real phi1 = target.to_phi * (f0[k] + t1 * fd[k]);
-    phi0 = phi0 > Real(0) ? phi0 : Real(0);  // zero at t_lo and t_hi up to rounding
-    phi1 = phi1 > Real(0) ? phi1 : Real(0);
+    phi0 = math::max(phi0, Real(0));  // zero at t_lo and t_hi up to rounding
+    phi1 = math::max(phi1, Real(0));
     const Real length = edge_length * (t1 - t0);
     const Vec2<Real> q0 = p0 + d * t0, q1 = p0 + d * t1;
     // A linear load φ0 → φ1 over [q0, q1]: ∫ φ = ℓ(φ0 + φ1)/2 and ∫ φ·x = q0·∫ φ +
     // (q1 − q0)·ℓ(φ0 + 2φ1)/6 (the trapezoid's centroid times its integral).
     const Real integral = length * (phi0 + phi1) * Real(0.5);
-    const Real high = phi0 > phi1 ? phi0 : phi1;
-    load.peak = high > load.peak ? high : load.peak;
+    const Real high = math::max(phi0, phi1);
+    load.peak = math::max(high, load.peak);
     load.integral += integral;
     load.moment += q0 * integral + (q1 - q0) * (length * (phi0 + Real(2) * phi1) / Real(6));
     // A piece of length ℓ in S_k, of height h_k = 2A/|e_k|: stiffness 3pℓ/h_k, and
@@ -281,7 +281,7 @@ TRIDEM_HD inline PairForce<Real> pair_force(const Body<Real>& a, const Body<Real
       const int e = lowest_bit(left);
       const Vec2<Real> p0 = vertex(c.tri, e), p1 = vertex(c.tri, (e + 1) % 3);
       const EdgeLoad<Real> load = edge_load(p0, p1, target);
-      out.depth = load.peak > out.depth ? load.peak : out.depth;
+      out.depth = math::max(load.peak, out.depth);
       if (!(load.integral > Real(0))) continue;
       const Vec2<Real> d = p1 - p0;
       const Real per_length = math::divide(Real(1), load.length);

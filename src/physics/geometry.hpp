@@ -188,8 +188,10 @@ template <class Real>
 TRIDEM_HD inline bool clip_to_half_plane(Real f0, Real fd, Real& t0, Real& t1) {
   if (fd == Real(0)) return f0 >= Real(0) && t1 > t0;
   const Real t = math::divide(-f0, fd);
-  if (fd > Real(0)) t0 = t > t0 ? t : t0;
-  else t1 = t < t1 ? t : t1;
+  if (fd > Real(0))
+    t0 = math::max(t, t0);
+  else
+    t1 = math::min(t, t1);
   return t1 > t0;
 }
 
