@@ -59,7 +59,7 @@ __global__ void member_energy_kernel(ParticleArrays<Real> p, PairArrays<Real> q,
                                      StepParams<Real> sp, const StepStatus* status) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n) return;
-  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  if (status->failed()) return;
   const physics::Pose<double> unused{};  // read only for a free particle's local damping
   add_step_energy(p, q, sp, i, false, unused, unused);
   if constexpr (kPeriodic) add_image_work(p, sp, i);
@@ -75,7 +75,7 @@ __global__ void body_integrate_kernel(ParticleArrays<Real> p, BodyArrays b, Step
                                       const StepStatus* status) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= b.n) return;
-  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  if (status->failed()) return;
   const physics::Pose<double> before = body_pose(b, k);
   physics::Pose<double> after = advanced_body_pose(b, sp, k);
   const bool free = b.body_motion[k] == Motion::Free;
@@ -103,7 +103,7 @@ template <class Real>
 __global__ void place_members_kernel(ParticleArrays<Real> p, BodyArrays b, StepStatus* status) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n) return;
-  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  if (status->failed()) return;
   const physics::Pose<double> m =
       physics::member_pose(body_pose(b, b.member_body[i]), Vec2d{b.member_dx[i], b.member_dy[i]});
   p.x[i] = m.c.x;

@@ -37,7 +37,7 @@ template <class Real>
 __global__ void commit_bonds_kernel(physics::BondArrays<Real> v, const StepStatus* status) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= v.count) return;
-  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  if (status->failed()) return;
   physics::commit_bond(v, k);
 }
 

@@ -139,7 +139,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     decomposed_ = std::make_unique<DecomposedRows<Real>>(scene.simulation, classes, stream_);
   status_.allocate(4);
   host_status_.allocate(5);
-  host_status_.data()[4] = StepStatus{0, INT_MAX, INT_MAX, 0};
+  host_status_.data()[4] = StepStatus::fresh();
   for (cudaEvent_t& e : ahead_copied_)
     TRIDEM_CUDA_CHECK(cudaEventCreateWithFlags(&e, cudaEventDisableTiming));
   update_geometry(n_bodies_ > 0);
@@ -155,7 +155,7 @@ CudaSolver<Real>::~CudaSolver() {
 
 template <class Real>
 void CudaSolver<Real>::update_geometry(bool place) {
-  const StepStatus fresh{0, INT_MAX, INT_MAX};
+  const StepStatus fresh = StepStatus::fresh();
   TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status_.data(), &fresh, sizeof fresh,
                                     cudaMemcpyHostToDevice, stream_));
   if (place) {
@@ -245,7 +245,7 @@ void CudaSolver<Real>::run_stage(Stage stage) {
       step_pairs_ = pairs_->arrays();
       return;
     case Stage::PairForces: {
-      *host = {0, INT_MAX, INT_MAX, 0};
+      *host = StepStatus::fresh();
       TRIDEM_CUDA_CHECK(
           cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
       if (take_ghosts_ && !ghosts_taken_)
@@ -425,7 +425,7 @@ bool CudaSolver<Real>::finish_ahead() {
   const int slot = ahead_slot(step_);
   TRIDEM_CUDA_CHECK(cudaEventSynchronize(ahead_copied_[slot - 1]));
   const StepStatus status = host_status_.data()[slot];
-  if (status.deep != INT_MAX || status.bad != INT_MAX) {
+  if (status.failed()) {
     // The step behind it did nothing; the reports read the GPU's state once it is done.
     TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream_));
     report_failure(status);
@@ -546,7 +546,7 @@ void CudaSolver<Real>::split_pair_forces(const ParticleArrays<Real>& p, StepStat
                                         count * sizeof(physics::PairSlip<Real>),
                                         cudaMemcpyDeviceToDevice, stream_));
     StepStatus* host = host_status_.data();
-    *host = {0, INT_MAX, INT_MAX, 0};  // the own pass's flags go with its results
+    *host = StepStatus::fresh();  // the own pass's flags go with its results
     TRIDEM_CUDA_CHECK(cudaMemcpyAsync(status, host, sizeof *host, cudaMemcpyHostToDevice, stream_));
     rebuild_list(p);
     step_pairs_ = pairs_->arrays();

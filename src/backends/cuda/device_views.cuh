@@ -9,6 +9,7 @@
 #include "tridem/energy_budget.hpp"
 #include "tridem/particle_fields.hpp"
 
+#include <climits>
 #include <cstdint>
 
 namespace tridem::cuda {
@@ -46,6 +47,11 @@ struct StepStatus {
   int bad;          ///< lowest particle whose step ran away, or INT_MAX
   int deep;         ///< lowest emitter of a pair deeper than max_depth, or INT_MAX
   int ghost_touch;  ///< 1 when a pair on a received particle touched (the split step's count)
+
+  /// A step's status before any thread has written to it.
+  __host__ __device__ static StepStatus fresh() { return {0, INT_MAX, INT_MAX, 0}; }
+  /// The step ran away or overlapped too deep: its state is not written, the run stops.
+  __host__ __device__ bool failed() const { return bad != INT_MAX || deep != INT_MAX; }
 };
 
 template <class Real>

@@ -68,7 +68,7 @@ template <class Real>
 __device__ inline bool held_back(const StepParams<Real>& sp) {
   if (sp.gate == nullptr) return false;
   const StepStatus before = *sp.gate;
-  return before.rebuild != 0 || before.bad != INT_MAX || before.deep != INT_MAX;
+  return before.rebuild != 0 || before.failed();
 }
 
 /// kBodies: a scene with bodies of several triangles, whose members of one body
@@ -170,7 +170,7 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
                               StepStatus* status, bool prescribed,
                               physics::BondArrays<Real> bonds) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (sp.next_status != nullptr && i == 0) *sp.next_status = StepStatus{0, INT_MAX, INT_MAX, 0};
+  if (sp.next_status != nullptr && i == 0) *sp.next_status = StepStatus::fresh();
   if (i >= p.n || (p.free[i] != 0) == prescribed || held_back(sp)) return;
   Vec2<Real> f;
   Real t;
@@ -245,7 +245,7 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n || held_back(sp)) return;
   if (advance) {
-    if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+    if (status->failed()) return;
     const physics::Pose<double> before = pose(p, i);
     physics::Pose<double> pose = advanced_pose(p, sp, i);
     add_step_energy(p, q, sp, i, p.free[i] != 0, before, pose);
@@ -277,7 +277,7 @@ __global__ void program_velocity_kernel(ParticleArrays<Real> p, StepParams<Real>
                                         const StepStatus* status) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= p.n || p.program[i] < 0) return;
-  if (status->bad != INT_MAX || status->deep != INT_MAX) return;
+  if (status->failed()) return;
   Vec2d v;
   double w = 0;
   physics::program_velocity(sp.programs, p.program[i], sp.time_new,
