@@ -46,10 +46,7 @@ nvidia-smi --query-gpu=name,driver_version --format=csv,noheader | tee "$out/gpu
 nproc | sed 's/^/cores: /'
 log="$out/run_$n$tag.log"
 "$tridem" info "$scene" | grep -E '^(triangles|gpu memory)' | tee "$log.info"
-gpu_used() { nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits | head -1; }
-before=$(gpu_used)
-nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms 100 >"$log.gpu_mem" &
-poll=$!
+gpu_watch_start "$log.gpu_mem"
 if [ -x /usr/bin/time ]; then
   /usr/bin/time -f 'command: %e s wall, %M kB peak resident' \
     "$tridem" run "$scene" --quiet 2>&1 | tee "$log"
@@ -57,7 +54,6 @@ else
   TIMEFORMAT='command: %R s wall'
   { time "$tridem" run "$scene" --quiet; } 2>&1 | tee "$log"
 fi
-kill "$poll" 2>/dev/null; wait "$poll" 2>/dev/null
-sort -n "$log.gpu_mem" | tail -1 | awk -v b="$before" '{printf "gpu memory peak: %d MiB (%d MiB in use before)\n", $1 - b, b}' | tee -a "$log"
+gpu_watch_peak "$log.gpu_mem" | tee -a "$log"
 ls -l "$out/run_$n$tag" | awk 'NR > 1 {print $5, $9}'
 rm -rf "$out/run_$n$tag"  # final.csv and bodies.csv are gigabytes: keep only the sizes

@@ -4,18 +4,15 @@
 # --min_n=--max_n=N for each of BACKENDS (default cuda-float: at 10^8 the double pairs
 # and the CPU solvers' arrays do not fit, `tridem info` on the pile says how much each
 # needs), with the command's peak host memory and the peak GPU memory
-# (nvidia-smi every 200 ms, less what was in use before). Logs go to OUT.
+# (gpu_watch_*: nvidia-smi every 100 ms, less what was in use before). Logs go to OUT.
 #   bench/run_largest_on_device.sh OUT [N=1e8]     env: BACKENDS, REPS (default 1)
 set -uo pipefail
 source "$(dirname "$0")/../scripts/device_env.sh"
 out="${1:?give an output folder}"; n="${2:-1e8}"
 mkdir -p "$out"
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$out/gpu.txt"
-gpu_used() { nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits | head -1; }
 for backend in ${BACKENDS:-cuda-float}; do
-  before=$(gpu_used)
-  ( peak=0; while sleep 0.2; do u=$(gpu_used); [ "$u" -gt "$peak" ] && peak=$u && echo "$peak" >"$out/peak_$backend"; done ) &
-  poller=$!
+  gpu_watch_start "$out/gpu_mem_$backend"
   # The child's peak resident memory and wall time, without relying on GNU time.
   python3 - "$root/.devbin/bench/tridem_bench" --backends="$backend" --min_n="$n" --max_n="$n" \
     --benchmark_repetitions="${REPS:-1}" --benchmark_out="$out/$backend.json" \
@@ -28,8 +25,7 @@ print(f"exit {rc}, wall {time.time() - t0:.1f} s, peak host memory {peak / 2**20
 sys.exit(rc)
 PY
   echo "$backend: exit $?"
-  kill "$poller" 2>/dev/null
+  gpu_watch_peak "$out/gpu_mem_$backend"
   grep -E 'n:|rror' "$out/$backend.txt" | head -6
   tail -3 "$out/$backend.time"
-  echo "GPU memory before $before MiB, peak $(cat "$out/peak_$backend" 2>/dev/null) MiB"
 done
