@@ -8,6 +8,11 @@
 # in one call (PATCH none: the build as it is, the A/B's baseline). A lever is kept in the
 # tree only once measured (docs/performance.md).
 # With TESTS=1 also BUILD/tests/tridem_tests_NAME, the test program with the lever.
+# A patch that changes a header must name every CUDA source that includes it: the objects
+# left unbuilt keep the old header, and a struct of two layouts in one program (an ODR
+# violation) gives wrong numbers, not a build error. So a patch that touches a header is
+# refused with the default SOURCES; name them (src/backends/cuda/*.cu for the device
+# views, the particle fields or the buffers).
 #   scripts/build_variant.sh NAME PATCH [SOURCE.cu ...]   env: BUILD (default build), TESTS
 set -euo pipefail
 name="${1:?give the variant a name}"
@@ -21,7 +26,16 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 git -C "$root" archive HEAD src include | tar -x -C "$work"
 cp "$build/src/libtridem_core.a" "$work/libtridem_core.a"
-if [ "$patch" = none ]; then sources=(); else patch -p1 -d "$work" --quiet <"$patch"; fi
+if [ "$patch" = none ]; then
+  sources=()
+else
+  if [ "$#" -eq 0 ] && grep -qE '^\+\+\+ b/.*\.(hpp|cuh|h)$' "$patch"; then
+    echo "build_variant.sh: $patch changes a header; name every CUDA source that includes it" \
+      "(e.g. src/backends/cuda/*.cu), or the objects not rebuilt keep the old one" >&2
+    exit 2
+  fi
+  patch -p1 -d "$work" --quiet <"$patch"
+fi
 for source in "${sources[@]}"; do
   object="$work/$(basename "$source").o"
   command="$(python3 - "$build/compile_commands.json" "$root/$source" "$root" "$work" "$object" <<'EOF'
