@@ -21,21 +21,18 @@ shift 2
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(realpath "${BUILD:-$root/build}")"
 sources=("$@")
+if [ ${#sources[@]} -eq 0 ] && [ "$patch" != none ] &&
+  grep -qE '^\+\+\+ b/.*\.(hpp|cuh|h)$' "$patch"; then
+  echo "build_variant.sh: $patch changes a header; name every CUDA source that includes it" \
+    "(e.g. src/backends/cuda/*.cu), or the objects not rebuilt keep the old one" >&2
+  exit 2
+fi
 [ ${#sources[@]} -gt 0 ] || sources=(src/backends/cuda/cuda_solver.cu)
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 git -C "$root" archive HEAD src include | tar -x -C "$work"
 cp "$build/src/libtridem_core.a" "$work/libtridem_core.a"
-if [ "$patch" = none ]; then
-  sources=()
-else
-  if [ "$#" -eq 0 ] && grep -qE '^\+\+\+ b/.*\.(hpp|cuh|h)$' "$patch"; then
-    echo "build_variant.sh: $patch changes a header; name every CUDA source that includes it" \
-      "(e.g. src/backends/cuda/*.cu), or the objects not rebuilt keep the old one" >&2
-    exit 2
-  fi
-  patch -p1 -d "$work" --quiet <"$patch"
-fi
+if [ "$patch" = none ]; then sources=(); else patch -p1 -d "$work" --quiet <"$patch"; fi
 for source in "${sources[@]}"; do
   object="$work/$(basename "$source").o"
   command="$(python3 - "$build/compile_commands.json" "$root/$source" "$root" "$work" "$object" <<'EOF'
