@@ -14,6 +14,6 @@ timeout 150 stdbuf -oL "$bin" --gtest_filter='Gpu/StateHash.*' --gtest_repeat=2 
 echo "== state hashes: exit $?"
 grep -iE 'hash|FAILED' "$out/state_hash.log" | sort | uniq -c | head -40
 start=$(date +%s)
-timeout "$limit" stdbuf -oL "$bin" --gtest_filter='Gpu*:*Cuda*:*Gpu*:Bonds.*-Gpu/StateHash.*' >"$out/tests.log" 2>&1
+timeout "$limit" stdbuf -oL "$bin" --gtest_filter="$gpu_tests" >"$out/tests.log" 2>&1
 echo "== suite: exit $? after $(( $(date +%s) - start )) s"
 grep -E '^\[  (PASSED|FAILED|SKIPPED) |tests? from .* ran|FAILED TEST' "$out/tests.log" | sort -u | head -60
