@@ -4,6 +4,7 @@
 // fewer as it loosens). Also the time the time loop waits per frame when the frame is
 // written beside the stepping (OutputSet::write_frame_beside) against writing it inline.
 //   tridem_frame_bench [n=100000] [steps=2] [repetitions=3] [backend=openmp] [dir]
+//                      [precision=double]
 // Prints a Markdown table; bench/README.md says how to read it.
 #include "io/output/vtk_frames.hpp"
 #include "tridem/measurements.hpp"
@@ -49,17 +50,20 @@ int main(int argc, char** argv) {
   const std::string backend = argc > 4 ? argv[4] : "openmp";
   const fs::path dir =
       argc > 5 ? fs::path(argv[5]) : fs::temp_directory_path() / "tridem_frame_bench";
+  const std::string precision = argc > 6 ? argv[6] : "double";
   fs::create_directories(dir);
 
   tridem::Scene scene = tridem::dense_pile(n);
   scene.simulation.backend = tridem::value_in(tridem::kBackendNames, backend).value();
+  scene.simulation.precision = tridem::value_in(tridem::kPrecisionNames, precision).value();
   auto solver = tridem::make_solver(scene, {});
   solver->advance(steps);
   tridem::Snapshot s;
   solver->snapshot(s, true);
   const double tri = static_cast<double>(s.size());
-  fmt::print("dense_pile({}): {} triangles after {} steps, {:.2f} contacts per triangle\n\n", n,
-             s.size(), steps, static_cast<double>(s.contacts.size()) / tri);
+  fmt::print(
+      "dense_pile({}), {} precision: {} triangles after {} steps, {:.2f} contacts per triangle\n\n",
+      n, precision, s.size(), steps, static_cast<double>(s.contacts.size()) / tri);
 
   const Case cases[] = {
       {"double, uncompressed (the former files)",

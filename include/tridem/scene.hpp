@@ -16,6 +16,10 @@ namespace tridem {
 
 enum class Backend { Auto, Cpu, OpenMP, Cuda };
 enum class Precision { Double, Float };
+/// The precision whose pairs compute in Real.
+template <class Real>
+inline constexpr Precision kPrecisionOf = sizeof(Real) == sizeof(float) ? Precision::Float
+                                                                        : Precision::Double;
 /// How the pairs that get a force are found. grid and all-pairs list every pair whose
 /// boxes overlap and give the same physics; single-domain (the paper's single-core
 /// baseline: every pair tested) and decomposition (the paper's sub-domains) list only the

@@ -48,6 +48,10 @@ struct Snapshot {
   std::vector<int> material;
   std::vector<Motion> motion;
   std::vector<ContactRecord> contacts;    ///< filled when contacts are requested
+  /// What the contacts' fx, fy, nx, ny and depth are: Float when the solver's pairs are
+  /// float (the float precision's mixed mode), so each is exactly a float32 and the
+  /// contacts CSV prints it as one (the fewest digits that read back the same float32).
+  Precision contact_precision = Precision::Double;
   /// The run's periodic cell (none without periodic boundaries): a grain across its sides
   /// is in the cell partly through its images, which the measurements count (measure/).
   PeriodicCell periodic;

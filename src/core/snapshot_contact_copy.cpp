@@ -14,6 +14,7 @@ class SnapshotContactCopy final : public ContactCopy {
   void finish(Snapshot& s) override {
     if (s.step != snap_.step)
       throw std::logic_error("ContactCopy::finish: not the snapshot of the step started");
+    s.contact_precision = snap_.contact_precision;
     s.contacts.insert(s.contacts.end(), snap_.contacts.begin(), snap_.contacts.end());
   }
 

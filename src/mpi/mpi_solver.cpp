@@ -801,6 +801,7 @@ void MpiSolver<Real>::gather_snapshot(Snapshot* out, bool with_contacts) const {
     s.body_first[nb] = m.first[nb];
   }
   s.contacts.clear();
+  s.contact_precision = kPrecisionOf<Real>;
   const std::size_t n_bonds = scene_.bonds.size();
   s.bond_a.resize(n_bonds);
   s.bond_b.resize(n_bonds);

@@ -67,6 +67,7 @@ inline void expect_identical(const Snapshot& a, const Snapshot& b) {
   expect_same_array("material", a.material, b.material);
   expect_same_array("motion", a.motion, b.motion);
 
+  EXPECT_EQ(a.contact_precision, b.contact_precision) << "how the contacts CSV prints them";
   ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "contact records";
   for (std::size_t k = 0; k < a.contacts.size(); ++k) {
     const ContactRecord &p = a.contacts[k], &q = b.contacts[k];

@@ -835,6 +835,7 @@ void CpuSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   fill_bonds(out, bonds_);
   out.periodic = cell_;
   out.contacts.clear();
+  out.contact_precision = kPrecisionOf<Real>;
   if (!with_contacts || step_ == 0) return;
   // The pairs of the last step are in old_pairs_ after the swap at the end of the step.
   append_contacts(out, n_, old_pairs_.offset.data(), old_pairs_.partner.data(), result_.data(),

@@ -44,6 +44,7 @@ class CudaContactCopy final : public ContactCopy {
     TRIDEM_CUDA_CHECK(cudaSetDevice(device_));
     TRIDEM_CUDA_CHECK(cudaEventSynchronize(landed_));
     in_flight_ = false;
+    out.contact_precision = kPrecisionOf<Real>;
     append_touching_rows(out, rows_.data(), count_, out.x.data(), out.y.data());
     if (periodic_) set_image_shifts(out, frame_, out.x.data(), out.y.data());
   }

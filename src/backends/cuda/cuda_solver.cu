@@ -746,6 +746,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   fill_bonds(out, bonds_.download_state());  // after the sync above
   out.periodic = cell_;
   out.contacts.clear();
+  out.contact_precision = kPrecisionOf<Real>;
   if (!with_contacts || step_ == 0) return;
   append_touching_contacts(out, static_cast<int>(n), pairs_->arrays(), stream_, out.x.data(),
                            out.y.data(), touching_);

@@ -97,7 +97,7 @@ template <class Real>
 void PairListBuilder<Real>::refuse_unless_pairs_fit(std::size_t pairs) const {
   const std::size_t have = partner_.size();
   if (pairs <= have) return;
-  const Precision precision = sizeof(Real) == sizeof(float) ? Precision::Float : Precision::Double;
+  const Precision precision = kPrecisionOf<Real>;
   const std::size_t need = (pairs - have) * gpu_pair_bytes(precision);
   std::size_t free_bytes = 0, total_bytes = 0;
   TRIDEM_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));

@@ -1,6 +1,7 @@
 // The cohesive bonds' outputs (docs/output-format.md, docs/fracture.md): per frame, the
 // bonds as a line set along their shared edges with their damage and broken flag as cell
 // data (ParaView: colour by damage; cracks are the broken lines), and bonds.csv's rows.
+#include "io/output/exact_number.hpp"
 #include "io/output/log_rows.hpp"
 #include "io/output/out_file.hpp"
 #include "io/output/snapshot_check.hpp"
@@ -47,8 +48,8 @@ void write_bond_row(OutFile& out, const Snapshot& s, double fracture_energy) {
     else
       ++intact;
   }
-  out.print("{},{:.17g},{},{},{},{:.17g}\n", s.step, s.time, intact, damaged, broken,
-            fracture_energy);
+  out.print("{},{},{},{},{},{}\n", s.step, io::Exact{s.time}, intact, damaged, broken,
+            io::Exact{fracture_energy});
 }
 
 }  // namespace io

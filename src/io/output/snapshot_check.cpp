@@ -1,8 +1,9 @@
 #include "io/output/snapshot_check.hpp"
-
 #include "tridem/error.hpp"
 
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace tridem::io {
 
@@ -54,11 +55,22 @@ void check_bodies(const Snapshot& s, std::string_view writing, bool members_only
 
 void check_contacts(const Snapshot& s, std::string_view writing) {
   const auto n = static_cast<std::int64_t>(s.size());
-  for (const ContactRecord& c : s.contacts)
+  // Float contacts are printed as float32s: a double among them would lose its digits.
+  const bool float32 = s.contact_precision == Precision::Float;
+  const auto not_float32 = [](double v) {
+    return static_cast<double>(static_cast<float>(v)) != v && !std::isnan(v);
+  };
+  for (const ContactRecord& c : s.contacts) {
     if (c.i < 0 || c.i >= n || c.j < 0 || c.j >= n)
       throw Error(fmt::format("cannot write {}: contact ({}, {}) at step {} names a particle "
                               "outside 0..{}",
                               writing, c.i, c.j, s.step, n - 1));
+    if (float32 && (not_float32(c.fx) || not_float32(c.fy) || not_float32(c.nx) ||
+                    not_float32(c.ny) || not_float32(c.depth)))
+      throw Error(fmt::format("cannot write {}: contact ({}, {}) at step {} is of float "
+                              "precision, but its force, normal or depth is not a float32",
+                              writing, c.i, c.j, s.step));
+  }
 }
 
 }  // namespace tridem::io

@@ -17,7 +17,8 @@ void check_snapshot(const Snapshot&, std::string_view writing);
 /// frame read back knows which body each triangle is in, and no more).
 void check_bodies(const Snapshot&, std::string_view writing, bool members_only = false);
 
-/// Throws Error unless every contact names two existing particles.
+/// Throws Error unless every contact names two existing particles and, in float precision
+/// (contact_precision), its force, normal and depth are float32s.
 void check_contacts(const Snapshot&, std::string_view writing);
 
 }  // namespace tridem::io

@@ -63,6 +63,8 @@ class ContactCopyTest : public BackendTest {
     Snapshot now;
     solver->snapshot(now, true);
     EXPECT_GE(now.contacts.size(), 5u) << "the scene must be in contact to test anything";
+    // The float precision's pairs are float32s, and the contacts CSV prints them as such.
+    EXPECT_EQ(now.contact_precision, GetParam().precision);
     expect_contacts_of_this_step(*solver, *copy, 5);
     expect_contacts_of_this_step(*solver, *copy, 1);
   }
