@@ -13,7 +13,7 @@ void write_contacts_csv(const std::filesystem::path& file, const Snapshot& s) {
   // Columns after py were appended by issue 15 (the contact network's normal and
   // tangential parts); readers of the first six are unaffected.
   out.write("i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth\n");
-  // Some 1 kB of 17-digit text per triangle at 6 contacts each: formatted in blocks on the
+  // Some 1 kB of text per triangle at 6 contacts each: formatted in blocks on the
   // OpenMP threads (OutFile::print_rows), byte for byte as one thread writes it.
   const auto rows = [&s](auto number) {
     return [&s, number](fmt::memory_buffer& text, std::size_t first, std::size_t last) {

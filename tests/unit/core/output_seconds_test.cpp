@@ -46,16 +46,18 @@ TEST(OutputSeconds, PartsAreMeasuredAndMakeTheTotal) {
 TEST(OutputNotes, ContactsCsvOfALargeRunIsNamed) {
   OutputSettings o;
   o.every = 1000;
-  const std::string note = output_notes(o, 1000000);
-  EXPECT_NE(note.find("about 1100 MB"), std::string::npos) << note;
+  const std::string note = output_notes(o, 1000000, Precision::Double);
+  EXPECT_NE(note.find("about 1090 MB"), std::string::npos) << note;
   EXPECT_NE(note.find("contacts_csv = false"), std::string::npos) << note;
-  EXPECT_EQ(output_notes(o, kLargeContactsCsv - 1), "");
+  // Float precision prints the contacts' forces, normals and depths as float32s: shorter.
+  EXPECT_NE(output_notes(o, 1000000, Precision::Float).find("about 880 MB"), std::string::npos);
+  EXPECT_EQ(output_notes(o, kLargeContactsCsv - 1, Precision::Double), "");
   OutputSettings no_csv = o;
   no_csv.contacts_csv = false;
-  EXPECT_EQ(output_notes(no_csv, 1000000), "");
+  EXPECT_EQ(output_notes(no_csv, 1000000, Precision::Double), "");
   OutputSettings no_frames = o;
   no_frames.every = 0;
-  EXPECT_EQ(output_notes(no_frames, 1000000), "");
+  EXPECT_EQ(output_notes(no_frames, 1000000, Precision::Double), "");
 }
 
 }  // namespace TRIDEM_TEST_FILE
