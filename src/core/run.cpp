@@ -122,7 +122,9 @@ RunSummary run_scene(Scene scene, const RunOptions& options) {
   if (log) {
     print_start(log, *solver, ts, free, scene.simulation.backend, last);
     if (relaxed) print_relaxation(log, *relaxed);
-    if (const std::string note = output_notes(scene.output, model.size(), scene.simulation.precision); !note.empty())
+    if (const std::string note =
+            output_notes(scene.output, model.size(), scene.simulation.precision);
+        !note.empty())
       fmt::print(log, "{}", note);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
