@@ -43,17 +43,6 @@ TEST(Contacts, CsvHoldsEveryContact) {
   EXPECT_EQ(test::numbers(lines[1]).size(), 12u);
 }
 
-/// The text of a CSV row's cells.
-std::vector<std::string> cells(const std::string& row) {
-  std::vector<std::string> out;
-  for (std::size_t at = 0;;) {
-    const std::size_t comma = row.find(',', at);
-    out.push_back(row.substr(at, comma - at));
-    if (comma == std::string::npos) return out;
-    at = comma + 1;
-  }
-}
-
 /// The sample with float precision's contacts: force, normal and depth float32s (set from
 /// float literals: GCC 12's -O3 drops a double-to-float-to-double round trip of two
 /// neighbouring fields, so they are not rounded here from doubles).
@@ -81,7 +70,7 @@ TEST(Contacts, FloatPrecisionCsvPrintsThePairsNumbersAsFloat32s) {
   EXPECT_EQ(lines[0], "i,j,fx,fy,px,py,nx,ny,fn,ft,sliding,depth");
   for (std::size_t k = 0; k < 2; ++k) {
     const ContactRecord& c = s.contacts[k];
-    const std::vector<std::string> text = cells(lines[1 + k]);
+    const std::vector<std::string> text = test::cells(lines[1 + k]);
     ASSERT_EQ(text.size(), 12u);
     // fx, fy, nx, ny, depth: read back as float32s, the same, and shortest.
     const std::pair<int, double> as_float[] = {
@@ -98,7 +87,7 @@ TEST(Contacts, FloatPrecisionCsvPrintsThePairsNumbersAsFloat32s) {
         {4, c.px}, {5, c.py}, {8, c.normal_force()}, {9, c.tangential_force()}};
     for (const auto& [column, value] : as_double)
       EXPECT_EQ(std::strtod(text[column].c_str(), nullptr), value) << "column " << column;
-    // In double precision the same numbers keep their 17 digits.
+    // In double precision the same numbers are printed as doubles, longer.
     EXPECT_EQ(test::numbers(double_lines[1 + k]),
               (std::vector<double>{double(c.i), double(c.j), c.fx, c.fy, c.px, c.py, c.nx, c.ny,
                                    c.normal_force(), c.tangential_force(), c.sliding ? 1.0 : 0.0,
@@ -107,7 +96,7 @@ TEST(Contacts, FloatPrecisionCsvPrintsThePairsNumbersAsFloat32s) {
   }
   // 0.6 for 0.60000002384185791, and so on: some 60 bytes fewer in row 1.
   EXPECT_LE(lines[1].size() + 40, double_lines[1].size());
-  EXPECT_EQ(cells(lines[1])[4], "0.3333333333333333");
+  EXPECT_EQ(test::cells(lines[1])[4], "0.3333333333333333");
 }
 
 TEST(Contacts, FloatPrecisionContactThatIsNotFloat32IsRefused) {

@@ -74,11 +74,16 @@ std::vector<std::string> read_lines(const std::filesystem::path& file) {
   return lines;
 }
 
+std::vector<std::string> cells(const std::string& row) {
+  std::vector<std::string> out;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+  return out;
+}
+
 std::vector<double> numbers(const std::string& row) {
   std::vector<double> out;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');)
-    out.push_back(std::strtod(cell.c_str(), nullptr));
+  for (const std::string& cell : cells(row)) out.push_back(std::strtod(cell.c_str(), nullptr));
   return out;
 }
 

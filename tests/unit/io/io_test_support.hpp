@@ -34,6 +34,8 @@ std::string read_file(const std::filesystem::path&);
 std::map<std::string, std::string> files_under(const std::filesystem::path& dir,
                                                const std::string& skip_extension = "");
 
+/// Splits one CSV row into the text of its cells.
+std::vector<std::string> cells(const std::string& row);
 /// Splits one CSV row of numbers.
 std::vector<double> numbers(const std::string& row);
 
