@@ -104,14 +104,18 @@ constexpr bool is_shown(FieldRole r) { return r == FieldRole::State || r == Fiel
 /* The CUDA solver's own: the free flag its kernels stage (1 for bodies moved by forces);
    the boxes of the last pair-list build, grown by the skin (until a grid build sets them
    they are the whole plane, so a single-domain solver, which never sets them, never asks
-   for a rebuild); the elastic energy of each row, summed on the host at logging steps. */
+   for a rebuild); the elastic energy of each row, summed on the host at logging steps; a
+   free particle's row energy of the step (RowEnergy: damping, friction, wall work), summed
+   by the gather from the loads it reads and added by the integration if the step is
+   written. */
 #define TRIDEM_GPU_ONLY_FIELDS(F)                                                            \
   F(free, free, std::uint8_t, 1, Model, m.motion[i] == Motion::Free, nullptr)                \
   F(build_lo_x, build_lo_x, Real, 1, Geometry, std::numeric_limits<Real>::lowest(), nullptr) \
   F(build_lo_y, build_lo_y, Real, 1, Geometry, std::numeric_limits<Real>::lowest(), nullptr) \
   F(build_hi_x, build_hi_x, Real, 1, Geometry, std::numeric_limits<Real>::max(), nullptr)    \
   F(build_hi_y, build_hi_y, Real, 1, Geometry, std::numeric_limits<Real>::max(), nullptr)    \
-  F(row_elastic, row_elastic, double, 1, Scratch, 0.0, nullptr)
+  F(row_elastic, row_elastic, double, 1, Scratch, 0.0, nullptr)                             \
+  F(row_step_energy, row_step_energy, double, 3, Scratch, 0.0, nullptr)
 
 #define TRIDEM_GPU_PARTICLE_FIELDS(F) TRIDEM_PARTICLE_FIELDS(F) TRIDEM_GPU_ONLY_FIELDS(F)
 

@@ -51,6 +51,23 @@ TRIDEM_HD inline RowEnergy row_energy(std::int64_t e, const Offset* offset, cons
 /// EnergyAccumulator order; host vectors or device pointers) when the backend writes it:
 /// its own row of pairs (row_energy) and, if free, what local damping took from it over
 /// the step from `before` to `after` under force f and torque m.
+/// `row`: row_energy of particle i's row (the CUDA gather sums it from the loads it reads
+/// anyway, so that the integration need not read the row again).
+template <class Sums, class Real>
+TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const RowEnergy& row, bool free,
+                                      const physics::Pose<double>& before,
+                                      const physics::Pose<double>& after, Vec2<Real> f, Real m,
+                                      double inv_mass, double inv_inertia, Vec2d g, double alpha,
+                                      double dt) {
+  sums[kDissipatedDamping][i] += row.damping;
+  sums[kDissipatedFriction][i] += row.friction;
+  sums[kWallWork][i] += row.wall_work;
+  if (free && alpha > 0)
+    sums[kDissipatedLocal][i] += physics::local_damping_dissipation(
+        before, after, Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)},
+        static_cast<double>(m), inv_mass, inv_inertia, g, alpha, dt);
+}
+
 template <class Sums, class Real, class Offset, class Index, class Record, class WallVelocity>
 TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* offset,
                                       const Index* partner, const Record* result,
@@ -59,14 +76,8 @@ TRIDEM_HD inline void add_step_energy(Sums& sums, std::int64_t i, const Offset* 
                                       const physics::Pose<double>& after, Vec2<Real> f, Real m,
                                       double inv_mass, double inv_inertia, Vec2d g, double alpha,
                                       double dt) {
-  const RowEnergy row = row_energy(i, offset, partner, result, wall_velocity, dt);
-  sums[kDissipatedDamping][i] += row.damping;
-  sums[kDissipatedFriction][i] += row.friction;
-  sums[kWallWork][i] += row.wall_work;
-  if (free && alpha > 0)
-    sums[kDissipatedLocal][i] += physics::local_damping_dissipation(
-        before, after, Vec2d{static_cast<double>(f.x), static_cast<double>(f.y)},
-        static_cast<double>(m), inv_mass, inv_inertia, g, alpha, dt);
+  add_step_energy(sums, i, row_energy(i, offset, partner, result, wall_velocity, dt), free, before,
+                  after, f, m, inv_mass, inv_inertia, g, alpha, dt);
 }
 
 }  // namespace tridem

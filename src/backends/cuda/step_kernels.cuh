@@ -159,8 +159,22 @@ __device__ inline physics::Pose<double> advanced_pose(const ParticleArrays<Real>
                                              sp.gravity, sp.local_damping, sp.dt);
 }
 
+/// `wall_velocity(j, v, w)` of row_energy (broadphase/row_energy.hpp): a moving wall's
+/// velocity at the step's start.
+template <class Real>
+__device__ inline auto wall_velocity_of(const ParticleArrays<Real>& p, const StepParams<Real>& sp) {
+  return [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
+    if (!sp.walls_move || p.free[j] != 0) return false;
+    v = {p.vx[j], p.vy[j]};
+    w = p.w[j];
+    return true;
+  };
+}
+
 /// Sums the forces of free particles and flags the lowest one whose step would run away
-/// (the state is not written yet). With `prescribed`, sums those of the other particles
+/// (the state is not written yet). A free particle's row energy is summed here too, from
+/// the loads just read (`row_step_energy`), so that the integration does not read the
+/// row again. With `prescribed`, sums those of the other particles
 /// instead: only output needs them (wall forces), and walls can touch thousands of grains.
 /// kBodies: the particles are members of bodies, whose runaway test is their body's
 /// (body_kernels.cuh), so none is made here. With bonds (bonds.count > 0), each particle adds
@@ -180,6 +194,10 @@ __global__ void gather_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepPa
   p.fy[i] = f.y;
   p.torque[i] = t;
   if (prescribed || kBodies) return;
+  const RowEnergy row = row_energy(i, q.offset, q.partner, q.load, wall_velocity_of(p, sp), sp.dt);
+  p.row_step_energy[0][i] = row.damping;
+  p.row_step_energy[1][i] = row.friction;
+  p.row_step_energy[2][i] = row.wall_work;
   if (physics::runaway_step(advanced_pose(p, sp, i), static_cast<double>(p.half_size[i]), sp.dt))
     atomicMin(&status->bad, i);
 }
@@ -207,22 +225,21 @@ __device__ inline void update_geometry(const ParticleArrays<Real>& p, int i,
 
 /// The energy of particle i's step as the CPU adds it (CpuSolver::add_step_energy): its
 /// own row of pairs and, if `is_free`, what local damping took from it (a body's member
-/// passes false: its body books the damping once).
+/// passes false: its body books the damping once). `gathered`: the gather summed the row
+/// (row_step_energy: a free particle without bodies), else it is summed here.
 template <class Real>
 __device__ inline void add_step_energy(const ParticleArrays<Real>& p, const PairArrays<Real>& q,
                                        const StepParams<Real>& sp, int i, bool is_free,
                                        const physics::Pose<double>& before,
-                                       const physics::Pose<double>& after) {
-  auto wall_velocity = [&p, &sp](std::int64_t j, Vec2d& v, double& w) {
-    if (!sp.walls_move || p.free[j] != 0) return false;
-    v = {p.vx[j], p.vy[j]};
-    w = p.w[j];
-    return true;
-  };
+                                       const physics::Pose<double>& after, bool gathered = false) {
+  const RowEnergy row =
+      gathered
+          ? RowEnergy{p.row_step_energy[0][i], p.row_step_energy[1][i], p.row_step_energy[2][i]}
+          : row_energy(i, q.offset, q.partner, q.load, wall_velocity_of(p, sp), sp.dt);
   double* const* sums = p.energy;
-  tridem::add_step_energy(sums, i, q.offset, q.partner, q.load, wall_velocity, is_free, before,
-                          after, Vec2<Real>{p.fx[i], p.fy[i]}, p.torque[i], p.inv_mass[i],
-                          p.inv_inertia[i], sp.gravity, sp.local_damping, sp.dt);
+  tridem::add_step_energy(sums, i, row, is_free, before, after, Vec2<Real>{p.fx[i], p.fy[i]},
+                          p.torque[i], p.inv_mass[i], p.inv_inertia[i], sp.gravity,
+                          sp.local_damping, sp.dt);
 }
 
 /// Lees-Edwards: the boundary's work through particle i's row of pairs this step, added to
@@ -248,7 +265,8 @@ __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, Ste
     if (status->failed()) return;
     const physics::Pose<double> before = pose(p, i);
     physics::Pose<double> pose = advanced_pose(p, sp, i);
-    add_step_energy(p, q, sp, i, p.free[i] != 0, before, pose);
+    const bool is_free = p.free[i] != 0;
+    add_step_energy(p, q, sp, i, is_free, before, pose, is_free);
     if constexpr (kPeriodic) {
       add_image_work(p, sp, i);
       if (p.free[i] != 0)
