@@ -80,14 +80,8 @@ struct Snapshot {
   }
 
   std::size_t size() const { return x.size(); }
-  void resize(std::size_t n) {
-    for_each_field([&](auto field) {
-      for_each_array(column(field), [n](std::vector<double>& v, int) { v.resize(n); });
-    });
-    for (auto* v : {&x1, &y1, &x2, &y2, &x3, &y3, &mass, &inertia}) v->resize(n);
-    material.resize(n);
-    motion.resize(n);
-  }
+  /// Sizes every per-particle array for n particles (src/core/snapshot_resize.cpp).
+  void resize(std::size_t n);
   /// Sizes the body columns for `bodies` bodies of the size() triangles; 0 empties them.
   void resize_bodies(std::size_t bodies) {
     const std::size_t members = bodies > 0 ? size() : 0;

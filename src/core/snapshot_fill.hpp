@@ -26,7 +26,9 @@ inline void copy_shown_fields(Snapshot& out, const Columns& from) {
   Snapshot::for_each_field([&](auto field) {
     for_each_array(out.column(field), [&](std::vector<double>& to, int k) {
       const auto& values = array_at(from.column(field), k);
-      for (std::size_t i = 0; i < to.size(); ++i) to[i] = static_cast<double>(values[i]);
+      const auto n = static_cast<std::ptrdiff_t>(to.size());
+#pragma omp parallel for schedule(static) if (n > 65536)
+      for (std::ptrdiff_t i = 0; i < n; ++i) to[i] = static_cast<double>(values[i]);
     });
   });
 }
