@@ -74,6 +74,10 @@ int main(int argc, char** argv) {
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::Zlib}},
       {"float32, uncompressed",
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float32, tridem::VtkCompression::None}},
+      {"float32, lzma",
+       {tridem::Encoding::Binary, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma}},
+      {"float32, lzma, appended raw",
+       {tridem::Encoding::Appended, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma}},
   };
   fmt::print("| format | frame B/tri | contacts .vtp B/tri | both B/tri | s per frame (both) |\n"
              "|---|---:|---:|---:|---:|\n");

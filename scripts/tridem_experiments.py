@@ -119,16 +119,15 @@ _VTK_TYPES = {"Float32": "<f4", "Float64": "<f8", "Int32": "<i4", "Int64": "<i8"
               "UInt8": "u1", "UInt32": "<u4", "UInt64": "<u8"}
 
 
-def _vtk_array(text, dtype, compressed, header):
+def _vtk_array(text, dtype, decompress, header):
     """One DataArray's text: ascii numbers, or VTK's base64 binary (UInt64 or UInt32
-    header), zlib-compressed blocks or not."""
+    header), its blocks compressed (decompress: zlib's or lzma's) or not (None)."""
     import base64
-    import zlib
     text = "".join(text.split())
     if not text:
         return np.zeros(0, dtype)
     word = np.dtype(header)
-    if not compressed:
+    if decompress is None:
         raw = base64.b64decode(text)
         return np.frombuffer(raw[word.itemsize:], dtype=dtype)
     # The header (blocks, block size, last block's size, each block's compressed size) is
@@ -140,7 +139,7 @@ def _vtk_array(text, dtype, compressed, header):
     data = base64.b64decode(text[chars:])
     out, at = [], 0
     for size in sizes:
-        out.append(zlib.decompress(data[at:at + int(size)]))
+        out.append(decompress(data[at:at + int(size)]))
         at += int(size)
     return np.frombuffer(b"".join(out), dtype=dtype)
 
@@ -148,9 +147,12 @@ def _vtk_array(text, dtype, compressed, header):
 def read_frame(path):
     """A frame (frames/frame_STEP.vtu) as a dict: 'time', 'vertices' (n x 3 x 2) and each
     cell array by name (velocity as n x 3, motion, body, material, ...)."""
+    import lzma
     import xml.etree.ElementTree as ET
+    import zlib
     root = ET.parse(path).getroot()
-    compressed = root.get("compressor") == "vtkZLibDataCompressor"
+    decompress = {"vtkZLibDataCompressor": zlib.decompress,
+                  "vtkLZMADataCompressor": lzma.decompress}.get(root.get("compressor"))
     header = _VTK_TYPES[root.get("header_type", "UInt32")]
     frame = {}
     for a in root.iter("DataArray"):
@@ -158,7 +160,7 @@ def read_frame(path):
         if a.get("format") == "ascii":
             values = np.array((a.text or "").split(), dtype=dtype)
         else:
-            values = _vtk_array(a.text or "", dtype, compressed, header)
+            values = _vtk_array(a.text or "", dtype, decompress, header)
         comps = int(a.get("NumberOfComponents", "1"))
         name = a.get("Name", "")
         frame[name] = values.reshape(-1, comps) if comps > 1 else values

@@ -41,8 +41,10 @@ inline constexpr Spellings<Encoding, 3> kEncodingNames{
 inline constexpr Spellings<VtkPrecision, 2> kVtkPrecisionNames{
     {{"float32", VtkPrecision::Float32}, {"double", VtkPrecision::Float64}}};
 
-inline constexpr Spellings<VtkCompression, 2> kVtkCompressionNames{
-    {{"zlib", VtkCompression::Zlib}, {"none", VtkCompression::None}}};
+inline constexpr Spellings<VtkCompression, 3> kVtkCompressionNames{
+    {{"zlib", VtkCompression::Zlib},
+     {"none", VtkCompression::None},
+     {"lzma", VtkCompression::Lzma}}};
 
 inline constexpr Spellings<Motion, 3> kMotionNames{
     {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};

@@ -2,7 +2,8 @@
 """ParaView's reader on tridem's frames: VTK's own vtkXMLUnstructuredGridReader and
 vtkXMLPolyDataReader (Debian's python3-vtk9, the library ParaView is built on) read the
 frames and contact networks a run writes in the default format (binary, Float32, zlib),
-in the former one (Float64, uncompressed) and in VTK's raw appended data; point and cell counts are those of the
+in the former one (Float64, uncompressed), in VTK's raw appended data and compressed by
+vtkLZMADataCompressor; point and cell counts are those of the
 run, and the last frame's cell data and vertices are final.csv's state within float32
 rounding (exactly, in Float64).
 
@@ -101,6 +102,10 @@ verify_cases = [
     ("appended", 'vtk_encoding = "appended"\n', 2.0 ** -23, "float"),
     ("appended_double", 'vtk_encoding = "appended"\nvtk_precision = "double"\n'
      'vtk_compression = "none"\n', 0.0, "double"),
+    # vtkLZMADataCompressor's blocks, inline and appended (the doubles exactly).
+    ("lzma", 'vtk_compression = "lzma"\n', 2.0 ** -23, "float"),
+    ("lzma_appended_double", 'vtk_encoding = "appended"\nvtk_precision = "double"\n'
+     'vtk_compression = "lzma"\n', 0.0, "double"),
 ]
 for name, extra, tolerance, type_name in verify_cases:
     out = os.path.join(work, name)

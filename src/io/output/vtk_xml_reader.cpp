@@ -8,6 +8,7 @@
 #include <bit>
 #include <charconv>
 #include <cstring>
+#include <lzma.h>
 #include <span>
 #include <zlib.h>
 
@@ -146,10 +147,36 @@ std::vector<double> parse_ascii(const VtkXmlFile& f, std::string_view text,
   }
 }
 
-/// The values of a vtkZLibDataCompressor array: `bytes` is its header, [blocks, block size,
-/// size of the last block (0: a full one), compressed size of each block], then the blocks.
+/// One compressed block of `size` bytes at `in` into `want` bytes at `out`: a zlib stream,
+/// or with `lzma` an .xz stream (vtkLZMADataCompressor). "" when it holds exactly `want`
+/// bytes, else what went wrong.
+std::string inflate_block(bool lzma, const std::uint8_t* in, std::size_t size, std::uint8_t* out,
+                          std::size_t want) {
+  if (lzma) {
+    // The decoder takes the dictionary the stream names: ours are 32 KiB, VTK's highest
+    // level names 64 MiB; a stream that asks for more than 128 MiB is refused, not
+    // allocated for.
+    std::uint64_t memory_limit = std::uint64_t{1} << 27;
+    std::size_t in_pos = 0, out_pos = 0;
+    const lzma_ret rc = lzma_stream_buffer_decode(&memory_limit, 0, nullptr, in, &in_pos, size, out,
+                                                  &out_pos, want);
+    if (rc != LZMA_OK) return fmt::format("lzma error {}", static_cast<int>(rc));
+    if (in_pos != size || out_pos != want)
+      return fmt::format("{} of its {} bytes inflate to {} bytes", in_pos, size, out_pos);
+    return {};
+  }
+  uLongf length = static_cast<uLongf>(want);
+  const int rc = uncompress(out, &length, in, static_cast<uLong>(size));
+  if (rc != Z_OK) return fmt::format("zlib error {}", rc);
+  if (length != want) return fmt::format("it inflates to {} bytes", length);
+  return {};
+}
+
+/// The values of a vtkZLibDataCompressor (or, with `lzma`, vtkLZMADataCompressor) array:
+/// `bytes` is its header, [blocks, block size, size of the last block (0: a full one),
+/// compressed size of each block], then the blocks.
 std::vector<std::uint8_t> inflate_blocks(const VtkXmlFile& f, std::span<const std::uint8_t> bytes,
-                                         std::size_t header, std::size_t expected,
+                                         std::size_t header, std::size_t expected, bool lzma,
                                          std::string_view label) {
   const auto word = [&](std::size_t k) -> std::uint64_t {
     if ((k + 1) * header > bytes.size())
@@ -162,8 +189,8 @@ std::vector<std::uint8_t> inflate_blocks(const VtkXmlFile& f, std::span<const st
     malformed(f, fmt::format("{}: its compression header names {} blocks", label, blocks));
   const std::uint64_t total =
       blocks == 0 ? 0 : (blocks - 1) * block_size + (last == 0 ? block_size : last);
-  // zlib expands by at most about 1032:1; a header claiming more is not to be believed
-  // (nor allocated for).
+  // zlib expands by at most about 1032:1 (an .xz block of 32 KiB by less); a header
+  // claiming more is not to be believed (nor allocated for).
   constexpr std::uint64_t kMaxRatio = 1100;
   if (total != expected || (blocks > 0 && (block_size == 0 || last > block_size)) ||
       total > kMaxRatio * (bytes.size() + 1))
@@ -177,12 +204,11 @@ std::vector<std::uint8_t> inflate_blocks(const VtkXmlFile& f, std::span<const st
     const std::size_t want = b + 1 == blocks ? expected - begin : block_size;
     if (size > bytes.size() - std::min(at, bytes.size()))
       malformed(f, fmt::format("{}: block {} is cut short", label, b));
-    uLongf length = static_cast<uLongf>(want);
-    const int rc =
-        uncompress(values.data() + begin, &length, bytes.data() + at, static_cast<uLong>(size));
-    if (rc != Z_OK || length != want)
-      malformed(f, fmt::format("{}: block {} does not inflate to {} bytes (zlib error {})", label,
-                               b, want, rc));
+    const std::string why =
+        inflate_block(lzma, bytes.data() + at, size, values.data() + begin, want);
+    if (!why.empty())
+      malformed(f,
+                fmt::format("{}: block {} does not inflate to {} bytes ({})", label, b, want, why));
     at += size;
   }
   if (at != bytes.size())
@@ -244,8 +270,10 @@ std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, boo
                                                                               : 0;
   if (header == 0) malformed(f, fmt::format("unsupported header_type '{}'", header_type));
   const std::string compressor = attribute(f.root, "compressor");
-  if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
-    malformed(f, fmt::format("compressor '{}' is not supported (only vtkZLibDataCompressor)",
+  const bool lzma = compressor == "vtkLZMADataCompressor";
+  if (!compressor.empty() && compressor != "vtkZLibDataCompressor" && !lzma)
+    malformed(f, fmt::format("compressor '{}' is not supported (only vtkZLibDataCompressor "
+                             "and vtkLZMADataCompressor)",
                              compressor));
 
   std::vector<std::uint8_t> bytes;
@@ -258,7 +286,7 @@ std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, boo
   const std::size_t expected = count * word_size;
   std::size_t skip = 0;
   if (!compressor.empty()) {
-    bytes = inflate_blocks(f, bytes, header, expected, label);
+    bytes = inflate_blocks(f, bytes, header, expected, lzma, label);
   } else {
     if (bytes.size() < header) malformed(f, fmt::format("{} is too short", label));
     const double stated =

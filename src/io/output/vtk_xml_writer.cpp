@@ -3,6 +3,7 @@
 #include "io/output/base64.hpp"
 #include "tridem/error.hpp"
 
+#include <lzma.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -27,6 +28,44 @@ constexpr std::string_view type_name(VtkWord word) {
 /// (measured in docs/output-format.md), in a third of the time.
 constexpr int kZlibLevel = 1;
 
+/// LZMA's fastest preset with a dictionary of one block (a larger one finds nothing more in
+/// a 32 KiB block and costs its set-up on every block: 1 MiB, the preset's own, wrote a
+/// dense pile's frame some six times slower for the same bytes; docs/output-format.md).
+constexpr std::uint32_t kLzmaPreset = 0;
+
+std::string_view compressor_name(VtkCompression compression) {
+  return compression == VtkCompression::Lzma ? "vtkLZMADataCompressor" : "vtkZLibDataCompressor";
+}
+
+/// The largest a block of `size` bytes may become.
+std::size_t compressed_bound(VtkCompression compression, std::size_t size) {
+  return compression == VtkCompression::Lzma ? lzma_stream_buffer_bound(size)
+                                             : compressBound(static_cast<uLong>(size));
+}
+
+/// `size` bytes at `in` compressed as one block into `out` (room for compressed_bound):
+/// as vtkZLibDataCompressor writes it (a zlib stream), or as vtkLZMADataCompressor does
+/// (an .xz stream with a CRC64 check). The compressed size, or 0 with `error` set.
+std::size_t compress_block(VtkCompression compression, const std::uint8_t* in, std::size_t size,
+                           std::uint8_t* out, std::size_t room, int& error) {
+  if (compression == VtkCompression::Lzma) {
+    lzma_options_lzma options;
+    lzma_lzma_preset(&options, kLzmaPreset);
+    options.dict_size = std::max<std::uint32_t>(
+        LZMA_DICT_SIZE_MIN, static_cast<std::uint32_t>(VtkXmlWriter::kBlockSize));
+    lzma_filter filters[] = {{LZMA_FILTER_LZMA2, &options}, {LZMA_VLI_UNKNOWN, nullptr}};
+    std::size_t used = 0;
+    const lzma_ret rc =
+        lzma_stream_buffer_encode(filters, LZMA_CHECK_CRC64, nullptr, in, size, out, &used, room);
+    error = rc == LZMA_OK ? 0 : static_cast<int>(rc);
+    return error == 0 ? used : 0;
+  }
+  uLongf length = static_cast<uLongf>(room);
+  const int rc = compress2(out, &length, in, static_cast<uLong>(size), kZlibLevel);
+  error = rc == Z_OK ? 0 : rc;
+  return error == 0 ? length : 0;
+}
+
 template <class T>
 T load(const std::uint8_t* p) {
   T value;
@@ -45,7 +84,10 @@ void VtkXmlWriter::begin_file(OutFile& out, std::string_view type) {
   const char* order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   out.print("<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\"{}>\n",
-            type, order, format_.compressed() ? " compressor=\"vtkZLibDataCompressor\"" : "");
+            type, order,
+            format_.compressed()
+                ? fmt::format(" compressor=\"{}\"", compressor_name(format_.compression))
+                : std::string());
 }
 
 void VtkXmlWriter::end_file(OutFile& out) {
@@ -105,28 +147,29 @@ std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
   // (VTK's own writer then writes the block size; both read back the same).
   header_[2] = data.size() % kBlockSize;
   // Each block is compressed on its own (that is VTK's format), so the blocks go to the
-  // OpenMP threads, each into a slot of the largest size zlib may need, then closed up in
-  // order: zlib is the slowest part of writing a frame.
-  const std::size_t slot = compressBound(static_cast<uLong>(kBlockSize));
+  // OpenMP threads, each into a slot of the largest size the compressor may need, then
+  // closed up in order: compression is the slowest part of writing a frame.
+  const VtkCompression compression = format_.compression;
+  const std::size_t slot = compressed_bound(compression, kBlockSize);
   compressed_.resize(blocks * slot);
   const auto count = static_cast<std::ptrdiff_t>(blocks);
-  int failure = Z_OK;
+  int failure = 0;
 #pragma omp parallel for schedule(dynamic, 4) if (blocks > 1)
   for (std::ptrdiff_t b = 0; b < count; ++b) {
     const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
     const std::size_t size = std::min(kBlockSize, data.size() - begin);
-    uLongf length = compressBound(static_cast<uLong>(size));
-    const int rc = compress2(compressed_.data() + static_cast<std::size_t>(b) * slot, &length,
-                             data.data() + begin, static_cast<uLong>(size), kZlibLevel);
-    if (rc != Z_OK) {
+    int error = 0;
+    header_[3 + static_cast<std::size_t>(b)] =
+        compress_block(compression, data.data() + begin, size,
+                       compressed_.data() + static_cast<std::size_t>(b) * slot, slot, error);
+    if (error != 0) {
 #pragma omp atomic write
-      failure = rc;
+      failure = error;
     }
-    header_[3 + static_cast<std::size_t>(b)] = length;
   }
-  if (failure != Z_OK)
-    throw RunError(fmt::format("cannot compress an array of '{}': zlib error {}",
-                               out.path().string(), failure));
+  if (failure != 0)
+    throw RunError(fmt::format("cannot compress an array of '{}': {} error {}", out.path().string(),
+                               compression == VtkCompression::Lzma ? "lzma" : "zlib", failure));
   std::size_t used = 0;
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::size_t length = header_[3 + b];

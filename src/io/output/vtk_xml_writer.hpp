@@ -2,9 +2,10 @@
 // The pieces every VTK XML file we write shares: the root element and data arrays in the
 // run's VtkFormat. Binary arrays are base64, as VTK's own writer stores inline data:
 // uncompressed, a UInt64 byte count followed by the raw values, encoded as one run;
-// compressed (vtkZLibDataCompressor), the header [number of blocks, block size, size of
-// the last block, compressed size of each block] (UInt64s) encoded as one run, then the
-// blocks, each compressed by zlib on its own, as a second run.
+// compressed (vtkZLibDataCompressor or vtkLZMADataCompressor), the header [number of
+// blocks, block size, size of the last block, compressed size of each block] (UInt64s)
+// encoded as one run, then the blocks, each compressed by zlib (or as an .xz stream) on its
+// own, as a second run.
 #include "io/output/out_file.hpp"
 #include "tridem/output.hpp"
 

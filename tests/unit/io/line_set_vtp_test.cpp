@@ -69,7 +69,8 @@ TEST(LineSetVtp, BondsReadBack) {
   for (const VtkFormat format :
        {VtkFormat{Encoding::Ascii, VtkPrecision::Float64},
         VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::None},
-        VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::Zlib}}) {
+        VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::Zlib},
+        VtkFormat{Encoding::Appended, VtkPrecision::Float64, VtkCompression::Lzma}}) {
     write_bonds_vtp(tmp.path() / "b.vtp", s, format);
     Snapshot r;
     read_bonds_vtp(tmp.path() / "b.vtp", r);

@@ -54,6 +54,12 @@ TEST(Vtu, AppendedRoundTrip) {
 TEST(Vtu, CompressedAppendedRoundTrip) {
   expect_round_trip({Encoding::Appended, VtkPrecision::Float64, VtkCompression::Zlib});
 }
+TEST(Vtu, LzmaBinaryRoundTrip) {
+  expect_round_trip({Encoding::Binary, VtkPrecision::Float64, VtkCompression::Lzma});
+}
+TEST(Vtu, LzmaAppendedRoundTrip) {
+  expect_round_trip({Encoding::Appended, VtkPrecision::Float64, VtkCompression::Lzma});
+}
 
 TEST(Vtu, DeclaresTheRequestedEncoding) {
   test::TempDir tmp;
@@ -118,8 +124,8 @@ TEST(Vtu, DuplicateIdIsRefused) {
   EXPECT_THROW(read_vtu_frame(file), Error);
 }
 
-/// Each malformation in the former format (Float64, uncompressed) and the default one
-/// (Float32, zlib).
+/// Each malformation in the former format (Float64, uncompressed), the default one
+/// (Float32, zlib) and with LZMA.
 class VtuMalformed : public ::testing::TestWithParam<VtkFormat> {
  protected:
   void SetUp() override {
@@ -164,20 +170,57 @@ TEST_P(VtuMalformed, WrongCellCount) {
 }
 TEST_P(VtuMalformed, UnknownFormat) { expect_refused("format=\"binary\"", "format=\"appended\""); }
 
-INSTANTIATE_TEST_SUITE_P(Formats, VtuMalformed,
-                         ::testing::Values(VtkFormat{Encoding::Binary, VtkPrecision::Float64,
-                                                     VtkCompression::None},
-                                           VtkFormat{}),
-                         [](const ::testing::TestParamInfo<VtkFormat>& p) {
-                           return p.param.compressed() ? std::string("Compressed")
-                                                       : std::string("Plain");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Formats, VtuMalformed,
+    ::testing::Values(VtkFormat{Encoding::Binary, VtkPrecision::Float64, VtkCompression::None},
+                      VtkFormat{},
+                      VtkFormat{Encoding::Binary, VtkPrecision::Float32, VtkCompression::Lzma}),
+    [](const ::testing::TestParamInfo<VtkFormat>& p) {
+      return p.param.compression == VtkCompression::Lzma ? std::string("Lzma")
+             : p.param.compressed()                      ? std::string("Compressed")
+                                                         : std::string("Plain");
+    });
 
 /// A compressed frame with something else broken.
 class VtuCompressedMalformed : public VtuMalformed {
  protected:
   VtkFormat format() const override { return {}; }
+  /// The torque array's text is two base64 runs: the header (4 UInt64s: 44 characters with
+  /// its padding) then the block; a changed character in the block breaks its stream or
+  /// its checksum.
+  void expect_corrupt_block_refused() {
+    const std::string head = "Name=\"torque\" NumberOfComponents=\"1\" format=\"binary\">\n";
+    const auto at = text_.find(head);
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t block = at + head.size() + 44;
+    const std::string original = text_.substr(block, 8);
+    std::string changed = original;
+    for (char& c : changed) c = c == 'A' ? 'B' : 'A';
+    expect_refused(head + text_.substr(at + head.size(), 44) + original,
+                   head + text_.substr(at + head.size(), 44) + changed);
+  }
 };
+
+/// The same with vtkLZMADataCompressor's .xz blocks.
+class VtuLzmaMalformed : public VtuCompressedMalformed {
+ protected:
+  VtkFormat format() const override {
+    return {Encoding::Binary, VtkPrecision::Float32, VtkCompression::Lzma};
+  }
+};
+
+TEST_F(VtuLzmaMalformed, DeclaresItsCompressor) {
+  EXPECT_NE(text_.find("compressor=\"vtkLZMADataCompressor\""), std::string::npos);
+  EXPECT_EQ(read_vtu_frame(file_).material, test::sample_snapshot().material);
+}
+TEST_F(VtuLzmaMalformed, CorruptBlock) { expect_corrupt_block_refused(); }
+TEST_F(VtuLzmaMalformed, ZlibBlocksReadAsLzma) {
+  // A zlib frame that claims LZMA: its blocks are no .xz streams.
+  file_ = tmp_.path() / "zlib.vtu";
+  write_vtu_frame(file_, test::sample_snapshot(), VtkFormat{});
+  text_ = test::read_file(file_);
+  expect_refused("vtkZLibDataCompressor", "vtkLZMADataCompressor");
+}
 
 TEST_F(VtuCompressedMalformed, OtherCompressor) {
   expect_refused("vtkZLibDataCompressor", "vtkLZ4DataCompressor");
@@ -191,20 +234,7 @@ TEST_F(VtuCompressedMalformed, UncompressedReadAsCompressed) {
   expect_refused("header_type=\"UInt64\"",
                  "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\"");
 }
-TEST_F(VtuCompressedMalformed, CorruptBlock) {
-  // The torque array's text is two base64 runs: the header (4 UInt64s: 44 characters with
-  // its padding) then the block; a changed character in the block breaks its deflate
-  // stream or its checksum.
-  const std::string head = "Name=\"torque\" NumberOfComponents=\"1\" format=\"binary\">\n";
-  const auto at = text_.find(head);
-  ASSERT_NE(at, std::string::npos);
-  const std::size_t block = at + head.size() + 44;
-  const std::string original = text_.substr(block, 8);
-  std::string changed = original;
-  for (char& c : changed) c = c == 'A' ? 'B' : 'A';
-  expect_refused(head + text_.substr(at + head.size(), 44) + original,
-                 head + text_.substr(at + head.size(), 44) + changed);
-}
+TEST_F(VtuCompressedMalformed, CorruptBlock) { expect_corrupt_block_refused(); }
 
 /// The appended encoding: the arrays' bytes after the XML, each element naming its offset.
 class VtuAppendedMalformed : public VtuMalformed {

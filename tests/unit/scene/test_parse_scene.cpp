@@ -197,6 +197,10 @@ vtk_compression = "none"
   EXPECT_EQ(s.output.encoding, Encoding::Appended);
   EXPECT_EQ(s.output.precision, VtkPrecision::Float64);
   EXPECT_EQ(s.output.compression, VtkCompression::None);
+  EXPECT_EQ(parse_scene(std::string(kHead) + triangle + "[output]\nvtk_compression = \"lzma\"\n",
+                        "lzma.toml")
+                .output.compression,
+            VtkCompression::Lzma);
   try {
     parse_scene(std::string(kHead) + triangle + "[output]\nvtk_encoding = \"raw\"\n", "bad.toml");
     ADD_FAILURE() << "accepted vtk_encoding = \"raw\"";
