@@ -29,8 +29,9 @@ constexpr std::string_view type_name(VtkWord word) {
 constexpr int kZlibLevel = 1;
 
 /// LZMA's fastest preset with a dictionary of one block (a larger one finds nothing more in
-/// a 32 KiB block and costs its set-up on every block: 1 MiB, the preset's own, wrote a
-/// dense pile's frame some six times slower for the same bytes; docs/output-format.md).
+/// a 32 KiB block and costs its set-up on every block: 1 MiB, the preset's own, compressed
+/// a dense pile's frame some five times slower to the same bytes; docs/performance.md,
+/// "Output frames", item 9).
 constexpr std::uint32_t kLzmaPreset = 0;
 
 std::string_view compressor_name(VtkCompression compression) {
