@@ -1,6 +1,7 @@
 #include "io/output/vtk_xml_reader.hpp"
 
 #include "io/output/base64.hpp"
+#include "io/output/vtk_xml_writer.hpp"
 #include "tridem/error.hpp"
 
 #include <fmt/format.h>
@@ -270,11 +271,12 @@ std::vector<double> parse_binary(const VtkXmlFile& f, std::string_view text, boo
                                                                               : 0;
   if (header == 0) malformed(f, fmt::format("unsupported header_type '{}'", header_type));
   const std::string compressor = attribute(f.root, "compressor");
-  const bool lzma = compressor == "vtkLZMADataCompressor";
-  if (!compressor.empty() && compressor != "vtkZLibDataCompressor" && !lzma)
-    malformed(f, fmt::format("compressor '{}' is not supported (only vtkZLibDataCompressor "
-                             "and vtkLZMADataCompressor)",
-                             compressor));
+  const std::string_view zlib_name = compressor_name(VtkCompression::Zlib);
+  const std::string_view lzma_name = compressor_name(VtkCompression::Lzma);
+  const bool lzma = compressor == lzma_name;
+  if (!compressor.empty() && compressor != zlib_name && !lzma)
+    malformed(f, fmt::format("compressor '{}' is not supported (only {} and {})", compressor,
+                             zlib_name, lzma_name));
 
   std::vector<std::uint8_t> bytes;
   if (appended) {

@@ -2,9 +2,8 @@
 // Just enough XML to read back the VTK files this project writes: elements, attributes
 // and DataArray contents in "ascii" or inline "binary" format or "appended" to the raw
 // <AppendedData> block, the binary ones plain or compressed by vtkZLibDataCompressor or
-// vtkLZMADataCompressor. It
-// is not a general XML parser (no entities, no base64 appended data, no other compressor)
-// and says so when it meets one.
+// vtkLZMADataCompressor. It is not a general XML parser (no entities, no base64 appended
+// data, no other compressor) and says so when it meets one.
 #include <cstdint>
 #include <map>
 #include <string>

@@ -34,10 +34,6 @@ constexpr int kZlibLevel = 1;
 /// "Output frames", item 9).
 constexpr std::uint32_t kLzmaPreset = 0;
 
-std::string_view compressor_name(VtkCompression compression) {
-  return compression == VtkCompression::Lzma ? "vtkLZMADataCompressor" : "vtkZLibDataCompressor";
-}
-
 /// The largest a block of `size` bytes may become.
 std::size_t compressed_bound(VtkCompression compression, std::size_t size) {
   return compression == VtkCompression::Lzma ? lzma_stream_buffer_bound(size)

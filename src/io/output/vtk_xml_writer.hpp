@@ -26,6 +26,12 @@ namespace tridem::io {
 /// The value types of the arrays we write.
 enum class VtkWord { Float32, Float64, Int32, Int64, UInt8 };
 
+/// VTK's class of a compression, as a file's root names it (compressor="..."): what the
+/// writer writes and the reader accepts.
+constexpr std::string_view compressor_name(VtkCompression compression) {
+  return compression == VtkCompression::Lzma ? "vtkLZMADataCompressor" : "vtkZLibDataCompressor";
+}
+
 /// Writes VTK XML files in one format. It keeps its buffers from array to array and from
 /// file to file: a writer kept for a run allocates only for its first (or a larger) frame.
 /// One thread at a time.
