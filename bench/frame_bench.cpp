@@ -4,8 +4,9 @@
 // fewer as it loosens). Also the time the time loop waits per frame when the frame is
 // written beside the stepping (OutputSet::write_frame_beside) against writing it inline.
 //   tridem_frame_bench [n=100000] [steps=2] [repetitions=3] [backend=openmp] [dir]
-//                      [precision=double]
-// Prints a Markdown table; bench/README.md says how to read it.
+//                      [precision=double] [sections=all]
+// Prints Markdown tables; bench/README.md says how to read them. sections=parts prints only
+// where a default frame's time goes (its parts, and the writer's phases within them).
 #include "io/output/vtk_frames.hpp"
 #include "startup_environment.hpp"
 #include "tridem/measurements.hpp"
@@ -55,6 +56,12 @@ int main(int argc, char** argv) {
   const fs::path dir =
       argc > 5 ? fs::path(argv[5]) : fs::temp_directory_path() / "tridem_frame_bench";
   const std::string precision = argc > 6 ? argv[6] : "double";
+  const std::string sections = argc > 7 ? argv[7] : "all";
+  if (sections != "all" && sections != "parts") {
+    fmt::print(stderr, "sections must be all or parts, not '{}'\n", sections);
+    return EXIT_FAILURE;
+  }
+  const bool all = sections == "all";
   fs::create_directories(dir);
 
   tridem::Scene scene = tridem::dense_pile(n);
@@ -83,9 +90,11 @@ int main(int argc, char** argv) {
       {"float32, lzma, appended raw",
        {tridem::Encoding::Appended, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma}},
   };
-  fmt::print("| format | frame B/tri | contacts .vtp B/tri | both B/tri | s per frame (both) |\n"
-             "|---|---:|---:|---:|---:|\n");
+  if (all)
+    fmt::print("| format | frame B/tri | contacts .vtp B/tri | both B/tri | s per frame (both) |\n"
+               "|---|---:|---:|---:|---:|\n");
   for (const Case& c : cases) {
+    if (!all) break;
     tridem::io::VtkXmlWriter w(c.format);
     std::vector<double> times;
     for (int r = 0; r < reps; ++r) {
@@ -117,8 +126,19 @@ int main(int argc, char** argv) {
     const double snapshot = time([&] { solver->snapshot(again, true); });
     const double stress = time([&] { (void)tridem::grain_stress(s); });
     const double vtu_state = time([&] { tridem::io::write_vtu_frame(w, dir / "f.vtu", s, false); });
+    // The writer's phases in each file (per file: summed over `reps`, divided by it).
+    const auto phases = [&](const char* file) {
+      const tridem::io::VtkXmlWriter::Seconds& p = w.seconds();
+      const double r = reps;
+      return fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", file, p.pack / r,
+                         p.compress / r, p.encode / r, p.write / r);
+    };
+    w.reset_seconds();
     const double vtu = time([&] { tridem::io::write_vtu_frame(w, dir / "f.vtu", s, true); });
+    const std::string vtu_phases = phases(".vtu with grain stress");
+    w.reset_seconds();
     const double vtp = time([&] { tridem::io::write_contacts_vtp(w, dir / "c.vtp", s); });
+    const std::string vtp_phases = phases("contacts .vtp");
     const double csv = time([&] { tridem::write_contacts_csv(dir / "contacts.csv", s); });
     fmt::print("\n| part (default format) | s |\n|---|---:|\n| snapshot without contacts | {:.3f} "
                "|\n| snapshot with contacts | {:.3f} |\n"
@@ -126,11 +146,15 @@ int main(int argc, char** argv) {
                "| .vtu with it | {:.3f} |\n| contacts .vtp | {:.3f} |\n| contacts .csv | {:.3f} "
                "|\n",
                state, snapshot, stress, vtu_state, vtu, vtp, csv);
+    fmt::print("\n| writer's phases, s a file | pack | compress | encode | write |\n"
+               "|---|---:|---:|---:|---:|\n{}{}",
+               vtu_phases, vtp_phases);
   }
   fmt::print("\ncontacts .csv (written with each frame while [output] contacts_csv is on): "
              "{:.1f} B/tri\n\n",
              static_cast<double>(fs::file_size(dir / "contacts.csv")) / tri);
 
+  if (!all) return EXIT_SUCCESS;
   // What the time loop pays per frame (default format, contacts on): the OutputSet call
   // alone, inline or beside the stepping, with `steps` of stepping between frames.
   tridem::OutputSettings settings;

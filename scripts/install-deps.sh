@@ -17,7 +17,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config \
   libtomlplusplus-dev libcli11-dev libfmt-dev libcairo2-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmsh-dev libboost-dev \
-  libopenmpi-dev openmpi-bin zlib1g-dev liblzma-dev
+  libopenmpi-dev openmpi-bin zlib1g-dev liblzma-dev libdeflate-dev
 fi
 [ "$group" != build ] || exit 0
 # The live view's browser test (tests/browser: headless chromium through selenium) and

@@ -3,8 +3,7 @@
 #include "io/output/base64.hpp"
 #include "tridem/error.hpp"
 
-#include <lzma.h>
-#include <zlib.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <array>
@@ -22,45 +21,6 @@ constexpr std::string_view type_name(VtkWord word) {
     case VtkWord::UInt8: return "UInt8";
   }
   return "?";
-}
-
-/// zlib's fastest level: float arrays compress almost as well as at its default level
-/// (measured in docs/output-format.md), in a third of the time.
-constexpr int kZlibLevel = 1;
-
-/// LZMA's fastest preset with a dictionary of one block (a larger one finds nothing more in
-/// a 32 KiB block and costs its set-up on every block: 1 MiB, the preset's own, compressed
-/// a dense pile's frame some five times slower to the same bytes; docs/performance.md,
-/// "Output frames", item 9).
-constexpr std::uint32_t kLzmaPreset = 0;
-
-/// The largest a block of `size` bytes may become.
-std::size_t compressed_bound(VtkCompression compression, std::size_t size) {
-  return compression == VtkCompression::Lzma ? lzma_stream_buffer_bound(size)
-                                             : compressBound(static_cast<uLong>(size));
-}
-
-/// `size` bytes at `in` compressed as one block into `out` (room for compressed_bound):
-/// as vtkZLibDataCompressor writes it (a zlib stream), or as vtkLZMADataCompressor does
-/// (an .xz stream with a CRC64 check). The compressed size, or 0 with `error` set.
-std::size_t compress_block(VtkCompression compression, const std::uint8_t* in, std::size_t size,
-                           std::uint8_t* out, std::size_t room, int& error) {
-  if (compression == VtkCompression::Lzma) {
-    lzma_options_lzma options;
-    lzma_lzma_preset(&options, kLzmaPreset);
-    options.dict_size = std::max<std::uint32_t>(
-        LZMA_DICT_SIZE_MIN, static_cast<std::uint32_t>(VtkXmlWriter::kBlockSize));
-    lzma_filter filters[] = {{LZMA_FILTER_LZMA2, &options}, {LZMA_VLI_UNKNOWN, nullptr}};
-    std::size_t used = 0;
-    const lzma_ret rc =
-        lzma_stream_buffer_encode(filters, LZMA_CHECK_CRC64, nullptr, in, size, out, &used, room);
-    error = rc == LZMA_OK ? 0 : static_cast<int>(rc);
-    return error == 0 ? used : 0;
-  }
-  uLongf length = static_cast<uLongf>(room);
-  const int rc = compress2(out, &length, in, static_cast<uLong>(size), kZlibLevel);
-  error = rc == Z_OK ? 0 : rc;
-  return error == 0 ? length : 0;
 }
 
 template <class T>
@@ -91,11 +51,16 @@ void VtkXmlWriter::end_file(OutFile& out) {
   if (format_.encoding == Encoding::Appended && !appended_.empty()) {
     // VTK's layout: the raw bytes start after the underscore; each array's offset counts
     // from there.
+    const Clock::time_point start = Clock::now();
     out.write("  <AppendedData encoding=\"raw\">\n   _");
     out.write(std::string_view(reinterpret_cast<const char*>(appended_.data()), appended_.size()));
     out.write("\n  </AppendedData>\n");
+    seconds_.write += since(start);
   }
+  const Clock::time_point start = Clock::now();
   out.write("</VTKFile>\n");
+  out.close();
+  seconds_.write += since(start);
 }
 
 void VtkXmlWriter::emit(OutFile& out, std::string_view name, VtkWord word,
@@ -104,18 +69,26 @@ void VtkXmlWriter::emit(OutFile& out, std::string_view name, VtkWord word,
   if (!name.empty()) out.print(" Name=\"{}\"", name);
   if (format_.encoding == Encoding::Appended) {
     out.print(" {} format=\"appended\" offset=\"{}\"/>\n", size_attribute, appended_.size());
-    for (const std::span<const std::uint8_t> part : binary_parts(out))
+    const std::array<std::span<const std::uint8_t>, 2> parts = binary_parts(out);
+    const Clock::time_point start = Clock::now();
+    for (const std::span<const std::uint8_t> part : parts)
       appended_.insert(appended_.end(), part.begin(), part.end());
+    seconds_.encode += since(start);
     return;
   }
   const bool binary = format_.encoding == Encoding::Binary;
   out.print(" {} format=\"{}\">\n", size_attribute, binary ? "binary" : "ascii");
   if (binary) {
     // Each part a base64 run of its own, as VTK's writer encodes them.
+    const std::array<std::span<const std::uint8_t>, 2> parts = binary_parts(out);
+    Clock::time_point start = Clock::now();
     text_.clear();
-    for (const std::span<const std::uint8_t> part : binary_parts(out))
+    for (const std::span<const std::uint8_t> part : parts)
       if (!part.empty()) base64_append(part, text_);
+    seconds_.encode += since(start);
+    start = Clock::now();
     out.write(text_);
+    seconds_.write += since(start);
   } else {
     write_ascii(out, word);
   }
@@ -135,6 +108,7 @@ std::array<std::span<const std::uint8_t>, 2> VtkXmlWriter::binary_parts(const Ou
 }
 
 std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
+  const Clock::time_point start = Clock::now();
   const std::span<const std::uint8_t> data = std::span(raw_).subspan(kCountBytes);
   const std::size_t blocks = (data.size() + kBlockSize - 1) / kBlockSize;
   header_.assign(3 + blocks, 0);
@@ -147,18 +121,22 @@ std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
   // OpenMP threads, each into a slot of the largest size the compressor may need, then
   // closed up in order: compression is the slowest part of writing a frame.
   const VtkCompression compression = format_.compression;
-  const std::size_t slot = compressed_bound(compression, kBlockSize);
+  const int threads = blocks > 1 ? std::max(1, omp_get_max_threads()) : 1;
+  while (compressors_.size() < static_cast<std::size_t>(threads))
+    compressors_.emplace_back(compression);
+  const std::size_t slot = compressors_.front().bound(kBlockSize);
   compressed_.resize(blocks * slot);
   const auto count = static_cast<std::ptrdiff_t>(blocks);
   int failure = 0;
-#pragma omp parallel for schedule(dynamic, 4) if (blocks > 1)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4)
   for (std::ptrdiff_t b = 0; b < count; ++b) {
     const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
     const std::size_t size = std::min(kBlockSize, data.size() - begin);
     int error = 0;
     header_[3 + static_cast<std::size_t>(b)] =
-        compress_block(compression, data.data() + begin, size,
-                       compressed_.data() + static_cast<std::size_t>(b) * slot, slot, error);
+        compressors_[static_cast<std::size_t>(omp_get_thread_num())].compress(
+            data.data() + begin, size, compressed_.data() + static_cast<std::size_t>(b) * slot,
+            slot, error);
     if (error != 0) {
 #pragma omp atomic write
       failure = error;
@@ -166,7 +144,8 @@ std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
   }
   if (failure != 0)
     throw RunError(fmt::format("cannot compress an array of '{}': {} error {}", out.path().string(),
-                               compression == VtkCompression::Lzma ? "lzma" : "zlib", failure));
+                               compression == VtkCompression::Lzma ? "lzma" : "libdeflate",
+                               failure));
   std::size_t used = 0;
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::size_t length = header_[3 + b];
@@ -174,6 +153,7 @@ std::size_t VtkXmlWriter::compress_raw(const OutFile& out) {
       std::memmove(compressed_.data() + used, compressed_.data() + b * slot, length);
     used += length;
   }
+  seconds_.compress += since(start);
   return used;
 }
 
@@ -247,7 +227,6 @@ void VtkXmlWriter::line_set_vtp(const std::filesystem::path& file, std::int64_t 
   cell_data(out);
   out.write("      </CellData>\n    </Piece>\n  </PolyData>\n");
   end_file(out);
-  out.close();
 }
 
 }  // namespace tridem::io

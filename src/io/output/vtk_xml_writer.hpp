@@ -6,10 +6,12 @@
 // blocks, block size, size of the last block, compressed size of each block] (UInt64s)
 // encoded as one run, then the blocks, each compressed by zlib (or as an .xz stream) on its
 // own, as a second run.
+#include "io/output/block_compressor.hpp"
 #include "io/output/out_file.hpp"
 #include "tridem/output.hpp"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -43,10 +45,23 @@ class VtkXmlWriter {
   explicit VtkXmlWriter(VtkFormat format = {}) : format_(format) {}
   const VtkFormat& format() const { return format_; }
 
+  /// Wall seconds this writer has spent in each phase of its arrays since it was made (or
+  /// since reset_seconds): what a frame's time goes to, for tridem_frame_bench. A handful of
+  /// clock reads an array.
+  struct Seconds {
+    double pack = 0;      ///< converting the values into the raw array (OpenMP threads)
+    double compress = 0;  ///< compressing its blocks (OpenMP threads) and closing them up
+    double encode = 0;    ///< base64 (OpenMP threads) or copying into the appended block
+    double write = 0;     ///< handing the text to the file (one thread)
+  };
+  const Seconds& seconds() const { return seconds_; }
+  void reset_seconds() { seconds_ = {}; }
+
   /// Opens `<VTKFile type="...">` after the XML declaration, with the host's byte order
   /// and, when compressing, the compressor.
   void begin_file(OutFile&, std::string_view type);
-  /// Closes the file's root, after the appended arrays' block in the appended encoding.
+  /// Closes the file's root, after the appended arrays' block in the appended encoding,
+  /// and then the file (OutFile::close: errors surface).
   void end_file(OutFile&);
 
   /// A real-valued `<DataArray>` of `count` = components × tuples numbers value(k), as
@@ -103,6 +118,10 @@ class VtkXmlWriter {
 
  private:
   static constexpr std::size_t kCountBytes = sizeof(std::uint64_t);
+  using Clock = std::chrono::steady_clock;
+  static double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
 
   template <class T>
   static constexpr VtkWord word_of() {
@@ -129,6 +148,7 @@ class VtkXmlWriter {
   /// `value` is called from several threads at once for large arrays: it must only read.
   template <class T, class Value>
   void pack(std::size_t count, const Value& value) {
+    const Clock::time_point start = Clock::now();
     raw_.resize(kCountBytes + count * sizeof(T));
     std::uint8_t* const to = raw_.data() + kCountBytes;
     const auto values = static_cast<std::ptrdiff_t>(count);
@@ -137,6 +157,7 @@ class VtkXmlWriter {
       const T v = static_cast<T>(value(static_cast<std::size_t>(k)));
       std::memcpy(to + static_cast<std::size_t>(k) * sizeof(T), &v, sizeof v);
     }
+    seconds_.pack += since(start);
   }
   /// The element around raw_'s values; `size_attribute` is NumberOfComponents for
   /// ordinary arrays and NumberOfTuples for field data, which VTK requires there.
@@ -156,6 +177,8 @@ class VtkXmlWriter {
   std::vector<std::uint64_t> header_;     ///< the compressed array's header
   std::string text_;                      ///< base64 of the above
   std::vector<std::uint8_t> appended_;    ///< the file's appended arrays, end to end
+  std::vector<BlockCompressor> compressors_;  ///< one for each OpenMP thread compressing
+  Seconds seconds_;
 };
 
 }  // namespace tridem::io

@@ -94,7 +94,6 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
   }
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
   w.end_file(out);
-  out.close();
 }
 
 }  // namespace io
