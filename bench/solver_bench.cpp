@@ -29,6 +29,9 @@
 //                     the others double
 //   --stage_timing=0  run without per-stage times (what timing costs: compare s_per_step)
 //   --frames=1        also time one output frame (snapshot) per variant and size
+//   --contact_rows_per_copy=R  rows of a frame's contact network the cuda backend
+//                     compacts and downloads at a time (default 2^22; a number above the
+//                     contacts takes them in one piece, as before windows)
 //   --large_reps=R    repetitions for n >= 10^6 (default: --benchmark_repetitions)
 //   --iter_scale=X    multiply every fixed iteration count by X (at least 1 iteration);
 //                     more iterations also move the window later into the decompression
@@ -152,6 +155,9 @@ std::optional<double> g_skin;
 /// --run_ahead=0: the CUDA solver waits for each step's status before it launches the next.
 bool g_run_ahead = true;
 
+/// --contact_rows_per_copy: SolverConfig::gpu_contact_rows_per_copy (0 = its default).
+std::size_t g_contact_rows_per_copy = 0;
+
 /// Which standard pile a case measures.
 enum class Pile { Dense, Bodies, Bonded, Settled };
 constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled};
@@ -239,6 +245,7 @@ std::unique_ptr<tridem::Solver> make(const Variant& v, Pile kind, std::size_t n)
   scene.simulation.precision = v.precision;
   tridem::SolverConfig config;
   config.gpu_run_ahead = g_run_ahead;
+  config.gpu_contact_rows_per_copy = g_contact_rows_per_copy;
   auto solver = tridem::make_solver(scene, config);
   if (kind == Pile::Settled) solver->load_state(settled_state(n, v.precision));
   return solver;
@@ -385,6 +392,9 @@ int main(int argc, char** argv) {
   if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
     g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
   g_run_ahead = take_flag(argc, argv, "run_ahead") != "0";
+  if (const std::string text = take_flag(argc, argv, "contact_rows_per_copy"); !text.empty())
+    g_contact_rows_per_copy =
+        static_cast<std::size_t>(parse_number("tridem_bench", "contact_rows_per_copy", text));
   if (const std::string text = take_flag(argc, argv, "skin"); !text.empty())
     g_skin = tridem::bench::parse_number_in("tridem_bench", "skin", text, 0, 1,
                                             "a number in [0, 1] (a fraction of the grid cell)");

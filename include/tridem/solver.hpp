@@ -77,6 +77,10 @@ struct SolverConfig {
   /// same results; docs/performance.md, "Run-ahead"). false: every step waits for the one
   /// before it, as before run-ahead (tests and benchmarks compare both).
   bool gpu_run_ahead = true;
+  /// The cuda backend compacts and downloads a frame's contact network this many rows at a
+  /// time, so that a frame's GPU scratch is bounded whatever its contacts; 0 = the default,
+  /// 2^22 rows (168 MB in float). The same contacts either way (tests use a small one).
+  std::size_t gpu_contact_rows_per_copy = 0;
 };
 
 class Solver {

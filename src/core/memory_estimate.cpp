@@ -39,7 +39,12 @@ std::size_t gpu_bytes(std::size_t n, std::size_t pairs) {
   const std::size_t per_pair = 4 + sizeof(physics::PairSlip<Real>) + 4 +
                                sizeof(physics::PairLoad<Real>) + 4 +
                                std::max(sizeof(physics::PairDetail<Real>), build_phase);
-  return n * per_particle + pairs * per_pair + (16u << 20);
+  // A frame's contact network, compacted on the GPU (backends/cuda/touching_pairs.cuh):
+  // each particle's first row, and one window of rows (no more rows than a dense packing's
+  // pairs can have: reserved_pairs).
+  const std::size_t frame_scratch = 4 * (n + 1) + std::min(kContactRowsPerCopy, reserved_pairs(n)) *
+                                                      sizeof(physics::TouchingPair<Real>);
+  return n * per_particle + pairs * per_pair + frame_scratch + (16u << 20);
 }
 
 template <class Real>

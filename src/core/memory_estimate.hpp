@@ -27,6 +27,12 @@ inline constexpr std::size_t pair_slots_for(std::size_t listed) {
   return listed + listed / 5 + 1024;
 }
 
+/// Rows of a frame's contact network that the CUDA solver compacts and downloads at a time
+/// (backends/cuda/touching_pairs.cuh): the GPU scratch a frame takes beside the solver's
+/// arrays is this many rows at most, 168 MB in float, not one row for every touching pair
+/// (24 GB at 10^8 triangles in a dense pile).
+inline constexpr std::size_t kContactRowsPerCopy = std::size_t{1} << 22;
+
 /// About how many pairs the first list of a run of `model` holds: the particles whose
 /// bounding boxes, widened by the skin the GPU's list keeps, overlap (the broad phase's
 /// candidates; the contact test drops some). What `tridem info` sizes the pair slots by.

@@ -27,6 +27,22 @@ struct PairDetail {
   bool sliding = false;
 };
 
+/// What a contact record takes from one touching pair, and nothing more (40 bytes in
+/// float, 72 in double, against 60 and 112 of the pair's whole result): its two particles,
+/// the force on the emitter, the point (relative to the emitter's centroid), the normal,
+/// the depth and whether it slid. The rows a frame's contact network is downloaded as
+/// (backends/cuda/touching_pairs.cuh).
+template <class Real>
+struct TouchingPair {
+  int emitter;
+  int partner;
+  Vec2<Real> force;
+  Vec2<Real> point;
+  Vec2<Real> normal;
+  Real depth;
+  int sliding;
+};
+
 template <class Real>
 TRIDEM_HD inline PairLoad<Real> load_of(const PairForce<Real>& r) {
   return {r.force_a, r.torque_a, r.torque_b, r.damping_dissipation, r.friction_dissipation};

@@ -30,7 +30,8 @@ class CudaContactCopy final : public ContactCopy {
     step_ = s.step_;
     count_ = 0;
     if (step_ > 0)  // as snapshot(): no step, no contacts
-      count_ = queue_touching_rows(static_cast<int>(s.n_), s.pairs_->arrays(), s.stream_, rows_);
+      count_ = queue_touching_rows(static_cast<int>(s.n_), s.pairs_->arrays(), s.stream_, rows_,
+                                   s.contact_rows_per_copy_);
     periodic_ = s.periodic_;
     if (periodic_) frame_ = periodic_frame_of(s.cell_, static_cast<double>(step_) * s.params_.dt);
     TRIDEM_CUDA_CHECK(cudaEventRecord(landed_, s.stream_));

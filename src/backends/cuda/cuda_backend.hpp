@@ -25,6 +25,12 @@ int cuda_device_count();
 /// no such usable device.
 std::string cuda_device_description(int device = 0);
 
+/// The most bytes taken at once from GPU `device`'s stream-ordered pool (cudaMallocAsync:
+/// the scratch of a frame's contact network, backends/cuda/touching_pairs.cuh) since the
+/// last reset, and with `reset` the count starts again from what is in use now; 0 without
+/// CUDA or such a device.
+std::size_t cuda_stream_pool_peak(int device = 0, bool reset = false);
+
 /// The solver running the whole time loop on the GPU. Throws RunError when no GPU is
 /// usable or the scene does not fit in its memory (make_solver first refuses a build or
 /// machine without one, with the way out).

@@ -18,6 +18,8 @@ int cuda_device_count() { return 0; }
 
 std::string cuda_device_description(int) { return {}; }
 
+std::size_t cuda_stream_pool_peak(int, bool) { return 0; }
+
 std::unique_ptr<Solver> make_cuda_solver(const Scene&, const ParticleModel&, const TimeStep&,
                                          const SolverConfig&) {
   throw RunError(kAbsent);  // make_solver asks cuda_available() first, and says why

@@ -54,7 +54,9 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     : n_(model.size()),
       method_(scene.simulation.method),
       host_model_(model),
-      run_ahead_(config.gpu_run_ahead) {
+      run_ahead_(config.gpu_run_ahead),
+      contact_rows_per_copy_(config.gpu_contact_rows_per_copy > 0 ? config.gpu_contact_rows_per_copy
+                                                                  : kContactRowsPerCopy) {
   if (n_ > static_cast<std::size_t>(INT_MAX / 8))
     throw RunError("the CUDA backend handles at most " + std::to_string(INT_MAX / 8) +
                    " particles on one GPU");
@@ -749,7 +751,7 @@ void CudaSolver<Real>::snapshot(Snapshot& out, bool with_contacts) const {
   out.contact_precision = kPrecisionOf<Real>;
   if (!with_contacts || step_ == 0) return;
   append_touching_contacts(out, static_cast<int>(n), pairs_->arrays(), stream_, out.x.data(),
-                           out.y.data(), touching_);
+                           out.y.data(), touching_, contact_rows_per_copy_);
   if (periodic_)
     set_image_shifts(out, periodic_frame_of(cell_, static_cast<double>(step_) * params_.dt),
                      out.x.data(), out.y.data());
@@ -884,6 +886,19 @@ std::string cuda_device_description(int device) {
                 prop.minor, prop.multiProcessorCount,
                 static_cast<double>(prop.totalGlobalMem) / (1024.0 * 1024.0 * 1024.0));
   return text;
+}
+
+std::size_t cuda_stream_pool_peak(int device, bool reset) {
+  if (device < 0 || device >= cuda_device_count()) return 0;
+  cudaMemPool_t pool = nullptr;
+  if (cudaDeviceGetDefaultMemPool(&pool, device) != cudaSuccess) return 0;
+  unsigned long long peak = 0;  // the attribute is a cuuint64_t
+  TRIDEM_CUDA_CHECK(cudaMemPoolGetAttribute(pool, cudaMemPoolAttrUsedMemHigh, &peak));
+  if (reset) {
+    unsigned long long zero = 0;  // the attribute's only settable value: the current use is kept
+    TRIDEM_CUDA_CHECK(cudaMemPoolSetAttribute(pool, cudaMemPoolAttrUsedMemHigh, &zero));
+  }
+  return static_cast<std::size_t>(peak);
 }
 
 std::unique_ptr<Solver> make_cuda_solver(const Scene& scene, const ParticleModel& model,

@@ -206,6 +206,7 @@ class CudaSolver final : public Solver {
   PinnedBuffer<StepStatus> host_status_;
   std::array<cudaEvent_t, 3> ahead_copied_{};  ///< a run-ahead step's status is on the host
   bool run_ahead_ = false;                     ///< SolverConfig::gpu_run_ahead
+  std::size_t contact_rows_per_copy_ = 0;      ///< SolverConfig::gpu_contact_rows_per_copy
   std::int64_t ahead_steps_ = 0;               ///< steps launched behind one not yet read
   std::int64_t ahead_held_back_ = 0;  ///< of those, launched again after it asked for a list
   std::function<void()> check_hook_;             ///< MPI ranks only (set_check_hook)

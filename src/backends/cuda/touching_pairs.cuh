@@ -8,29 +8,19 @@
 #include "backends/cuda/cuda_check.cuh"
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/device_views.cuh"
+#include "core/memory_estimate.hpp"
 #include "core/snapshot_fill.hpp"
+#include "physics/pair_record.hpp"
 
 #include <cub/device/device_scan.cuh>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
 namespace tridem::cuda {
 
-/// What a contact record takes from one touching pair, and nothing more (40 bytes in
-/// float, 72 in double, against 60 and 112 of the pair's whole result): its two particles,
-/// the force on the emitter, the point (relative to the emitter's centroid), the normal,
-/// the depth and whether it slid.
-template <class Real>
-struct TouchingPair {
-  int emitter;
-  int partner;
-  Vec2<Real> force;
-  Vec2<Real> point;
-  Vec2<Real> normal;
-  Real depth;
-  int sliding;
-};
+using physics::TouchingPair;
 
 template <class Real>
 __global__ void count_touching_kernel(int n, PairArrays<Real> pairs, int* count) {
@@ -42,28 +32,39 @@ __global__ void count_touching_kernel(int n, PairArrays<Real> pairs, int* count)
   count[e] = c;  // count[n] = 0: the scan's last entry is the total
 }
 
+/// The touching pairs whose rows (numbered by `first`, the scan of the counts) lie in
+/// [row_begin, row_end), into rows[0, row_end - row_begin). An emitter with no row there
+/// returns before it reads its slots, so a pass over a window costs about its own rows.
 template <class Real>
-__global__ void fill_touching_kernel(int n, PairArrays<Real> pairs, const int* first,
-                                     TouchingPair<Real>* rows) {
+__global__ void fill_touching_kernel(int n, PairArrays<Real> pairs, const int* first, int row_begin,
+                                     int row_end, TouchingPair<Real>* rows) {
   const int e = blockIdx.x * blockDim.x + threadIdx.x;
   if (e >= n) return;
   int at = first[e];
-  for (int s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s)
-    if (const physics::PairDetail<Real>& d = pairs.detail[s]; d.touching)
-      rows[at++] = {e,        pairs.partner[s], pairs.load[s].force_a, d.point,
-                    d.normal, d.depth,          d.sliding ? 1 : 0};
+  if (at >= row_end || first[e + 1] <= row_begin) return;
+  for (int s = pairs.offset[e]; s < pairs.offset[e + 1] && at < row_end; ++s)
+    if (const physics::PairDetail<Real>& d = pairs.detail[s]; d.touching) {
+      if (at >= row_begin)
+        rows[at - row_begin] = {e,        pairs.partner[s], pairs.load[s].force_a, d.point,
+                                d.normal, d.depth,          d.sliding ? 1 : 0};
+      ++at;
+    }
 }
 
 /// Queues on `stream` the download of the touching pairs of `pairs` (n particles), in
 /// slot order, into `host`, and returns their number: the rows are there once the work
 /// queued so far on `stream` is done. Waits for `stream` once, for the count. `host` is
 /// page-locked (a copy from pageable memory runs at a fraction of the bus's speed); it
-/// grows to the most contacts seen and is kept. The device scratch is taken from the
-/// stream's pool and given back after the download: frames are rare against steps, and it
-/// would otherwise hold GPU memory for the whole run.
+/// grows to the most contacts seen and is kept. The rows are compacted on the GPU and
+/// downloaded `rows_per_copy` at a time through one scratch buffer (the stream's order
+/// keeps a window's fill behind the last window's copy): a frame's GPU scratch is bounded
+/// whatever the number of contacts (kContactRowsPerCopy, core/memory_estimate.hpp). The
+/// scratch is taken from the stream's pool and given back after the download: frames are
+/// rare against steps, and it would otherwise hold GPU memory for the whole run.
 template <class Real>
 std::size_t queue_touching_rows(int n, const PairArrays<Real>& pairs, cudaStream_t stream,
-                                PinnedBuffer<TouchingPair<Real>>& host) {
+                                PinnedBuffer<TouchingPair<Real>>& host,
+                                std::size_t rows_per_copy = kContactRowsPerCopy) {
   constexpr int kBlock = 256;
   const int grid = (n + 1 + kBlock - 1) / kBlock;
   const StreamBuffer<int> first(static_cast<std::size_t>(n) + 1, stream);
@@ -83,12 +84,17 @@ std::size_t queue_touching_rows(int n, const PairArrays<Real>& pairs, cudaStream
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   const auto count = static_cast<std::size_t>(total);
   if (host.size() < count) host.allocate(count + count / 8);
-  if (count > 0) {
-    const StreamBuffer<TouchingPair<Real>> rows(count, stream);
-    fill_touching_kernel<Real><<<grid, kBlock, 0, stream>>>(n, pairs, first.data(), rows.data());
+  if (count == 0) return 0;
+  const std::size_t window = std::min(count, std::max<std::size_t>(rows_per_copy, 1));
+  const StreamBuffer<TouchingPair<Real>> rows(window, stream);
+  for (std::size_t begin = 0; begin < count; begin += window) {
+    const std::size_t end = std::min(count, begin + window);
+    fill_touching_kernel<Real><<<grid, kBlock, 0, stream>>>(
+        n, pairs, first.data(), static_cast<int>(begin), static_cast<int>(end), rows.data());
     TRIDEM_CUDA_CHECK_LAUNCH("fill_touching_kernel");
-    TRIDEM_CUDA_CHECK(
-        cudaMemcpyAsync(host.data(), rows.data(), rows.bytes(), cudaMemcpyDeviceToHost, stream));
+    TRIDEM_CUDA_CHECK(cudaMemcpyAsync(host.data() + begin, rows.data(),
+                                      (end - begin) * sizeof(TouchingPair<Real>),
+                                      cudaMemcpyDeviceToHost, stream));
   }
   return count;
 }
@@ -121,8 +127,8 @@ void append_touching_rows(Snapshot& out, const TouchingPair<Real>* rows, std::si
 template <class Real>
 void append_touching_contacts(Snapshot& out, int n, const PairArrays<Real>& pairs,
                               cudaStream_t stream, const double* cx, const double* cy,
-                              PinnedBuffer<TouchingPair<Real>>& host) {
-  const std::size_t count = queue_touching_rows(n, pairs, stream, host);
+                              PinnedBuffer<TouchingPair<Real>>& host, std::size_t rows_per_copy) {
+  const std::size_t count = queue_touching_rows(n, pairs, stream, host, rows_per_copy);
   TRIDEM_CUDA_CHECK(cudaStreamSynchronize(stream));
   append_touching_rows(out, host.data(), count, cx, cy);
 }

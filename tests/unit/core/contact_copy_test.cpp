@@ -3,12 +3,16 @@
 // start(), to the bit, though the solver has stepped on in between; and a run whose frames
 // take their contacts that way writes the same files as one that takes them with the
 // snapshot (the time loop's and the frame thread's part, on every backend).
+#include "backends/cuda/cuda_backend.hpp"
 #include "core/solver_factory.hpp"
+#include "physics/pair_record.hpp"
 #include "support/backend_test.hpp"
+#include "support/gpu.hpp"
 #include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 #include "tridem/run.hpp"
+#include "tridem/standard_scenes.hpp"
 #include "unit/io/io_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -188,6 +192,55 @@ TEST_P(ContactCopyRunTest, WritesTheFilesOfContactsTakenWithTheSnapshot) {
 }
 
 TRIDEM_INSTANTIATE_SOLVERS(ContactCopyRunTest);
+
+// The CUDA solver compacts and downloads a frame's contact network a window of rows at a
+// time (SolverConfig::gpu_contact_rows_per_copy, backends/cuda/touching_pairs.cuh): the
+// same records whatever the window, through the snapshot and through the copy beside the
+// steps, and the frame's GPU scratch is about a window, not a row for every contact (at
+// 10^8 triangles that was 24 GB beside the solver's arrays).
+TEST(GpuContactWindows, SameContactsInScratchOfOneWindow) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    SCOPED_TRACE(precision_name(p));
+    Scene scene = dense_pile(200000);
+    scene.simulation.backend = Backend::Cuda;
+    scene.simulation.precision = p;
+    SolverConfig windows;
+    windows.gpu_contact_rows_per_copy = 997;
+    auto whole = make_solver(scene, {});
+    auto small = make_solver(scene, windows);
+    whole->advance(20);
+    small->advance(20);
+    Snapshot want, got;
+    cuda_stream_pool_peak(0, true);
+    whole->snapshot(want, true);
+    const std::size_t whole_peak = cuda_stream_pool_peak(0, true);
+    small->snapshot(got, true);
+    const std::size_t window_peak = cuda_stream_pool_peak(0);
+    ASSERT_GT(want.contacts.size(), 100u * 997) << "many windows, a few rows in the last";
+    test::expect_identical(got, want);
+    const std::size_t row_bytes = p == Precision::Float ? sizeof(physics::TouchingPair<float>)
+                                                        : sizeof(physics::TouchingPair<double>);
+    EXPECT_GE(whole_peak, want.contacts.size() * row_bytes);
+    EXPECT_LT(window_peak, whole_peak / 2);
+    // Beside the steps: copies started at this step, finished after more steps into the
+    // contact-free snapshots of this step.
+    Snapshot want_beside, got_beside;
+    whole->snapshot(want_beside, false);
+    small->snapshot(got_beside, false);
+    const std::unique_ptr<ContactCopy> whole_copy = whole->make_contact_copy();
+    const std::unique_ptr<ContactCopy> small_copy = small->make_contact_copy();
+    ASSERT_TRUE(whole_copy && small_copy);
+    whole_copy->start();
+    small_copy->start();
+    whole->advance(3);
+    small->advance(3);
+    whole_copy->finish(want_beside);
+    small_copy->finish(got_beside);
+    test::expect_identical(want_beside, want);
+    test::expect_identical(got_beside, want);
+  }
+}
 
 }  // namespace TRIDEM_TEST_FILE
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/particle_model.hpp"
 #include "physics/cohesive_bond.hpp"
 #include "physics/geometry.hpp"
+#include "physics/pair_record.hpp"
 #include "support/gpu.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/run.hpp"
@@ -68,6 +69,25 @@ TEST(MemoryEstimate, CountsTheBondsOnTheGpu) {
     EXPECT_EQ(with.gpu_memory_bytes - without.gpu_memory_bytes, gpu_bond_bytes(Precision::Double));
   else
     EXPECT_EQ(with.gpu_memory_bytes, 0u);
+}
+
+// A frame's contact network crosses from the GPU a window of rows at a time, so the
+// estimate counts one window's scratch (and each particle's first row), not a row per
+// contact: above the window's size it is linear in n with the window as its intercept.
+TEST(MemoryEstimate, GpuCountsOneWindowOfAFramesContacts) {
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    const std::size_t n = 10'000'000;
+    ASSERT_GT(reserved_pairs(n), kContactRowsPerCopy);
+    const std::size_t one = gpu_solver_bytes(n, 0, p), two = gpu_solver_bytes(2 * n, 0, p);
+    const std::size_t per_particle = (two - one) / n;
+    EXPECT_EQ(two - one, per_particle * n);
+    EXPECT_EQ(gpu_solver_bytes(10 * n, 0, p) - one, 9 * (two - one));
+    const std::size_t row = p == Precision::Float ? sizeof(physics::TouchingPair<float>)
+                                                  : sizeof(physics::TouchingPair<double>);
+    EXPECT_EQ(one - per_particle * n, (16u << 20) + 4 + kContactRowsPerCopy * row);
+    // A small scene's window is its possible pairs', not 2^22 rows.
+    EXPECT_LT(gpu_solver_bytes(1000, 0, p), std::size_t{20} << 20);
+  }
 }
 
 /// The pairs of `model` whose boxes widened by `margin` overlap, one free, by brute force.
