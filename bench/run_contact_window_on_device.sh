@@ -2,34 +2,39 @@
 # A frame's contact network compacted and downloaded a window of rows at a time
 # (SolverConfig::gpu_contact_rows_per_copy, backends/cuda/touching_pairs.cuh), on the GPU
 # machine from a bundle (scripts/device_bundle.sh, carried as .devbin):
-#  1. its tests, the contact copy's and the state hashes (tridem_tests);
-#  2. compute-sanitizer's memcheck (with leak check) on them and on the GPU parity tests;
-#  3. the peak GPU memory of tridem_bench at N (dense_pile, mixed precision, whose end
+#  1. the peak GPU memory of tridem_bench at N (dense_pile, mixed precision, whose end
 #     takes a snapshot with contacts) with all the contacts in one piece, as before windows
-#     (--contact_rows_per_copy=2e9), and in the default windows, in alternating order.
-#   bench/run_contact_window_on_device.sh OUT [N=5e7]    env: ROUNDS (1)
+#     (--contact_rows_per_copy=2e9), and in the default windows, in alternating order;
+#  2. its tests, the contact copy's and the state hashes (tridem_tests);
+#  3. compute-sanitizer's memcheck (with leak check) on them and on the GPU parity tests.
+#   bench/run_contact_window_on_device.sh OUT [N]    env: ROUNDS (1)
+# N defaults to 10^8 on a GPU of over 120 GB (an H200: the issue's measurement), else 5x10^7.
 set -uo pipefail
 source "$(dirname "$0")/../scripts/device_env.sh"
-out="${1:?give an output folder}"; n="${2:-5e7}"
+out="${1:?give an output folder}"
 mkdir -p "$out"
+nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$out/gpu.txt"
+mib=$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)
+n="${2:-$([ "${mib:-0}" -gt 120000 ] && echo 1e8 || echo 5e7)}"
+echo "== N = $n"
 tests="$root/.devbin/tests/tridem_tests"
-check_state_hashes "$out"
-filter='GpuContactWindows.*:*ContactCopy*:GpuMemory.*'
-timeout 200 "$tests" --gtest_filter="$filter" >"$out/tests.log" 2>&1
-echo "== window and copy tests: exit $?"; gtest_summary "$out/tests.log"
-timeout 240 compute-sanitizer --tool memcheck --leak-check full --error-exitcode 1 \
-  "$tests" --gtest_filter="GpuContactWindows.*:Gpu/StateHash.*:GpuParity.*" --gtest_brief=1 \
-  >"$out/memcheck.log" 2>&1
-echo "== memcheck: exit $?"; tail -n 4 "$out/memcheck.log"
 for round in $(seq "${ROUNDS:-1}"); do
   for build in whole windows; do
     rows=(); [ "$build" = whole ] && rows=(--contact_rows_per_copy=2e9)
     gpu_watch_start "$out/gpu_mem_${build}_$round"
-    timeout 150 "$root/.devbin/bench/tridem_bench" --backends=cuda-float --min_n="$n" \
+    timeout 200 "$root/.devbin/bench/tridem_bench" --backends=cuda-float --min_n="$n" \
       --max_n="$n" "${rows[@]}" --benchmark_repetitions=1 \
       >"$out/bench_${build}_$round.txt" 2>&1
     echo "== round $round, $build: exit $?"
     gpu_watch_peak "$out/gpu_mem_${build}_$round" | tee "$out/peak_${build}_$round.txt"
-    grep -E '^cuda|rror' "$out/bench_${build}_$round.txt" | head -3
+    grep -E 'n:|rror' "$out/bench_${build}_$round.txt" | head -3
   done
 done
+check_state_hashes "$out"
+filter='GpuContactWindows.*:*ContactCopy*:GpuMemory.*'
+timeout 200 "$tests" --gtest_filter="$filter" >"$out/tests.log" 2>&1
+echo "== window and copy tests: exit $?"; gtest_summary "$out/tests.log"
+timeout 180 compute-sanitizer --tool memcheck --leak-check full --error-exitcode 1 \
+  "$tests" --gtest_filter="GpuContactWindows.*:Gpu/StateHash.*:GpuParity.*" --gtest_brief=1 \
+  >"$out/memcheck.log" 2>&1
+echo "== memcheck: exit $?"; tail -n 4 "$out/memcheck.log"
