@@ -255,7 +255,9 @@ __device__ inline void add_image_work(const ParticleArrays<Real>& p, const StepP
 /// computes the geometry of the state it leaves. `q` is read only when advancing.
 /// kPeriodic: a periodic scene, whose rows book the boundary's work and whose free
 /// particles are put back into the cell (StepParams::frame_new) as CpuSolver::integrate
-/// does.
+/// does. A free particle's row energy is read from row_step_energy, which only
+/// gather_kernel<Real, false> writes: so this kernel is for scenes without bodies (their
+/// members step in body_kernels.cuh), launched after that gather in the same step.
 template <class Real, bool kPeriodic = false>
 __global__ void integrate_kernel(ParticleArrays<Real> p, PairArrays<Real> q, StepParams<Real> sp,
                                  StepStatus* status, bool advance) {
