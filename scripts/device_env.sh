@@ -30,11 +30,12 @@ slow_gpu_tests='Gpu/Incline.*:Gpu/PrecisionTest.*:Gpu/StepStability.*:Gpu/Fricti
 # The GPU's memory in use now, MiB.
 gpu_used() { nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits | head -1; }
 
-# gpu_watch_start FILE: nvidia-smi samples the GPU's memory every 100 ms into FILE from now;
+# gpu_watch_start FILE: nvidia-smi samples the GPU's memory every GPU_WATCH_MS ms (default
+# 100; 10 catches a frame's transient scratch) into FILE from now;
 # gpu_watch_peak FILE: stops it and prints the peak less what was in use at the start.
 gpu_watch_start() {
   gpu_watch_before=$(gpu_used)
-  nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms 100 >"$1" &
+  nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms "${GPU_WATCH_MS:-100}" >"$1" &
   gpu_watch_pid=$!
 }
 gpu_watch_peak() {
