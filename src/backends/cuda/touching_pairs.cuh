@@ -8,7 +8,6 @@
 #include "backends/cuda/cuda_check.cuh"
 #include "backends/cuda/device_buffer.cuh"
 #include "backends/cuda/device_views.cuh"
-#include "core/memory_estimate.hpp"
 #include "core/snapshot_fill.hpp"
 #include "physics/pair_record.hpp"
 
@@ -63,8 +62,7 @@ __global__ void fill_touching_kernel(int n, PairArrays<Real> pairs, const int* f
 /// rare against steps, and it would otherwise hold GPU memory for the whole run.
 template <class Real>
 std::size_t queue_touching_rows(int n, const PairArrays<Real>& pairs, cudaStream_t stream,
-                                PinnedBuffer<TouchingPair<Real>>& host,
-                                std::size_t rows_per_copy = kContactRowsPerCopy) {
+                                PinnedBuffer<TouchingPair<Real>>& host, std::size_t rows_per_copy) {
   constexpr int kBlock = 256;
   const int grid = (n + 1 + kBlock - 1) / kBlock;
   const StreamBuffer<int> first(static_cast<std::size_t>(n) + 1, stream);
