@@ -33,7 +33,8 @@ __global__ void count_touching_kernel(int n, PairArrays<Real> pairs, int* count)
 
 /// The touching pairs whose rows (numbered by `first`, the scan of the counts) lie in
 /// [row_begin, row_end), into rows[0, row_end - row_begin). An emitter with no row there
-/// returns before it reads its slots, so a pass over a window costs about its own rows.
+/// returns after reading its two row numbers, before its slots: a pass costs its own rows
+/// and 8 bytes a particle (at 10^8 triangles, ~143 passes of 0.8 GB for a frame).
 template <class Real>
 __global__ void fill_touching_kernel(int n, PairArrays<Real> pairs, const int* first, int row_begin,
                                      int row_end, TouchingPair<Real>* rows) {
