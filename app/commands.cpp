@@ -179,17 +179,17 @@ int render(const RenderArgs& args) {
     return 0;
   }
   const fs::path frame = fs::is_directory(input) ? last_frame(input) : input;
-  Snapshot snap = read_vtu_frame(frame);
+  RenderOptions opt;
+  opt.width = args.width;
+  // main.cpp checked the spelling against the same table.
+  opt.color_by = value_in(kColorByNames, args.color).value_or(opt.color_by);
+  Snapshot snap = read_frame_to_render(frame, opt);
   // A bonded scene's frame has its bonds beside it: OUT/bonds/bonds_STEP.vtp.
   if (const std::string stem = frame.stem().string(); stem.rfind("frame_", 0) == 0) {
     const fs::path bonds =
         frame.parent_path().parent_path() / "bonds" / ("bonds_" + stem.substr(6) + ".vtp");
     if (fs::is_regular_file(bonds)) read_bonds_vtp(bonds, snap);
   }
-  RenderOptions opt;
-  opt.width = args.width;
-  // main.cpp checked the spelling against the same table.
-  opt.color_by = value_in(kColorByNames, args.color).value_or(opt.color_by);
   const fs::path out =
       args.out.empty() ? fs::path(frame).replace_extension(".png") : fs::path(args.out);
   render_png(snap, out, opt);

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,17 @@ double median(std::vector<double> v) {
 struct Case {
   const char* name;
   VtkFormat format;
+  tridem::ArraySet<tridem::FrameArray> frame_arrays{};
+  tridem::ArraySet<tridem::ContactArray> contact_arrays{};
 };
+
+/// The arrays of a lean frame: `frame` of the .vtu's real fields, `contact` of the .vtp's.
+template <class E, class Names>
+tridem::ArraySet<E> only(const Names& names, std::initializer_list<const char*> chosen) {
+  auto set = tridem::ArraySet<E>::none();
+  for (const char* name : chosen) set.add(tridem::value_in(names, name).value());
+  return set;
+}
 
 }  // namespace
 
@@ -76,6 +87,11 @@ int main(int argc, char** argv) {
       "dense_pile({}), {} precision: {} triangles after {} steps, {:.2f} contacts per triangle\n\n",
       n, precision, s.size(), steps, static_cast<double>(s.contacts.size()) / tri);
 
+  using tridem::ContactArray, tridem::FrameArray;
+  const auto motion = only<FrameArray>(tridem::kFrameArrayNames, {"velocity", "angular_velocity"});
+  const auto velocity = only<FrameArray>(tridem::kFrameArrayNames, {"velocity"});
+  const auto force_depth = only<ContactArray>(tridem::kContactArrayNames, {"force", "depth"});
+  const auto force = only<ContactArray>(tridem::kContactArrayNames, {"force"});
   const Case cases[] = {
       {"double, uncompressed (the former files)",
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float64, tridem::VtkCompression::None}},
@@ -89,6 +105,20 @@ int main(int argc, char** argv) {
        {tridem::Encoding::Binary, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma}},
       {"float32, lzma, appended raw",
        {tridem::Encoding::Appended, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma}},
+      // `[output] frame_arrays` and `contact_arrays`: motion and force chains only.
+      {"float32, zlib, appended raw; velocity, angular_velocity; force, depth",
+       {tridem::Encoding::Appended},
+       motion,
+       force_depth},
+      {"float32, zlib, appended raw; velocity; force",
+       {tridem::Encoding::Appended},
+       velocity,
+       force},
+      {"float32, zlib; velocity, angular_velocity; force, depth", {}, motion, force_depth},
+      {"float32, lzma, appended raw; velocity, angular_velocity; force, depth",
+       {tridem::Encoding::Appended, tridem::VtkPrecision::Float32, tridem::VtkCompression::Lzma},
+       motion,
+       force_depth},
   };
   if (all)
     fmt::print("| format | frame B/tri | contacts .vtp B/tri | both B/tri | s per frame (both) |\n"
@@ -99,8 +129,8 @@ int main(int argc, char** argv) {
     std::vector<double> times;
     for (int r = 0; r < reps; ++r) {
       const auto t0 = std::chrono::steady_clock::now();
-      tridem::io::write_vtu_frame(w, dir / "frame.vtu", s, true);
-      tridem::io::write_contacts_vtp(w, dir / "contacts.vtp", s);
+      tridem::io::write_vtu_frame(w, dir / "frame.vtu", s, true, c.frame_arrays);
+      tridem::io::write_contacts_vtp(w, dir / "contacts.vtp", s, c.contact_arrays);
       times.push_back(seconds_since(t0));
     }
     const double frame = static_cast<double>(fs::file_size(dir / "frame.vtu")) / tri;

@@ -52,10 +52,13 @@ void write_bodies_csv(const std::filesystem::path& file, const Snapshot&);
 /// come with every frame).
 /// The VTK files take the format of their arrays (VtkFormat: binary, Float32, zlib by
 /// default; the scene's `[output] vtk_encoding`, `vtk_precision`, `vtk_compression`).
+/// `arrays`: the real fields it carries (`[output] frame_arrays`; all by default).
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot&, VtkFormat = {},
-                     bool grain_stress = true);
+                     bool grain_stress = true, ArraySet<FrameArray> arrays = {});
 void write_contacts_csv(const std::filesystem::path& file, const Snapshot&);
-void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&, VtkFormat = {});
+/// `arrays`: the cell arrays it carries (`[output] contact_arrays`; all by default).
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot&, VtkFormat = {},
+                        ArraySet<ContactArray> arrays = {});
 /// bonds/bonds_<step>.vtp: the cohesive bonds as lines along their shared edges, with
 /// cell data damage (0 to 1), broken (0 or 1) and the two triangles' ids a, b.
 void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&, VtkFormat = {});
@@ -66,9 +69,10 @@ void write_bonds_vtp(const std::filesystem::path& file, const Snapshot&, VtkForm
 /// id order, and each triangle's body (member_body and body_first, when some body has
 /// several triangles; frames written before bodies have no `body` array and read as
 /// bodiless). theta, mass and inertia are not stored in frames and come back as 0; the
-/// other per-body columns and contacts are left empty. Throws Error on a file it cannot read or
-/// that is not such a frame.
-Snapshot read_vtu_frame(const std::filesystem::path& file);
+/// other per-body columns and contacts are left empty. The real fields a frame was written
+/// without (`[output] frame_arrays`) read as 0; `arrays`, when given, receives those it
+/// holds. Throws Error on a file it cannot read or that is not such a frame.
+Snapshot read_vtu_frame(const std::filesystem::path& file, ArraySet<FrameArray>* arrays = nullptr);
 
 /// Whether a [[measure]] writing every `every` steps has a row at `step`: at the positive
 /// multiples of `every` (every > 0) and at the run's last step; never at step 0, before

@@ -34,6 +34,10 @@ struct RenderOptions {
 /// on bad options or when cairo cannot draw or write the file.
 void render_png(const Snapshot&, const std::filesystem::path& png, const RenderOptions& = {});
 
+/// A frame (.vtu) read back for drawing with `options`: refuses (Error, naming the file and
+/// what to draw instead) a frame written without its velocity when they colour by speed.
+Snapshot read_frame_to_render(const std::filesystem::path& vtu, const RenderOptions& options);
+
 /// Every frame of an output directory (frames/*.vtu, in step order) into one MP4 through
 /// the `ffmpeg` program (Debian's ffmpeg), at `fps` frames per second: each frame labelled
 /// with its time and step, drawn over the region of all frames, coloured by speed over one

@@ -165,6 +165,43 @@ struct VtkFormat {
   }
 };
 
+/// The cell arrays of a frame (.vtu) that `[output] frame_arrays` chooses among: the real
+/// fields, most of a frame's bytes. The geometry and `id`, `material`, `motion` and `body`
+/// (a few bytes a triangle after compression) are always written.
+enum class FrameArray : std::uint8_t {
+  Velocity,
+  AngularVelocity,
+  Force,
+  Torque,
+  Stress,
+  Pressure,
+  Coordination,
+  Count  ///< how many there are; not an array
+};
+/// The cell arrays of a contact network (.vtp) that `[output] contact_arrays` chooses
+/// among; its lines (the pairs) are always written.
+enum class ContactArray : std::uint8_t {
+  Force,
+  Magnitude,
+  Normal,
+  NormalForce,
+  TangentialForce,
+  Sliding,
+  Depth,
+  Count  ///< how many there are; not an array
+};
+
+/// Which of an enumeration's arrays a file carries, as one bit each: all by default.
+template <class E>
+struct ArraySet {
+  std::uint32_t bits = (1u << static_cast<unsigned>(E::Count)) - 1u;
+  static ArraySet none() { return ArraySet{0u}; }
+  bool has(E e) const { return (bits >> static_cast<unsigned>(e) & 1u) != 0; }
+  void add(E e) { bits |= 1u << static_cast<unsigned>(e); }
+  // Spelt out: the CUDA sources that include this header are C++17.
+  bool operator==(const ArraySet& o) const { return bits == o.bits; }
+};
+
 /// The region of a [[measure]]: an axis-aligned rectangle, lo < hi in both coordinates.
 struct MeasureRegion {
   Vec2d lo{}, hi{};
@@ -194,6 +231,10 @@ struct OutputSettings {
   Encoding encoding = Encoding::Binary; ///< of the .vtu/.vtp frames
   VtkPrecision precision = VtkPrecision::Float32;     ///< of their real arrays
   VtkCompression compression = VtkCompression::Zlib;  ///< of their binary arrays
+  /// The real fields the frames carry (`frame_arrays`; all by default). The grain's
+  /// stress, pressure and coordination also need `contacts`.
+  ArraySet<FrameArray> frame_arrays;
+  ArraySet<ContactArray> contact_arrays;  ///< of the contact networks (`contact_arrays`)
   std::int64_t checkpoint_every = 0;   ///< steps between checkpoints; 0 = none
   /// Steps between rows of energy.csv and walls.csv (besides step 0 and the last step);
   /// unset = `every`, 0 = only those two.

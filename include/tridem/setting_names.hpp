@@ -46,6 +46,26 @@ inline constexpr Spellings<VtkCompression, 3> kVtkCompressionNames{
      {"none", VtkCompression::None},
      {"lzma", VtkCompression::Lzma}}};
 
+/// `[output] frame_arrays`: the arrays' names in the .vtu.
+inline constexpr Spellings<FrameArray, 7> kFrameArrayNames{
+    {{"velocity", FrameArray::Velocity},
+     {"angular_velocity", FrameArray::AngularVelocity},
+     {"force", FrameArray::Force},
+     {"torque", FrameArray::Torque},
+     {"stress", FrameArray::Stress},
+     {"pressure", FrameArray::Pressure},
+     {"coordination", FrameArray::Coordination}}};
+
+/// `[output] contact_arrays`: the arrays' names in the .vtp.
+inline constexpr Spellings<ContactArray, 7> kContactArrayNames{
+    {{"force", ContactArray::Force},
+     {"magnitude", ContactArray::Magnitude},
+     {"normal", ContactArray::Normal},
+     {"normal_force", ContactArray::NormalForce},
+     {"tangential_force", ContactArray::TangentialForce},
+     {"sliding", ContactArray::Sliding},
+     {"depth", ContactArray::Depth}}};
+
 inline constexpr Spellings<Motion, 3> kMotionNames{
     {{"free", Motion::Free}, {"fixed", Motion::Fixed}, {"prescribed", Motion::Prescribed}}};
 

@@ -3,6 +3,7 @@
 #include "io/output/step_files.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,19 @@ std::vector<fs::path> replay_frames(const fs::path& dir) {
   return found;
 }
 
+Snapshot read_replay_frame(const fs::path& vtu) {
+  ArraySet<FrameArray> arrays;
+  Snapshot s = read_vtu_frame(vtu, &arrays);
+  // The view shows speeds and kinetic energy: zeros in their place would be wrong numbers.
+  for (FrameArray a : {FrameArray::Velocity, FrameArray::AngularVelocity})
+    if (!arrays.has(a))
+      throw Error(fmt::format("{} has no {} array (its run's [output] frame_arrays left it out): "
+                              "tridem view needs velocity and angular_velocity to show the "
+                              "speeds and energies",
+                              vtu.string(), name_in(kFrameArrayNames, a)));
+  return s;
+}
+
 void angles_from_vertices(const Snapshot& first, Snapshot& snap) {
   const std::size_t n = std::min(first.size(), snap.size());
   for (std::size_t i = 0; i < n; ++i) {
@@ -31,7 +45,7 @@ void angles_from_vertices(const Snapshot& first, Snapshot& snap) {
 }
 
 ReplayView::ReplayView(const fs::path& dir, const LiveOptions& options, std::FILE* log)
-    : files_(replay_frames(dir)), log_(log), first_(read_vtu_frame(files_.front())) {
+    : files_(replay_frames(dir)), log_(log), first_(read_replay_frame(files_.front())) {
   geometry_ = std::make_shared<const std::string>(encode_geometry(first_));
   server_ = std::make_unique<LiveServer>(options.host, options.port,
                                          static_cast<LiveServer::Events&>(*this), log);
@@ -59,7 +73,7 @@ void ReplayView::opened(int client) {
 void ReplayView::send_frame(int client, std::size_t index) {
   Snapshot snap;
   try {
-    snap = read_vtu_frame(files_[index]);
+    snap = read_replay_frame(files_[index]);
   } catch (const Error& e) {
     if (log_) fmt::print(log_, "live: {}\n", e.what());
     return;

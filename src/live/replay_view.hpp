@@ -15,6 +15,9 @@ namespace tridem::live {
 
 /// The frames of an output directory, in step order. Throws Error when there are none.
 std::vector<std::filesystem::path> replay_frames(const std::filesystem::path& dir);
+/// One frame to replay; refuses (Error) a frame written without the velocities the view
+/// shows (`[output] frame_arrays`).
+Snapshot read_replay_frame(const std::filesystem::path& vtu);
 
 /// Frames read from .vtu files carry no angle (read_vtu_frame gives 0): the angle of each
 /// triangle from how its first vertex turned about its centroid since `first`.

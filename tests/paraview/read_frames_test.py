@@ -3,7 +3,7 @@
 vtkXMLPolyDataReader (Debian's python3-vtk9, the library ParaView is built on) read the
 frames and contact networks a run writes in the default format (binary, Float32, zlib),
 in the former one (Float64, uncompressed), in VTK's raw appended data and compressed by
-vtkLZMADataCompressor; point and cell counts are those of the
+vtkLZMADataCompressor, and with only some arrays (`frame_arrays`, `contact_arrays`); point and cell counts are those of the
 run, and the last frame's cell data and vertices are final.csv's state within float32
 rounding (exactly, in Float64).
 
@@ -94,6 +94,39 @@ def verify(out, tolerance, type_name):
     check(off <= max(tolerance, 1e-12) * 4, f"{out}: normal_force differs from the CSV by {off:g}")
     print(f"{out}: {n} cells, {len(contacts)} contacts read by VTK; worst relative difference {worst:g}")
 
+
+def verify_lean(out):
+    """`frame_arrays` and `contact_arrays`: VTK reads the frame and network, which hold the
+    arrays chosen (besides the frame's identity) and no others, with final.csv's values."""
+    with open(os.path.join(out, "final.csv")) as f:
+        final = list(csv.DictReader(f))
+    grid = read(vtkXMLUnstructuredGridReader, os.path.join(out, "frames", "frame_000003000.vtu"))
+    cells = grid.GetCellData()
+    names = [cells.GetArrayName(k) for k in range(cells.GetNumberOfArrays())]
+    check(names == ["id", "velocity", "material", "motion", "body"], f"{out}: frame arrays {names}")
+    ids = vtk_to_numpy(cells.GetArray("id"))
+    v = vtk_to_numpy(cells.GetArray("velocity"))
+    worst = max(abs(float(v[cell][0]) - float(final[int(k)]["vx"])) /
+                max(abs(float(final[int(k)]["vx"])), 1e-300) for cell, k in enumerate(ids))
+    check(worst <= 2.0 ** -23, f"{out}: velocity differs from final.csv by {worst:g}")
+    network = read(vtkXMLPolyDataReader, os.path.join(out, "contacts", "contacts_000003000.vtp"))
+    data = network.GetCellData()
+    names = [data.GetArrayName(k) for k in range(data.GetNumberOfArrays())]
+    check(names == ["force"], f"{out}: network arrays {names}")
+    with open(os.path.join(out, "contacts", "contacts_000003000.csv")) as f:
+        contacts = list(csv.DictReader(f))
+    check(network.GetNumberOfLines() == len(contacts) > 0,
+          f"{out}: {network.GetNumberOfLines()} lines, {len(contacts)} contacts")
+    force = vtk_to_numpy(data.GetArray("force"))
+    off = max((abs(float(got[1]) - float(row["fy"])) / max(abs(float(row["fy"])), 1e-300)
+               for got, row in zip(force, contacts)), default=0.0)
+    check(off <= 2.0 ** -23, f"{out}: force differs from the CSV by {off:g}")
+    print(f"{out}: the lean frame and network read by VTK; {len(contacts)} contacts")
+
+
+out = os.path.join(work, "lean")
+run(out, 'vtk_encoding = "appended"\nframe_arrays = ["velocity"]\ncontact_arrays = ["force"]\n')
+verify_lean(out)
 
 verify_cases = [
     ("default", "", 2.0 ** -23, "float"),

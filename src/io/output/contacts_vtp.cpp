@@ -12,7 +12,8 @@
 namespace tridem {
 namespace io {
 
-void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s) {
+void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s,
+                        ArraySet<ContactArray> arrays) {
   check_snapshot(s, file.string());
   check_contacts(s, file.string());
   const std::vector<ContactRecord>& c = s.contacts;
@@ -31,31 +32,40 @@ void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, cons
       [&](std::size_t p) { return s.y[p]; }, m, [&c](std::size_t k) { return c[k].i; },
       [&c](std::size_t k) { return c[k].j; }, "Scalars=\"magnitude\" Vectors=\"force\"",
       [&](OutFile& out) {
-        w.reals(out, "force", 3, 3 * m,
-                planar([](const ContactRecord& r) { return r.fx; },
-                       [](const ContactRecord& r) { return r.fy; }),
-                8);
-        w.reals(out, "magnitude", 1, m,
-                each([](const ContactRecord& r) { return std::hypot(r.fx, r.fy); }), 8);
-        w.reals(out, "normal", 3, 3 * m,
-                planar([](const ContactRecord& r) { return r.nx; },
-                       [](const ContactRecord& r) { return r.ny; }),
-                8);
-        w.reals(out, "normal_force", 1, m,
-                each([](const ContactRecord& r) { return r.normal_force(); }), 8);
-        w.reals(out, "tangential_force", 1, m,
-                each([](const ContactRecord& r) { return r.tangential_force(); }), 8);
-        w.integers<std::int32_t>(out, "sliding", 1, m,
-                                 each([](const ContactRecord& r) { return r.sliding ? 1 : 0; }), 8);
-        w.reals(out, "depth", 1, m, each([](const ContactRecord& r) { return r.depth; }), 8);
+        if (arrays.has(ContactArray::Force))
+          w.reals(out, "force", 3, 3 * m,
+                  planar([](const ContactRecord& r) { return r.fx; },
+                         [](const ContactRecord& r) { return r.fy; }),
+                  8);
+        if (arrays.has(ContactArray::Magnitude))
+          w.reals(out, "magnitude", 1, m,
+                  each([](const ContactRecord& r) { return std::hypot(r.fx, r.fy); }), 8);
+        if (arrays.has(ContactArray::Normal))
+          w.reals(out, "normal", 3, 3 * m,
+                  planar([](const ContactRecord& r) { return r.nx; },
+                         [](const ContactRecord& r) { return r.ny; }),
+                  8);
+        if (arrays.has(ContactArray::NormalForce))
+          w.reals(out, "normal_force", 1, m,
+                  each([](const ContactRecord& r) { return r.normal_force(); }), 8);
+        if (arrays.has(ContactArray::TangentialForce))
+          w.reals(out, "tangential_force", 1, m,
+                  each([](const ContactRecord& r) { return r.tangential_force(); }), 8);
+        if (arrays.has(ContactArray::Sliding))
+          w.integers<std::int32_t>(out, "sliding", 1, m,
+                                   each([](const ContactRecord& r) { return r.sliding ? 1 : 0; }),
+                                   8);
+        if (arrays.has(ContactArray::Depth))
+          w.reals(out, "depth", 1, m, each([](const ContactRecord& r) { return r.depth; }), 8);
       });
 }
 
 }  // namespace io
 
-void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s, VtkFormat format) {
+void write_contacts_vtp(const std::filesystem::path& file, const Snapshot& s, VtkFormat format,
+                        ArraySet<ContactArray> arrays) {
   io::VtkXmlWriter w(format);
-  io::write_contacts_vtp(w, file, s);
+  io::write_contacts_vtp(w, file, s, arrays);
 }
 
 }  // namespace tridem

@@ -182,16 +182,19 @@ std::vector<std::unique_ptr<OutputWriter>> make_writers(const OutputSettings& se
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kFrameFiles, ".vtu", "tridem.pvd", ".png"},
       // Each VTK format keeps its own writer, whose buffers then serve every frame.
-      [w = VtkXmlWriter(format), contacts = settings.contacts](
-          const fs::path& f, const Snapshot& s) mutable { write_vtu_frame(w, f, s, contacts); }));
+      [w = VtkXmlWriter(format), contacts = settings.contacts,
+       arrays = settings.frame_arrays](const fs::path& f, const Snapshot& s) mutable {
+        write_vtu_frame(w, f, s, contacts, arrays);
+      }));
   const bool contacts = settings.contacts;
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kContactFiles, ".csv", {}, {}},
       contacts && settings.contacts_csv ? Write(write_contacts_csv) : Write()));
   w.push_back(std::make_unique<StepFileWriter>(
       dir, StepFileFormat{kContactFiles, ".vtp", "contacts.pvd", {}},
-      contacts ? Write([w = VtkXmlWriter(format)](const fs::path& f, const Snapshot& s) mutable {
-        write_contacts_vtp(w, f, s);
+      contacts ? Write([w = VtkXmlWriter(format), arrays = settings.contact_arrays](
+                           const fs::path& f, const Snapshot& s) mutable {
+        write_contacts_vtp(w, f, s, arrays);
       })
                : Write()));
   w.push_back(std::make_unique<CsvLog>(

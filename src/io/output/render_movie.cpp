@@ -49,6 +49,17 @@ struct TempFolder {
 
 }  // namespace
 
+Snapshot read_frame_to_render(const fs::path& vtu, const RenderOptions& options) {
+  ArraySet<FrameArray> arrays;
+  Snapshot s = read_vtu_frame(vtu, &arrays);
+  if (options.color_by == RenderOptions::ColorBy::Speed && !arrays.has(FrameArray::Velocity))
+    throw Error(fmt::format("{} has no velocity array (its run's [output] frame_arrays left it "
+                            "out), so it cannot be coloured by speed: use --color material or "
+                            "--color body",
+                            vtu.string()));
+  return s;
+}
+
 std::size_t render_movie(const fs::path& dir, const fs::path& mp4, const RenderOptions& options,
                          int fps) {
   const std::vector<fs::path> frames = io::kFrameFiles.all(dir, ".vtu");
@@ -61,7 +72,7 @@ std::size_t render_movie(const fs::path& dir, const fs::path& mp4, const RenderO
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::array<double, 4> region{lo, lo, -lo, -lo};
   for (const fs::path& f : frames) {
-    const Snapshot s = read_vtu_frame(f);
+    const Snapshot s = read_frame_to_render(f, options);
     for (std::size_t k = 0; k < s.size(); ++k) {
       const double v = std::hypot(s.vx[k], s.vy[k]);
       if (s.motion[k] == Motion::Free && std::isfinite(v))
@@ -87,7 +98,7 @@ std::size_t render_movie(const fs::path& dir, const fs::path& mp4, const RenderO
     throw Error(fmt::format("cannot write the movie's frames into {}: {}", temp.path.string(),
                             ec.message()));
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    const Snapshot s = read_vtu_frame(frames[k]);
+    const Snapshot s = read_frame_to_render(frames[k], options);
     o.label = fmt::format("t = {:.4f} s   step {}", s.time, s.step);
     render_png(s, temp.path / fmt::format("frame_{:06d}.png", k), o);
   }

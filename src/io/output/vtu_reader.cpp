@@ -4,6 +4,7 @@
 #include "tridem/bonds_reader.hpp"
 #include "tridem/error.hpp"
 #include "tridem/output.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -87,7 +88,7 @@ void read_members(const std::filesystem::path& file, Snapshot& s,
 
 }  // namespace
 
-Snapshot read_vtu_frame(const std::filesystem::path& file) {
+Snapshot read_vtu_frame(const std::filesystem::path& file, ArraySet<FrameArray>* arrays) {
   const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), read_text(file));
   if (const auto it = f.root.find("type"); it == f.root.end() || it->second != "UnstructuredGrid")
     bad_frame(file, "it is not a VTK UnstructuredGrid file");
@@ -125,10 +126,20 @@ Snapshot read_vtu_frame(const std::filesystem::path& file) {
 
   const double max_id = n == 0 ? 0 : static_cast<double>(n - 1);
   const auto ids = integers(file, "id", cells("id", 1), 0, max_id);
-  const auto velocity = cells("velocity", 3);
-  const auto omega = cells("angular_velocity", 1);
-  const auto force = cells("force", 3);
-  const auto torque = cells("torque", 1);
+  // The real fields are the scene's choice (`[output] frame_arrays`): those left out read
+  // as zeros, and `arrays` says which.
+  ArraySet<FrameArray> held = ArraySet<FrameArray>::none();
+  for (const auto& [name, a] : kFrameArrayNames)
+    if (io::find_array(f, "CellData", name)) held.add(a);
+  if (arrays) *arrays = held;
+  const auto field = [&](FrameArray a, int components) {
+    return held.has(a) ? cells(name_in(kFrameArrayNames, a), components)
+                       : std::vector<double>(static_cast<std::size_t>(components) * n, 0.0);
+  };
+  const auto velocity = field(FrameArray::Velocity, 3);
+  const auto omega = field(FrameArray::AngularVelocity, 1);
+  const auto force = field(FrameArray::Force, 3);
+  const auto torque = field(FrameArray::Torque, 1);
   const auto material = integers(file, "material", cells("material", 1), 0, 2147483647.0);
   const auto motion = integers(file, "motion", cells("motion", 1), 0, 2);
   // Frames written before bodies existed have no body array: each triangle its own body.

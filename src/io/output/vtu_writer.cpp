@@ -27,7 +27,7 @@ auto planar(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace
 
 void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s,
-                     bool with_grain_stress) {
+                     bool with_grain_stress, ArraySet<FrameArray> arrays) {
   check_snapshot(s, file.string());
   check_bodies(s, file.string(), /*members_only=*/s.body_x.empty());
   const std::size_t n = s.size();
@@ -57,10 +57,10 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
       out, "types", 1, n, [](std::size_t) { return kVtkTriangle; }, 8);
   out.write("      </Cells>\n      <CellData Scalars=\"angular_velocity\" Vectors=\"velocity\">\n");
   w.indices(out, "id", 1, n, n, index, 8);
-  w.reals(out, "velocity", 3, 3 * n, planar(s.vx, s.vy), 8);
-  w.reals(out, "angular_velocity", s.omega, 8);
-  w.reals(out, "force", 3, 3 * n, planar(s.fx, s.fy), 8);
-  w.reals(out, "torque", s.torque, 8);
+  if (arrays.has(FrameArray::Velocity)) w.reals(out, "velocity", 3, 3 * n, planar(s.vx, s.vy), 8);
+  if (arrays.has(FrameArray::AngularVelocity)) w.reals(out, "angular_velocity", s.omega, 8);
+  if (arrays.has(FrameArray::Force)) w.reals(out, "force", 3, 3 * n, planar(s.fx, s.fy), 8);
+  if (arrays.has(FrameArray::Torque)) w.reals(out, "torque", s.torque, 8);
   w.integers<std::int32_t>(
       out, "material", 1, n, [&](std::size_t k) { return s.material[k]; }, 8);
   w.integers<std::int32_t>(
@@ -73,24 +73,29 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
   // Each grain's own Love-Weber stress and contact count (tridem/measurements.hpp), on
   // every triangle of the grain; zeros where the snapshot holds no contacts (step 0).
   // Left out without the contacts: a frame would otherwise show zeros for every grain.
-  if (with_grain_stress) {
+  const bool stress = arrays.has(FrameArray::Stress), pressure = arrays.has(FrameArray::Pressure),
+             coordination = arrays.has(FrameArray::Coordination);
+  if (with_grain_stress && (stress || pressure || coordination)) {
     const GrainStress grain = grain_stress(s);
     const auto g = [&](std::size_t i) { return static_cast<std::size_t>(s.body_of(i)); };
     // Row-major 3×3: sxx, sxy, 0, syx, syy, 0, 0, 0, 0.
     const std::vector<double>* tensor[5] = {&grain.sxx, &grain.sxy, nullptr, &grain.syx,
                                             &grain.syy};
-    w.reals(
-        out, "stress", 9, 9 * n,
-        [&](std::size_t k) {
-          const std::size_t r = k % 9;
-          return r < 5 && tensor[r] ? (*tensor[r])[g(k / 9)] : 0.0;
-        },
-        8);
-    w.reals(
-        out, "pressure", 1, n,
-        [&](std::size_t k) { return 0.5 * (grain.sxx[g(k)] + grain.syy[g(k)]); }, 8);
-    w.integers<std::int32_t>(
-        out, "coordination", 1, n, [&](std::size_t k) { return grain.coordination[g(k)]; }, 8);
+    if (stress)
+      w.reals(
+          out, "stress", 9, 9 * n,
+          [&](std::size_t k) {
+            const std::size_t r = k % 9;
+            return r < 5 && tensor[r] ? (*tensor[r])[g(k / 9)] : 0.0;
+          },
+          8);
+    if (pressure)
+      w.reals(
+          out, "pressure", 1, n,
+          [&](std::size_t k) { return 0.5 * (grain.sxx[g(k)] + grain.syy[g(k)]); }, 8);
+    if (coordination)
+      w.integers<std::int32_t>(
+          out, "coordination", 1, n, [&](std::size_t k) { return grain.coordination[g(k)]; }, 8);
   }
   out.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n");
   w.end_file(out);
@@ -99,9 +104,9 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
 }  // namespace io
 
 void write_vtu_frame(const std::filesystem::path& file, const Snapshot& s, VtkFormat format,
-                     bool with_grain_stress) {
+                     bool with_grain_stress, ArraySet<FrameArray> arrays) {
   io::VtkXmlWriter w(format);
-  io::write_vtu_frame(w, file, s, with_grain_stress);
+  io::write_vtu_frame(w, file, s, with_grain_stress, arrays);
 }
 
 }  // namespace tridem

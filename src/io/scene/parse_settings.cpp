@@ -123,6 +123,24 @@ OutputSettings parse_output(const toml::table& table, const std::string& source)
       r.choice_in<VtkPrecision>("vtk_precision", kVtkPrecisionNames).value_or(o.precision);
   o.compression =
       r.choice_in<VtkCompression>("vtk_compression", kVtkCompressionNames).value_or(o.compression);
+  if (auto names = r.choices_in<FrameArray>("frame_arrays", kFrameArrayNames)) {
+    o.frame_arrays = ArraySet<FrameArray>::none();
+    for (FrameArray a : *names) {
+      // The grain's sums come from the frame's contacts, which only `contacts` downloads.
+      const bool of_contacts =
+          a == FrameArray::Stress || a == FrameArray::Pressure || a == FrameArray::Coordination;
+      if (of_contacts && !o.contacts)
+        r.fail("frame_arrays",
+               fmt::format("\"{}\" is computed from each frame's contacts: it needs contacts "
+                           "= true",
+                           name_in(kFrameArrayNames, a)));
+      o.frame_arrays.add(a);
+    }
+  }
+  if (auto names = r.choices_in<ContactArray>("contact_arrays", kContactArrayNames)) {
+    o.contact_arrays = ArraySet<ContactArray>::none();
+    for (ContactArray a : *names) o.contact_arrays.add(a);
+  }
   r.reject_unknown_keys();
   return o;
 }

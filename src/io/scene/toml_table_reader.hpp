@@ -6,6 +6,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -57,6 +58,10 @@ class TableReader {
   /// {spelling, value} (those of setting_names.hpp: one table per enumeration).
   template <class E, class Options>
   std::optional<E> choice_in(std::string_view key, const Options& options);
+  /// An array of such spellings, each at most once (empty allowed): their enumerators, in
+  /// the file's order.
+  template <class E, class Options>
+  std::optional<std::vector<E>> choices_in(std::string_view key, const Options& options);
 
   /// For a getter's result on a required key: the value, or a "missing required key" error.
   template <class T>
@@ -121,6 +126,36 @@ std::optional<E> TableReader::choice_in(std::string_view key, const Options& opt
     allowed += (allowed.empty() ? "\"" : ", \"") + std::string(spelling) + "\"";
   }
   fail(key, "unknown value \"" + *text + "\" (expected one of " + allowed + ")");
+}
+
+template <class E, class Options>
+std::optional<std::vector<E>> TableReader::choices_in(std::string_view key,
+                                                      const Options& options) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  std::string allowed;
+  for (const auto& [spelling, value] : options)
+    allowed += (allowed.empty() ? "\"" : ", \"") + std::string(spelling) + "\"";
+  const auto* array = n->as_array();
+  if (!array)
+    fail(key, "expected an array of names (any of " + allowed + "), got " +
+                  std::string(describe_type(n->type())));
+  std::vector<E> out;
+  for (const toml::node& element : *array) {
+    const auto* text = element.as_string();
+    if (!text)
+      fail_at(element, key,
+              "expected a name (a string), got " + std::string(describe_type(element.type())));
+    const auto it = std::find_if(options.begin(), options.end(),
+                                 [&](const auto& o) { return o.first == text->get(); });
+    if (it == options.end())
+      fail_at(element, key,
+              "unknown name \"" + text->get() + "\" (expected any of " + allowed + ")");
+    if (std::find(out.begin(), out.end(), it->second) != out.end())
+      fail_at(element, key, "\"" + text->get() + "\" is listed twice");
+    out.push_back(it->second);
+  }
+  return out;
 }
 
 }  // namespace tridem::scene_detail

@@ -210,6 +210,29 @@ vtk_compression = "none"
   }
 }
 
+TEST(SceneParse, FrameAndContactArraysAreRead) {
+  const std::string triangle = R"(
+[[triangle]]
+material = "m"
+vertices = [[0, 0], [1, 0], [0, 1]]
+)";
+  const Scene all = parse_scene(std::string(kHead) + triangle, "all.toml");
+  EXPECT_EQ(all.output.frame_arrays, ArraySet<FrameArray>{});
+  EXPECT_TRUE(all.output.contact_arrays.has(ContactArray::Sliding));
+  const Scene s = parse_scene(std::string(kHead) + triangle + R"(
+[output]
+frame_arrays = ["velocity", "stress"]
+contact_arrays = []
+)",
+                              "lean.toml");
+  for (const FrameArray a : {FrameArray::Velocity, FrameArray::Stress})
+    EXPECT_TRUE(s.output.frame_arrays.has(a));
+  for (const FrameArray a : {FrameArray::AngularVelocity, FrameArray::Force, FrameArray::Torque,
+                             FrameArray::Pressure, FrameArray::Coordination})
+    EXPECT_FALSE(s.output.frame_arrays.has(a));
+  EXPECT_EQ(s.output.contact_arrays, ArraySet<ContactArray>::none());
+}
+
 TEST(SceneParse, IntegersAcceptedWhereRealsExpected) {
   const Scene s = parse_scene(std::string(kHead) + R"(
 [[triangle]]

@@ -200,6 +200,20 @@ TEST(SceneRefusals, SettingRanges) {
                  {"bad.toml:4:", "key 'checkpoint_every'"});
 }
 
+TEST(SceneRefusals, FrameArraysNotKnownTwiceOrWithoutTheirContacts) {
+  const std::string head = "[simulation]\nsteps = 5\n[output]\n";
+  expect_refused(head + "frame_arrays = [\"velocity\", \"speed\"]\n",
+                 {"bad.toml:4:", "key 'frame_arrays'", "\"speed\"", "\"angular_velocity\""});
+  expect_refused(head + "contact_arrays = [\"force\", \"force\"]\n",
+                 {"bad.toml:4:", "key 'contact_arrays'", "twice"});
+  expect_refused(head + "contact_arrays = \"force\"\n",
+                 {"bad.toml:4:", "key 'contact_arrays'", "an array of names"});
+  expect_refused(head + "frame_arrays = [1]\n", {"bad.toml:4:", "key 'frame_arrays'", "a string"});
+  // The grain's stress is a sum over the frame's contacts.
+  expect_refused(head + "contacts = false\nframe_arrays = [\"velocity\", \"coordination\"]\n",
+                 {"bad.toml:5:", "key 'frame_arrays'", "\"coordination\"", "contacts = true"});
+}
+
 TEST(SceneRefusals, FixedTriangleThatMoves) {
   expect_refused(with_triangle("material = \"m\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n"
                                "fixed = true\nvelocity = [1, 0]\n"),
