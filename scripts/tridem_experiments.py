@@ -144,13 +144,43 @@ def _vtk_array(text, dtype, decompress, header):
     return np.frombuffer(b"".join(out), dtype=dtype)
 
 
+def _appended_array(raw, offset, dtype, decompress, header):
+    """One array of VTK's raw appended data, from `offset` (its DataArray's attribute):
+    the byte count and the values, or the blocks' header and the compressed blocks."""
+    word = np.dtype(header)
+    first = np.frombuffer(raw[offset:offset + word.itemsize], dtype=word)
+    if decompress is None:
+        start = offset + word.itemsize
+        return np.frombuffer(raw[start:start + int(first[0])], dtype=dtype)
+    blocks = int(first[0])
+    at = offset + (3 + blocks) * word.itemsize
+    sizes = np.frombuffer(raw[offset:at], dtype=word)[3:]
+    out = []
+    for size in sizes:
+        out.append(decompress(raw[at:at + int(size)]))
+        at += int(size)
+    return np.frombuffer(b"".join(out), dtype=dtype)
+
+
 def read_frame(path):
     """A frame (frames/frame_STEP.vtu) as a dict: 'time', 'vertices' (n x 3 x 2) and each
-    cell array by name (velocity as n x 3, motion, body, material, ...)."""
+    cell array by name (velocity as n x 3, motion, body, material, ...; those a run's
+    [output] frame_arrays left out are absent). Reads every encoding tridem writes:
+    inline base64 or text, and VTK's raw appended data (vtk_encoding = "appended")."""
     import lzma
     import xml.etree.ElementTree as ET
     import zlib
-    root = ET.parse(path).getroot()
+    with open(path, "rb") as f:
+        data = f.read()
+    # Appended raw data is not XML: the tags before it are parsed, its bytes taken as they
+    # are (from the underscore after its tag to its closing tag, the file's last).
+    raw = b""
+    marker = data.find(b"<AppendedData")
+    if marker >= 0:
+        start = data.index(b"_", data.index(b">", marker)) + 1
+        raw = data[start:data.rindex(b"</AppendedData>")]
+        data = data[:marker] + b"</VTKFile>"
+    root = ET.fromstring(data)
     decompress = {"vtkZLibDataCompressor": zlib.decompress,
                   "vtkLZMADataCompressor": lzma.decompress}.get(root.get("compressor"))
     header = _VTK_TYPES[root.get("header_type", "UInt32")]
@@ -159,6 +189,8 @@ def read_frame(path):
         dtype = _VTK_TYPES[a.get("type")]
         if a.get("format") == "ascii":
             values = np.array((a.text or "").split(), dtype=dtype)
+        elif a.get("format") == "appended":
+            values = _appended_array(raw, int(a.get("offset")), dtype, decompress, header)
         else:
             values = _vtk_array(a.text or "", dtype, decompress, header)
         comps = int(a.get("NumberOfComponents", "1"))

@@ -18,6 +18,7 @@ import sys
 
 SKIP = 77
 try:
+    import numpy as np
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
 except ImportError:
@@ -25,6 +26,8 @@ except ImportError:
     sys.exit(SKIP)
 
 tridem, source, work = sys.argv[1], sys.argv[2], sys.argv[3]
+sys.path.insert(0, os.path.join(source, "scripts"))
+import tridem_experiments as tx  # noqa: E402  (found through the source folder, above)
 scene = os.path.join(source, "tests", "paraview", "frames_scene.toml")
 failures = []
 
@@ -124,9 +127,26 @@ def verify_lean(out):
     print(f"{out}: the lean frame and network read by VTK; {len(contacts)} contacts")
 
 
+def same_as_experiments_reader(out):
+    """scripts/tridem_experiments.py's read_frame (what the experiment scripts read frames
+    with) gives VTK's arrays, in every encoding: inline, appended, lzma."""
+    path = os.path.join(out, "frames", "frame_000003000.vtu")
+    grid = read(vtkXMLUnstructuredGridReader, path)
+    frame = tx.read_frame(path)
+    cells = grid.GetCellData()
+    for k in range(cells.GetNumberOfArrays()):
+        name = cells.GetArrayName(k)
+        check(name in frame and np.array_equal(frame[name], vtk_to_numpy(cells.GetArray(k))),
+              f"{path}: read_frame's {name} is not VTK's")
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    check(np.array_equal(frame["vertices"], points[:, :2].reshape(-1, 3, 2)),
+          f"{path}: read_frame's vertices are not VTK's")
+
+
 out = os.path.join(work, "lean")
 run(out, 'vtk_encoding = "appended"\nframe_arrays = ["velocity"]\ncontact_arrays = ["force"]\n')
 verify_lean(out)
+same_as_experiments_reader(out)
 
 verify_cases = [
     ("default", "", 2.0 ** -23, "float"),
@@ -144,4 +164,5 @@ for name, extra, tolerance, type_name in verify_cases:
     out = os.path.join(work, name)
     run(out, extra)
     verify(out, tolerance, type_name)
+    same_as_experiments_reader(out)
 sys.exit(1 if failures else 0)
