@@ -89,7 +89,6 @@ int main(int argc, char** argv) {
 
   using tridem::ContactArray, tridem::FrameArray;
   const auto motion = only<FrameArray>(tridem::kFrameArrayNames, {"velocity", "angular_velocity"});
-  const auto velocity = only<FrameArray>(tridem::kFrameArrayNames, {"velocity"});
   const auto force_depth = only<ContactArray>(tridem::kContactArrayNames, {"force", "depth"});
   const auto force = only<ContactArray>(tridem::kContactArrayNames, {"force"});
   const Case cases[] = {
@@ -110,9 +109,9 @@ int main(int argc, char** argv) {
        {tridem::Encoding::Appended},
        motion,
        force_depth},
-      {"float32, zlib, appended raw; velocity; force",
+      {"float32, zlib, appended raw; velocity, angular_velocity; force",
        {tridem::Encoding::Appended},
-       velocity,
+       motion,
        force},
       {"float32, zlib; velocity, angular_velocity; force, depth", {}, motion, force_depth},
       {"float32, lzma, appended raw; velocity, angular_velocity; force, depth",

@@ -108,7 +108,7 @@ TEST(FrameSize, LeanArraysInAppendedDataAreAtMost100BytesPerTriangleWithContacts
   test::TempDir tmp;
   // What a long run keeps to see motion and force chains: `[output] vtk_encoding =
   // "appended"`, `frame_arrays = ["velocity", "angular_velocity"]`, `contact_arrays =
-  // ["force", "depth"]` (docs/performance.md, "Output frames", item 12).
+  // ["force"]` (docs/performance.md, "Output frames", item 12).
   OutputSettings lean;
   lean.contacts_csv = false;
   lean.encoding = Encoding::Appended;
@@ -117,7 +117,6 @@ TEST(FrameSize, LeanArraysInAppendedDataAreAtMost100BytesPerTriangleWithContacts
   lean.frame_arrays.add(FrameArray::AngularVelocity);
   lean.contact_arrays = ArraySet<ContactArray>::none();
   lean.contact_arrays.add(ContactArray::Force);
-  lean.contact_arrays.add(ContactArray::Depth);
   OutputSettings every_array = lean;
   every_array.frame_arrays = {};
   every_array.contact_arrays = {};
