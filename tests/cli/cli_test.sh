@@ -87,6 +87,16 @@ grep -q 'format="ascii"' ascii_out/frames/frame_000000100.vtu || fail "vtk_encod
 grep -q 'format="binary"' pile_out/frames/frame_000000100.vtu || fail "frames are not binary by default"
 expect_ok "$tridem" render ascii_out/frames/frame_000000100.vtu -o ascii.png
 
+# [output] frame_arrays: a frame without velocities is not drawn by speed (the message
+# says what to draw instead), by material it is; `tridem view` refuses to replay it.
+sed 's/every = 100/every = 100\nframe_arrays = ["force"]\ncontact_arrays = ["force"]/' pile.toml >lean.toml
+expect_ok "$tridem" run lean.toml --quiet --out lean_out --steps 100
+grep -q 'Name="velocity"' lean_out/frames/frame_000000100.vtu && fail "frame_arrays left velocity in"
+grep -q 'Name="depth"' lean_out/contacts/contacts_000000100.vtp && fail "contact_arrays left depth in"
+expect_error "--color material" "$tridem" render lean_out -o lean.png
+expect_ok "$tridem" render lean_out -o lean.png --color material
+expect_error "no velocity array" "$tridem" view lean_out --port 0
+
 # Output events every step: the run must reach its end (it stalled at step 63, when the
 # chunk length, doubled at every event, overflowed).
 sed 's/every = 100/every = 1\ncontacts = false/' pile.toml >every1.toml
