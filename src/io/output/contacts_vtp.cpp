@@ -8,9 +8,22 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 namespace tridem {
 namespace io {
+
+namespace {
+
+/// The active scalars and vectors ParaView colours by first, where the network has them.
+std::string active_attributes(ArraySet<ContactArray> arrays) {
+  const bool scalars = arrays.has(ContactArray::Magnitude),
+             vectors = arrays.has(ContactArray::Force);
+  return std::string(scalars ? "Scalars=\"magnitude\"" : "") + (scalars && vectors ? " " : "") +
+         (vectors ? "Vectors=\"force\"" : "");
+}
+
+}  // namespace
 
 void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, const Snapshot& s,
                         ArraySet<ContactArray> arrays) {
@@ -30,7 +43,7 @@ void write_contacts_vtp(VtkXmlWriter& w, const std::filesystem::path& file, cons
   w.line_set_vtp(
       file, s.step, s.time, s.size(), [&](std::size_t p) { return s.x[p]; },
       [&](std::size_t p) { return s.y[p]; }, m, [&c](std::size_t k) { return c[k].i; },
-      [&c](std::size_t k) { return c[k].j; }, "Scalars=\"magnitude\" Vectors=\"force\"",
+      [&c](std::size_t k) { return c[k].j; }, active_attributes(arrays),
       [&](OutFile& out) {
         if (arrays.has(ContactArray::Force))
           w.reals(out, "force", 3, 3 * m,

@@ -55,7 +55,10 @@ void write_vtu_frame(VtkXmlWriter& w, const std::filesystem::path& file, const S
       [](std::size_t k) { return static_cast<std::int64_t>(3 * (k + 1)); }, 8);
   w.integers<std::uint8_t>(
       out, "types", 1, n, [](std::size_t) { return kVtkTriangle; }, 8);
-  out.write("      </Cells>\n      <CellData Scalars=\"angular_velocity\" Vectors=\"velocity\">\n");
+  // The active scalars and vectors ParaView colours by first, where the frame has them.
+  out.print("      </Cells>\n      <CellData{}{}>\n",
+            arrays.has(FrameArray::AngularVelocity) ? " Scalars=\"angular_velocity\"" : "",
+            arrays.has(FrameArray::Velocity) ? " Vectors=\"velocity\"" : "");
   w.indices(out, "id", 1, n, n, index, 8);
   if (arrays.has(FrameArray::Velocity)) w.reals(out, "velocity", 3, 3 * n, planar(s.vx, s.vy), 8);
   if (arrays.has(FrameArray::AngularVelocity)) w.reals(out, "angular_velocity", s.omega, 8);

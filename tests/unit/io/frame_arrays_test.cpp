@@ -43,6 +43,10 @@ TEST(FrameArrays, AFrameCarriesTheChosenFieldsAndItsIdentity) {
   write_vtu_frame(file, s, {}, true, set_of({FrameArray::Velocity, FrameArray::Pressure}));
   EXPECT_EQ(cell_arrays(file),
             (std::vector<std::string>{"id", "velocity", "material", "motion", "body", "pressure"}));
+  // ParaView's active attributes name only arrays the file has.
+  const std::string text = test::read_file(file);
+  EXPECT_NE(text.find("<CellData Vectors=\"velocity\">"), std::string::npos);
+  EXPECT_EQ(text.find("Scalars="), std::string::npos);
   // Every field by default, in the contract's order.
   write_vtu_frame(tmp.path() / "all.vtu", s);
   EXPECT_EQ(
@@ -80,12 +84,14 @@ TEST(FrameArrays, ANetworkCarriesTheChosenArraysAndEveryLine) {
   write_contacts_vtp(file, s, {Encoding::Binary, VtkPrecision::Float64},
                      set_of({ContactArray::Depth, ContactArray::Force}));
   EXPECT_EQ(cell_arrays(file), (std::vector<std::string>{"force", "depth"}));
+  EXPECT_NE(test::read_file(file).find("<CellData Vectors=\"force\">"), std::string::npos);
   const io::VtkXmlFile f = io::parse_vtk_xml(file.string(), test::read_file(file));
   EXPECT_EQ(f.piece.at("NumberOfLines"), "2");
   const auto depth = io::decode_array(f, *io::find_array(f, "CellData", "depth"), 1, 2);
   EXPECT_EQ(depth, (std::vector<double>{s.contacts[0].depth, s.contacts[1].depth}));
   write_contacts_vtp(tmp.path() / "none.vtp", s, {}, ArraySet<ContactArray>::none());
   EXPECT_TRUE(cell_arrays(tmp.path() / "none.vtp").empty());
+  EXPECT_EQ(test::read_file(tmp.path() / "none.vtp").find("Vectors="), std::string::npos);
 }
 
 TEST(FrameArrays, ARunsOutputsFollowItsSettings) {
