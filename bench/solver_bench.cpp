@@ -53,7 +53,9 @@
 //                     settled pile beside the dense one), stepped once
 //                     per size and precision by the fastest backend there (cuda, else
 //                     openmp), kept as a SolverState (what a checkpoint holds) and loaded
-//                     into each repetition's solver; counter `settle_steps`
+//                     into each repetition's solver; counter `settle_steps`;
+//                     shuffled_pile(n) is dense_pile(n) with its grains numbered in a
+//                     random order (fixed seed): what the particles' order costs
 //   --settle_steps=N  steps that settle settled_pile (default 50000)
 //   --run_ahead=0     the CUDA solver without run-ahead (each step waits for the status of
 //                     the one before it; the default launches each step before that status
@@ -78,6 +80,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <thread>
 #include <utility>
@@ -159,14 +162,15 @@ bool g_run_ahead = true;
 std::size_t g_contact_rows_per_copy = 0;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies, Bonded, Settled };
-constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled};
+enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled };
+constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled, Pile::Shuffled};
 const char* pile_name(Pile p) {
   switch (p) {
     case Pile::Dense: return "dense_pile";
     case Pile::Bodies: return "body_pile";
     case Pile::Bonded: return "bonded_pile";
     case Pile::Settled: return "settled_pile";
+    case Pile::Shuffled: return "shuffled_pile";
   }
   return "";
 }
@@ -185,6 +189,16 @@ tridem::Scene make_pile(Pile kind, std::size_t n) {
       return tridem::dense_pile(n, 0.01, std::max(1.0, static_cast<double>(n) / 1e4));
     case Pile::Bodies: return tridem::body_pile(n);
     case Pile::Bonded: return tridem::bonded_pile(n);
+    case Pile::Shuffled: {
+      // The same grains in an order unrelated to where they lie (a fixed seed), as a scene
+      // poured or imported rather than generated row by row numbers them: what the
+      // particles' order costs a solver's memory traffic. The walls stay last.
+      tridem::Scene s = tridem::dense_pile(n);
+      s.source = "shuffled_pile";
+      std::mt19937_64 random(12345);
+      std::shuffle(s.triangles.begin(), s.triangles.end() - 3, random);
+      return s;
+    }
   }
   return {};
 }
@@ -381,7 +395,7 @@ int main(int argc, char** argv) {
                                    [&](Pile x) { return name == pile_name(x); });
       if (p == std::end(kPiles)) {
         std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
-                     "settled_pile; got '"
+                     "settled_pile, shuffled_pile; got '"
                   << name << "'\n";
         return 2;
       }

@@ -50,6 +50,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
     for_each_array(column(field),
                    [&](auto& v, int k) { v = initial_column<Real>(field, model, k); });
   });
+  partner_.resize(n_);
   margin_ = static_cast<Real>(scene.simulation.skin * static_cast<double>(finder_.cell_size()));
   walls_move_ = walls_move(model);
   cell_ = scene.simulation.periodic;
@@ -239,6 +240,23 @@ void CpuSolver<Real>::update_geometry(Part part) {
     lo_y_[i] = placed.box.lo.y;
     hi_x_[i] = placed.box.hi.x;
     hi_y_[i] = placed.box.hi.y;
+    PartnerRecord<Real>& r = partner_[i];
+    r.x = x_[i];
+    r.y = y_[i];
+    r.vx = vx_[i];
+    r.vy = vy_[i];
+    r.w = w_[i];
+    for (int k = 0; k < 3; ++k) {
+      r.rel_x[k] = placed.rel[k].x;
+      r.rel_y[k] = placed.rel[k].y;
+    }
+    r.lo_x = placed.box.lo.x;
+    r.lo_y = placed.box.lo.y;
+    r.hi_x = placed.box.hi.x;
+    r.hi_y = placed.box.hi.y;
+    r.area = area_[i];
+    r.mass = mass_[i];
+    r.material = material_[i];
   }
 }
 
@@ -279,20 +297,16 @@ void CpuSolver<Real>::finish_pair_list() {
 
 template <class Real>
 physics::Body<Real> CpuSolver<Real>::body(std::int32_t i, Vec2d origin) const {
-  Vec2<Real> rel[3];
-  physics::load_vertices(rel_x_, rel_y_, i, rel);
-  return physics::body_at(physics::offset_from<Real>(origin, Vec2d{x_[i], y_[i]}), rel,
-                          Vec2d{vx_[i], vy_[i]}, w_[i], area_[i], mass_[i]);
+  const PartnerRecord<Real>& r = partner_[i];
+  return r.body(physics::offset_from<Real>(origin, Vec2d{r.x, r.y}), Vec2d{r.vx, r.vy});
 }
 
 template <class Real>
 physics::Body<Real> CpuSolver<Real>::image_body(std::int32_t i, Vec2d origin,
                                                 const physics::PeriodicImage& im) const {
-  const Vec2d c{x_[i], y_[i]};
-  Vec2<Real> rel[3];
-  physics::load_vertices(rel_x_, rel_y_, i, rel);
-  return physics::body_at(physics::image_offset<Real>(origin, c, im), rel,
-                          Vec2d{vx_[i] + im.dvx, vy_[i]}, w_[i], area_[i], mass_[i]);
+  const PartnerRecord<Real>& r = partner_[i];
+  return r.body(physics::image_offset<Real>(origin, Vec2d{r.x, r.y}, im),
+                Vec2d{r.vx + im.dvx, r.vy});
 }
 
 template <class Real>
@@ -347,26 +361,28 @@ void CpuSolver<Real>::compute_pair_slots(Part part) {
     double image_power = 0;
     for (std::int64_t s = pairs_.offset[e]; s < pairs_.offset[e + 1]; ++s) {
       const std::int32_t j = pairs_.partner[s];
+      const PartnerRecord<Real>& partner = partner_[j];
       const bool on_ghost = received && (received_e || received[j] != 0);
       if (part != Part::All && on_ghost != ghosts) continue;
       // Members of one body, and triangles an intact bond holds: exact zeros, no history;
       // so is a kept pair whose boxes no longer overlap, as if it were not listed.
       if (physics::same_body(body_of, e, j) || physics::intact_bond_between(bond_view_, e, j) ||
-          (grown && !physics::boxes_overlap(
-                        box_e, physics::box_of(lo_x_[j], lo_y_[j], hi_x_[j], hi_y_[j])))) {
+          (grown && !physics::boxes_overlap(box_e, physics::box_of(partner.lo_x, partner.lo_y,
+                                                                   partner.hi_x, partner.hi_y)))) {
         result_[s] = physics::PairForce<Real>{};
         slip_[s] = physics::PairSlip<Real>{};
         continue;
       }
       // The last step's list, slot by slot: its slot's history is the pair's.
       physics::PairSlip<Real> slip = same_list ? old_slip_[s] : old.history_of(j);
-      const auto& law = laws_[material_[emitter] * n_materials_ + material_[j]];
+      const auto& law = laws_[material_[emitter] * n_materials_ + partner.material];
       const auto force = [&](const physics::Body<Real>& b) {
         return pair_energy_ ? physics::SceneContactLaw::force<true>(a, b, law, dt, slip)
                             : physics::SceneContactLaw::force<false>(a, b, law, dt, slip);
       };
       if (periodic_) {
-        const physics::PeriodicImage im = physics::nearest_image(frame, origin, {x_[j], y_[j]});
+        const physics::PeriodicImage im =
+            physics::nearest_image(frame, origin, {partner.x, partner.y});
         result_[s] = force(image_body(j, origin, im));
         image_power += physics::image_power(im, static_cast<double>(result_[s].force_a.x));
       } else {

@@ -3,8 +3,10 @@
 // `parallel` off or on. Every stage writes only memory it owns (a pair's slot, a
 // particle's row), and every sum runs in a fixed order (pairs ascending), so the OpenMP
 // solver reproduces the serial one bit for bit; that is what the parity tests check.
+#include "backends/cpu/partner_record.hpp"
 #include "backends/cpu/thread_choice.hpp"
 #include "broadphase/candidate_pairs.hpp"
+#include "broadphase/default_init_allocator.hpp"
 #include "broadphase/single_domain.hpp"
 #include "core/bond_columns.hpp"
 #include "core/ghost_overlap.hpp"
@@ -217,6 +219,9 @@ class CpuSolver final : public Solver {
   PairList pairs_, old_pairs_;
   std::vector<physics::PairSlip<Real>> slip_, old_slip_;
   std::vector<physics::PairForce<Real>> result_;
+  /// Each particle's fields as its pairs read them, written by the Geometry stage before
+  /// any pair reads them (so not zeroed first: its pages are touched by the threads).
+  UnfilledVector<PartnerRecord<Real>> partner_;
   ReverseIndex reverse_;
   StageStopwatch stopwatch_;
   // The lowest index the team's threads found too deep (a pair's emitter) or running away
