@@ -13,8 +13,8 @@ nvidia-smi --query-gpu=name,memory.total --format=csv,noheader
 if [ "${SHUFFLE:-0}" = 1 ]; then
   # What the particles' order costs the GPU: dense_pile against the same grains numbered
   # at random (shuffled_pile), both precisions, one binary, cases interleaved.
-  .devbin/bench/tridem_bench --scenes=dense_pile,shuffled_pile --backends=cuda,cuda-float \
-    --min_n=1e4 --max_n="${SHUFFLE_MAX_N:-1e6}" --benchmark_repetitions=3 \
+  .devbin/bench/tridem_bench --scenes=dense_pile,shuffled_pile,curve_pile --backends=cuda,cuda-float \
+    --min_n="${SHUFFLE_MIN_N:-1e4}" --max_n="${SHUFFLE_MAX_N:-1e6}" --benchmark_repetitions=3 \
     --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
     --benchmark_out="$out/shuffle.json" --benchmark_out_format=json 2>&1 | tee "$out/shuffle.txt" | grep -E "median|scene"
 fi

@@ -55,7 +55,8 @@
 //                     openmp), kept as a SolverState (what a checkpoint holds) and loaded
 //                     into each repetition's solver; counter `settle_steps`;
 //                     shuffled_pile(n) is dense_pile(n) with its grains numbered in a
-//                     random order (fixed seed): what the particles' order costs
+//                     random order (fixed seed): what the particles' order costs;
+//                     curve_pile(n) numbers them along a Hilbert curve (numbering = "space")
 //   --settle_steps=N  steps that settle settled_pile (default 50000)
 //   --run_ahead=0     the CUDA solver without run-ahead (each step waits for the status of
 //                     the one before it; the default launches each step before that status
@@ -63,8 +64,9 @@
 //   --skin=X          every case's [simulation] skin (default the scenes' 0.05): the CUDA
 //                     list's and the CPU solvers' kept list's; 0 builds the CPU list every
 //                     step from the boxes themselves (same results: what keeping it gives)
-#include "bench_flags.hpp"
 #include "backends/cuda/cuda_backend.hpp"
+#include "bench_flags.hpp"
+#include "core/space_filling_order.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
 #include "tridem/standard_scenes.hpp"
@@ -162,8 +164,9 @@ bool g_run_ahead = true;
 std::size_t g_contact_rows_per_copy = 0;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled };
-constexpr Pile kPiles[] = {Pile::Dense, Pile::Bodies, Pile::Bonded, Pile::Settled, Pile::Shuffled};
+enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve };
+constexpr Pile kPiles[] = {Pile::Dense,   Pile::Bodies,   Pile::Bonded,
+                           Pile::Settled, Pile::Shuffled, Pile::Curve};
 const char* pile_name(Pile p) {
   switch (p) {
     case Pile::Dense: return "dense_pile";
@@ -171,6 +174,7 @@ const char* pile_name(Pile p) {
     case Pile::Bonded: return "bonded_pile";
     case Pile::Settled: return "settled_pile";
     case Pile::Shuffled: return "shuffled_pile";
+    case Pile::Curve: return "curve_pile";
   }
   return "";
 }
@@ -197,6 +201,25 @@ tridem::Scene make_pile(Pile kind, std::size_t n) {
       s.source = "shuffled_pile";
       std::mt19937_64 random(12345);
       std::shuffle(s.triangles.begin(), s.triangles.end() - 3, random);
+      return s;
+    }
+    case Pile::Curve: {
+      // Numbered along the Hilbert curve through the centroids, as [[generate]]'s
+      // numbering = "space" numbers its grains.
+      tridem::Scene s = tridem::dense_pile(n);
+      s.source = "curve_pile";
+      const std::size_t grains = s.triangles.size() - 3;
+      std::vector<tridem::Vec2d> centroids(grains);
+      for (std::size_t i = 0; i < grains; ++i) {
+        const auto& v = s.triangles[i].vertices;
+        centroids[i] = (v[0] + v[1] + v[2]) / 3.0;
+      }
+      std::vector<tridem::TriangleSpec> numbered;
+      numbered.reserve(s.triangles.size());
+      for (const std::size_t i : tridem::space_filling_order(centroids))
+        numbered.push_back(s.triangles[i]);
+      numbered.insert(numbered.end(), s.triangles.end() - 3, s.triangles.end());
+      s.triangles = std::move(numbered);
       return s;
     }
   }
@@ -395,7 +418,7 @@ int main(int argc, char** argv) {
                                    [&](Pile x) { return name == pile_name(x); });
       if (p == std::end(kPiles)) {
         std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
-                     "settled_pile, shuffled_pile; got '"
+                     "settled_pile, shuffled_pile, curve_pile; got '"
                   << name << "'\n";
         return 2;
       }

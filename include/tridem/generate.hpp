@@ -66,6 +66,12 @@ struct SizeDistribution {
   std::vector<SizeClass> classes;  ///< non-empty: this table instead of the range
 };
 
+/// How generated grains are numbered: in the order they were placed (largest first), or
+/// along a space-filling curve through their centres, so that neighbours get nearby ids
+/// (their data then lies close in memory: a GPU run of 10^6 triangles numbered at random
+/// took over twice as long a step; docs/performance.md, "The particles' order").
+enum class GrainNumbering { Placement, Space };
+
 /// Random convex polygons (or triangles) placed by random sequential addition, without
 /// overlap, wholly inside a rectangle or a simple polygon (docs/scene-format.md,
 /// kind = "polygons" / "triangles"). Each polygon is one body of triangles (its
@@ -83,6 +89,7 @@ struct GrainSpec {
   std::uint64_t seed = 1;
   std::size_t max_attempts = 10000;  ///< random positions tried per grain before giving up
   Vec2d velocity{};                  ///< given to every grain
+  GrainNumbering numbering = GrainNumbering::Placement;  ///< the ids' order
 };
 
 /// The grains: triangles, and bodies over them (BodySpec::first indexes `triangles`).
@@ -97,7 +104,9 @@ std::size_t max_grain_triangles(const GrainSpec& spec);
 
 /// Throws SceneError for an invalid spec, and when a grain finds no free place in
 /// max_attempts tries (the message says how many were placed, and the packing fraction
-/// reached). Grains are placed largest first; ids follow that order.
+/// reached). Grains are placed largest first; ids follow that order, or with
+/// GrainNumbering::Space the Hilbert curve through the grains' placed centres (the same
+/// grains either way).
 GeneratedGrains generate_grains(const GrainSpec& spec);
 
 /// How many triangles generate_lattice(spec) makes, without making them.

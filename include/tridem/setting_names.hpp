@@ -2,6 +2,7 @@
 // How the enumerated settings are spelt, in scene files, on the command line, in messages
 // and in a solver's description: one table each, so that a name means the same thing
 // everywhere. Nothing else spells an enumerator: code that prints or reads one uses these.
+#include "tridem/generate.hpp"
 #include "tridem/render.hpp"
 #include "tridem/scene.hpp"
 
@@ -31,6 +32,9 @@ inline constexpr Spellings<Method, 4> kMethodNames{{{"grid", Method::Grid},
 
 inline constexpr Spellings<ContactTest, 2> kContactTestNames{
     {{"exact", ContactTest::Exact}, {"direct-area", ContactTest::DirectArea}}};
+
+inline constexpr Spellings<GrainNumbering, 2> kGrainNumberingNames{
+    {{"placement", GrainNumbering::Placement}, {"space", GrainNumbering::Space}}};
 
 inline constexpr Spellings<DecompositionLayout, 2> kLayoutNames{
     {{"1d", DecompositionLayout::Strips}, {"2d", DecompositionLayout::Grid}}};

@@ -5,6 +5,7 @@
 // test is the solvers' exact one (physics::triangles_overlap) on the grains' member
 // triangles, after a disk test on their reach, over the grains of the 3 × 3 cells about
 // the candidate.
+#include "core/space_filling_order.hpp"
 #include "io/scene/generator_checks.hpp"
 #include "io/scene/grain_shape.hpp"
 #include "io/scene/placement_grid.hpp"
@@ -15,6 +16,8 @@
 #include "physics/geometry.hpp"
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
+
+#include "core/space_filling_order.hpp"
 
 #include <fmt/format.h>
 
@@ -205,7 +208,12 @@ GeneratedGrains generate_grains(const GrainSpec& spec) {
   TriangleSpec t;
   t.material = spec.material;
   t.velocity = spec.velocity;
-  for (std::size_t n = 0; n < order.size(); ++n) {
+  std::vector<std::size_t> numbering(order.size());
+  if (spec.numbering == GrainNumbering::Space)
+    numbering = space_filling_order(at);
+  else
+    std::iota(numbering.begin(), numbering.end(), std::size_t{0});
+  for (const std::size_t n : numbering) {
     const Grain& g = grains[order[n]];
     out.bodies.push_back({out.triangles.size(), g.members.size(), spec.velocity, 0, Motion::Free});
     for (const auto& m : g.members) {

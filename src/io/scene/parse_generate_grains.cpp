@@ -5,6 +5,7 @@
 #include "io/scene/scene_sections.hpp"
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
+#include "tridem/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -121,6 +122,8 @@ GeneratedGrains parse_generate_grains(TableReader& r, bool triangles,
   if (attempts < 1) r.fail("max_attempts", fmt::format("must be >= 1, got {}", attempts));
   spec.max_attempts = static_cast<std::size_t>(attempts);
   spec.velocity = r.vec2("velocity").value_or(Vec2d{});
+  spec.numbering =
+      r.choice_in<GrainNumbering>("numbering", kGrainNumberingNames).value_or(spec.numbering);
   r.reject_unknown_keys();
 
   // The region's own problems name 'region'; the rest of the spec was checked above.

@@ -241,6 +241,58 @@ TEST(SceneGrains, SameSeedSameGrainsOtherSeedOthers) {
   EXPECT_NE(a.triangles[0].vertices[0].x, c.triangles[0].vertices[0].x);
 }
 
+Vec2d body_centroid(const GeneratedGrains& g, const BodySpec& b) {
+  Vec2d sum{};
+  for (std::size_t k = b.first; k < b.first + b.count; ++k)
+    for (const Vec2d& v : g.triangles[k].vertices) sum = sum + v;
+  return sum / static_cast<double>(3 * b.count);
+}
+
+// Mean id distance of the grains whose centroids lie within `reach` of each other.
+double neighbour_id_distance(const GeneratedGrains& g, double reach) {
+  double sum = 0;
+  std::size_t pairs = 0;
+  for (std::size_t a = 0; a < g.bodies.size(); ++a)
+    for (std::size_t b = a + 1; b < g.bodies.size(); ++b)
+      if (norm(body_centroid(g, g.bodies[a]) - body_centroid(g, g.bodies[b])) < reach) {
+        sum += static_cast<double>(b - a);
+        ++pairs;
+      }
+  return pairs > 0 ? sum / static_cast<double>(pairs) : 0;
+}
+
+TEST(SceneGrains, SpaceNumberingGivesTheSameGrainsWithNeighboursNumberedNearby) {
+  GrainSpec s = polygons_in_box(0, 0.02);
+  s.packing_fraction = 0.3;
+  const GeneratedGrains placed = generate_grains(s);
+  s.numbering = GrainNumbering::Space;
+  const GeneratedGrains spaced = generate_grains(s);
+  expect_bodies_cover(spaced);
+  ASSERT_EQ(spaced.bodies.size(), placed.bodies.size());
+  ASSERT_EQ(spaced.triangles.size(), placed.triangles.size());
+  ASSERT_GT(placed.bodies.size(), 500u);
+  // The same grains, member for member: each body of one numbering is a body of the other.
+  auto key = [](const GeneratedGrains& g, const BodySpec& b) {
+    std::vector<double> k;
+    for (std::size_t t = b.first; t < b.first + b.count; ++t)
+      for (const Vec2d& v : g.triangles[t].vertices) k.insert(k.end(), {v.x, v.y});
+    return k;
+  };
+  std::vector<std::vector<double>> a, b;
+  for (const BodySpec& body : placed.bodies) a.push_back(key(placed, body));
+  for (const BodySpec& body : spaced.bodies) b.push_back(key(spaced, body));
+  EXPECT_NE(a, b);  // renumbered
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  EXPECT_EQ(a, b);
+  // Placed at random, touching grains' ids are a third of the count apart; along the curve
+  // a few rows of grains.
+  const double before = neighbour_id_distance(placed, 0.05);
+  const double after = neighbour_id_distance(spaced, 0.05);
+  EXPECT_GT(before, 0.2 * static_cast<double>(placed.bodies.size()));
+  EXPECT_LT(after, 0.15 * before);  // 26 against 320 here
+}
+
 TEST(SceneGrains, TooManyGrainsForTheRegionIsRefusedSayingWhatWasReached) {
   GrainSpec s = polygons_in_box(0, 0.1);
   s.packing_fraction = 0.8;  // beyond what random sequential addition can reach
@@ -287,6 +339,24 @@ TEST(SceneGrains, SceneFileNumbersGeneratedBodiesAfterExplicitOnes) {
   // The ten triangles come last, one body each.
   for (std::size_t k = s.bodies.size() - 10; k < s.bodies.size(); ++k)
     EXPECT_EQ(s.bodies[k].count, 1u);
+}
+
+TEST(SceneGrains, SceneFileChoosesTheNumbering) {
+  const std::string grains = "kind = \"triangles\"\nregion = [[0, 0], [1, 1]]\nsize = 0.05\n"
+                             "count = 60\nseed = 4\n";
+  const Scene placed = parse_scene(with_grains(grains), "s.toml");
+  const Scene spaced = parse_scene(with_grains(grains + "numbering = \"space\"\n"), "s.toml");
+  const Scene same = parse_scene(with_grains(grains + "numbering = \"placement\"\n"), "s.toml");
+  ASSERT_EQ(spaced.triangles.size(), placed.triangles.size());
+  auto first_vertex = [](const Scene& s, std::size_t i) { return s.triangles[i].vertices[0].x; };
+  bool differs = false;
+  for (std::size_t i = 0; i < placed.triangles.size(); ++i) {
+    differs |= first_vertex(spaced, i) != first_vertex(placed, i);
+    EXPECT_EQ(first_vertex(same, i), first_vertex(placed, i));
+  }
+  EXPECT_TRUE(differs);
+  expect_refused(with_grains(grains + "numbering = \"random\"\n"),
+                 {"key 'numbering'", "placement", "space"});
 }
 
 TEST(SceneGrains, TrianglesAloneMakeNoBodies) {

@@ -1,0 +1,57 @@
+#include "core/space_filling_order.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+namespace tridem {
+
+namespace {
+constexpr int kBits = 16;
+constexpr std::uint32_t kSide = 1u << kBits;
+}  // namespace
+
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+  std::uint64_t d = 0;
+  for (std::uint32_t s = kSide / 2; s > 0; s /= 2) {
+    const std::uint32_t rx = (x & s) != 0 ? 1 : 0;
+    const std::uint32_t ry = (y & s) != 0 ? 1 : 0;
+    d += static_cast<std::uint64_t>(s) * s * ((3 * rx) ^ ry);
+    // Turn the quadrant so that the curve inside it starts and ends where the next
+    // finer level expects.
+    if (ry == 0) {
+      if (rx == 1) {
+        x = kSide - 1 - x;
+        y = kSide - 1 - y;
+      }
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+std::vector<std::size_t> space_filling_order(const std::vector<Vec2d>& points) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (points.empty()) return order;
+  Vec2d lo = points.front(), hi = points.front();
+  for (const Vec2d& p : points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  // One scale for both axes keeps the curve's cells square.
+  const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double to_cell = span > 0 ? (kSide - 1) / span : 0.0;
+  auto cell = [&](double v, double origin) {
+    const double c = (v - origin) * to_cell;
+    return static_cast<std::uint32_t>(std::clamp(c, 0.0, static_cast<double>(kSide - 1)));
+  };
+  std::vector<std::uint64_t> key(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    key[i] = hilbert_index(cell(points[i].x, lo.x), cell(points[i].y, lo.y));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  return order;
+}
+
+}  // namespace tridem
