@@ -1,6 +1,7 @@
 #include "tridem/run.hpp"
 
 #include "core/initial_overlaps.hpp"
+#include "core/numbering_note.hpp"
 #include "core/output_notes.hpp"
 #include "core/solver_factory.hpp"
 #include "core/stage_report.hpp"
@@ -126,6 +127,7 @@ RunSummary run_scene(Scene scene, const RunOptions& options) {
             output_notes(scene.output, model.size(), scene.simulation.precision);
         !note.empty())
       fmt::print(log, "{}", note);
+    if (const std::string note = numbering_note(model); !note.empty()) fmt::print(log, "{}", note);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
                  resume->step, resume->time);

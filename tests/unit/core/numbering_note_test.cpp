@@ -1,0 +1,61 @@
+// The note of a large scene numbered far from where its grains lie: dense_pile's rows and
+// the same grains along a Hilbert curve pass; the same grains numbered at random are told,
+// above the size where it costs a run.
+#include "core/numbering_note.hpp"
+#include "core/space_filling_order.hpp"
+#include "tridem/standard_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace tridem {
+namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
+
+Scene shuffled(std::size_t n) {
+  Scene s = dense_pile(n);  // the walls come last
+  std::mt19937_64 random(5);
+  std::shuffle(s.triangles.begin(), s.triangles.end() - 3, random);
+  return s;
+}
+
+TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
+  const ParticleModel rows = build_particle_model(dense_pile(100000));
+  EXPECT_LT(consecutive_id_distance(rows), 2.0);
+  EXPECT_EQ(numbering_note(rows), "");
+
+  Scene curve = dense_pile(100000);
+  std::vector<Vec2d> centroids;
+  for (std::size_t i = 0; i + 3 < curve.triangles.size(); ++i) {
+    const auto& v = curve.triangles[i].vertices;
+    centroids.push_back((v[0] + v[1] + v[2]) / 3.0);
+  }
+  std::vector<TriangleSpec> numbered;
+  for (const std::size_t i : space_filling_order(centroids)) numbered.push_back(curve.triangles[i]);
+  numbered.insert(numbered.end(), curve.triangles.end() - 3, curve.triangles.end());
+  curve.triangles = numbered;
+  const ParticleModel along = build_particle_model(curve);
+  EXPECT_LT(consecutive_id_distance(along), 2.0);
+  EXPECT_EQ(numbering_note(along), "");
+
+  const ParticleModel random = build_particle_model(shuffled(100000));
+  // About a third of the pile's ~450 grains across, in grains.
+  EXPECT_GT(consecutive_id_distance(random), 100.0);
+  const std::string note = numbering_note(random);
+  EXPECT_NE(note.find("numbered far from where they lie"), std::string::npos) << note;
+  EXPECT_NE(note.find("numbering = \"space\""), std::string::npos) << note;
+}
+
+TEST(NumberingNote, SmallScenesAreNotTold) {
+  const ParticleModel random = build_particle_model(shuffled(20000));
+  EXPECT_GT(consecutive_id_distance(random), kFarNumbering);
+  EXPECT_EQ(numbering_note(random), "");
+}
+
+}  // namespace TRIDEM_TEST_FILE
+}  // namespace
+}  // namespace tridem
