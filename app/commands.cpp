@@ -1,6 +1,7 @@
 #include "commands.hpp"
 #include "restart_command.hpp"
 
+#include "core/numbering_note.hpp"
 #include "interrupt.hpp"
 #include "live/live_view.hpp"
 #include "live/replay_view.hpp"
@@ -161,6 +162,18 @@ int info(const std::string& path) {
     fmt::print("gpu memory   about {:.1f} MiB reserved by the cuda backend; GPU: {}\n",
                static_cast<double>(info.gpu_memory_bytes) / (1024.0 * 1024.0),
                info.gpu.empty() ? "none usable here" : info.gpu);
+  // By place: consecutive ids a few grains apart, a small fraction of two random grains'
+  // distance; at random, about that distance.
+  fmt::print("numbering    ids i and i + 1 {:.3g} grain sizes apart on average, {:.2f} of two "
+             "scrambled ids' distance ({})\n",
+             info.numbering_distance, info.numbering_spread,
+             info.triangles < kLargeNumbering
+                 ? "a scene this small keeps its data in the caches whatever its order"
+             : info.numbering_spread < 0.25 ? "by place"
+             : info.numbering_spread > 0.5
+                 ? "at random: a large run steps at up to half the rate of the same grains "
+                   "numbered by place"
+                 : "partly by place");
   return 0;
 }
 

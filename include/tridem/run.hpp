@@ -97,6 +97,12 @@ struct SceneInfo {
   /// phase's candidates), which the memory estimates are sized by.
   std::size_t first_list_pairs = 0;
   std::string gpu;                   ///< the GPU found, empty when none is usable
+  /// How far apart consecutive free particles lie, in grain sizes on average
+  /// (core/numbering_note.hpp: ~1.6 for a scene numbered by place; 0 without two).
+  double numbering_distance = 0;
+  /// numbering_distance over two id-scrambled particles' distance: near 0 by place, near 1
+  /// at random (core/numbering_note.hpp).
+  double numbering_spread = 0;
 };
 
 SceneInfo describe_scene(const Scene& scene);

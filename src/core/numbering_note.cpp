@@ -25,6 +25,32 @@ double consecutive_id_distance(const ParticleModel& model) {
   return (distance / static_cast<double>(steps)) / (size / static_cast<double>(free));
 }
 
+double numbering_spread(const ParticleModel& model) {
+  const auto n = static_cast<std::int64_t>(model.size());
+  double distance = 0;
+  std::int64_t pairs = 0;
+#pragma omp parallel for schedule(static) reduction(+ : distance, pairs) if (n > 65536)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto j = static_cast<std::int64_t>((static_cast<std::uint64_t>(i) * 2654435761ULL) %
+                                             static_cast<std::uint64_t>(n));
+    if (j == i || model.motion[i] != Motion::Free || model.motion[j] != Motion::Free) continue;
+    distance += norm(model.centroid[j] - model.centroid[i]);
+    ++pairs;
+  }
+  if (pairs == 0 || distance <= 0) return 0;
+  double size = 0;
+  std::int64_t free = 0;
+  for (std::int64_t i = 0; i < n; ++i)
+    if (model.motion[i] == Motion::Free) {
+      size += std::sqrt(model.area[i]);
+      ++free;
+    }
+  // consecutive_id_distance is in grain sizes; so is the scrambled pairs' mean here.
+  const double scrambled =
+      distance / static_cast<double>(pairs) / (size / static_cast<double>(free));
+  return consecutive_id_distance(model) / scrambled;
+}
+
 std::string numbering_note(const ParticleModel& model) {
   if (model.size() < kLargeNumbering) return {};
   const double apart = consecutive_id_distance(model);

@@ -19,6 +19,12 @@ inline constexpr double kFarNumbering = 20;
 /// for one numbered at random. 0 without two consecutive free particles.
 double consecutive_id_distance(const ParticleModel& model);
 
+/// consecutive_id_distance over the mean distance between two free particles drawn apart
+/// in id (pairs i, i·2654435761 mod n: a fixed scramble): near 0 for a large scene
+/// numbered by place, near 1 for one numbered at random, whatever its size. 0 without two
+/// free particles.
+double numbering_spread(const ParticleModel& model);
+
 /// The note `tridem run` prints after its start line when a large scene is numbered far
 /// from where it lies (empty otherwise).
 std::string numbering_note(const ParticleModel& model);

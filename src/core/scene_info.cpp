@@ -1,5 +1,6 @@
 #include "backends/cuda/cuda_backend.hpp"
 #include "core/memory_estimate.hpp"
+#include "core/numbering_note.hpp"
 #include "core/particle_model.hpp"
 #include "core/time_step.hpp"
 #include "tridem/run.hpp"
@@ -42,6 +43,8 @@ SceneInfo describe_scene(const Scene& scene) {
   info.gpu_memory_bytes =
       cuda_solver_bytes(n, pairs, scene.simulation.precision, scene.bonds.size());
   info.gpu = cuda_device_description();
+  info.numbering_distance = consecutive_id_distance(model);
+  info.numbering_spread = numbering_spread(model);
   return info;
 }
 

@@ -127,6 +127,8 @@ if [ "$have_cuda" = 1 ]; then
   grep -q "gpu memory   about" out.txt || fail "info lacks the GPU memory of the cuda backend"
 fi
 grep -Eq "^pairs        about [0-9]+ in the first list" out.txt || fail "info lacks the first list's pairs"
+grep -Eq "^numbering    ids i and i \+ 1 [0-9.]+ grain sizes apart on average, [0-9.]+ of two scrambled ids' distance \(a scene this small keeps its data in the caches" out.txt ||
+  fail "info lacks how the pile's particles are numbered: $(grep ^numbering out.txt)"
 
 # render draws the last frame to PNG.
 expect_ok "$tridem" render pile_out -o pile.png

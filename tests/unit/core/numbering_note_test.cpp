@@ -26,6 +26,7 @@ Scene shuffled(std::size_t n) {
 TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
   const ParticleModel rows = build_particle_model(dense_pile(100000));
   EXPECT_LT(consecutive_id_distance(rows), 2.0);
+  EXPECT_LT(numbering_spread(rows), 0.02);
   EXPECT_EQ(numbering_note(rows), "");
 
   Scene curve = dense_pile(100000);
@@ -45,6 +46,7 @@ TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
   const ParticleModel random = build_particle_model(shuffled(100000));
   // About a third of the pile's ~450 grains across, in grains.
   EXPECT_GT(consecutive_id_distance(random), 100.0);
+  EXPECT_NEAR(numbering_spread(random), 1.0, 0.05);  // random: as far as scrambled ids
   const std::string note = numbering_note(random);
   EXPECT_NE(note.find("numbered far from where they lie"), std::string::npos) << note;
   EXPECT_NE(note.find("numbering = \"space\""), std::string::npos) << note;
@@ -53,6 +55,7 @@ TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
 TEST(NumberingNote, SmallScenesAreNotTold) {
   const ParticleModel random = build_particle_model(shuffled(20000));
   EXPECT_GT(consecutive_id_distance(random), kFarNumbering);
+  EXPECT_NEAR(numbering_spread(random), 1.0, 0.05);  // whatever the scene's size
   EXPECT_EQ(numbering_note(random), "");
 }
 
