@@ -1,5 +1,6 @@
 #include "core/memory_estimate.hpp"
 
+#include "backends/cpu/partner_record.hpp"
 #include "broadphase/candidate_pairs.hpp"
 #include "core/particle_model.hpp"
 #include "physics/cohesive_bond.hpp"
@@ -51,7 +52,7 @@ template <class Real>
 std::size_t cpu_bytes(std::size_t n, std::size_t pairs) {
   const std::size_t per_particle =
       bytes_per_particle<Real>([](auto f) { for_each_particle_field(f); }) +
-      kCpuListBytesPerParticle;
+      kCpuListBytesPerParticle + sizeof(PartnerRecord<Real>);
   // Per pair: partner and slip twice (new and old list), the result and the reverse slot.
   const std::size_t per_pair =
       2 * (4 + sizeof(physics::PairSlip<Real>)) + sizeof(physics::PairForce<Real>) + 8;
