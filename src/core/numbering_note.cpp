@@ -7,48 +7,52 @@
 
 namespace tridem {
 
-double consecutive_id_distance(const ParticleModel& model) {
-  const auto n = static_cast<std::int64_t>(model.size());
-  double size = 0, distance = 0;
-  std::int64_t free = 0, steps = 0;
-#pragma omp parallel for schedule(static) reduction(+ : size, distance, free, steps) if (n > 65536)
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (model.motion[i] != Motion::Free) continue;
-    size += std::sqrt(model.area[i]);
-    ++free;
-    if (i + 1 < n && model.motion[i + 1] == Motion::Free) {
-      distance += norm(model.centroid[i + 1] - model.centroid[i]);
-      ++steps;
-    }
-  }
-  if (steps == 0 || size <= 0) return 0;
-  return (distance / static_cast<double>(steps)) / (size / static_cast<double>(free));
-}
+namespace {
 
-double numbering_spread(const ParticleModel& model) {
+/// The mean distance between the centroids of free particles i and partner(i), over the
+/// i whose partner is another free particle; 0 without one.
+template <class Partner>
+double mean_distance(const ParticleModel& model, Partner partner) {
   const auto n = static_cast<std::int64_t>(model.size());
   double distance = 0;
   std::int64_t pairs = 0;
 #pragma omp parallel for schedule(static) reduction(+ : distance, pairs) if (n > 65536)
   for (std::int64_t i = 0; i < n; ++i) {
-    const auto j = static_cast<std::int64_t>((static_cast<std::uint64_t>(i) * 2654435761ULL) %
-                                             static_cast<std::uint64_t>(n));
-    if (j == i || model.motion[i] != Motion::Free || model.motion[j] != Motion::Free) continue;
+    const std::int64_t j = partner(i, n);
+    if (j == i || j >= n || model.motion[i] != Motion::Free || model.motion[j] != Motion::Free)
+      continue;
     distance += norm(model.centroid[j] - model.centroid[i]);
     ++pairs;
   }
-  if (pairs == 0 || distance <= 0) return 0;
+  return pairs > 0 ? distance / static_cast<double>(pairs) : 0.0;
+}
+
+double consecutive_mean(const ParticleModel& model) {
+  return mean_distance(model, [](std::int64_t i, std::int64_t) { return i + 1; });
+}
+
+}  // namespace
+
+double consecutive_id_distance(const ParticleModel& model) {
+  const auto n = static_cast<std::int64_t>(model.size());
   double size = 0;
   std::int64_t free = 0;
+#pragma omp parallel for schedule(static) reduction(+ : size, free) if (n > 65536)
   for (std::int64_t i = 0; i < n; ++i)
     if (model.motion[i] == Motion::Free) {
       size += std::sqrt(model.area[i]);
       ++free;
     }
-  // consecutive_id_distance is in grain sizes; so is the scrambled pairs' mean here.
-  const double scrambled =
-      distance / static_cast<double>(pairs) / (size / static_cast<double>(free));
-  return consecutive_id_distance(model) / scrambled;
+  if (free == 0 || size <= 0) return 0;
+  return consecutive_mean(model) / (size / static_cast<double>(free));
+}
+
+double numbering_spread(const ParticleModel& model) {
+  const double scrambled = mean_distance(model, [](std::int64_t i, std::int64_t n) {
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(i) * 2654435761ULL) %
+                                     static_cast<std::uint64_t>(n));
+  });
+  return scrambled > 0 ? consecutive_mean(model) / scrambled : 0.0;
 }
 
 std::string numbering_note(const ParticleModel& model) {
