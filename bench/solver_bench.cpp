@@ -205,21 +205,10 @@ tridem::Scene make_pile(Pile kind, std::size_t n) {
     }
     case Pile::Curve: {
       // Numbered along the Hilbert curve through the centroids, as [[generate]]'s
-      // numbering = "space" numbers its grains.
+      // numbering = "space" numbers its grains; the walls stay last.
       tridem::Scene s = tridem::dense_pile(n);
       s.source = "curve_pile";
-      const std::size_t grains = s.triangles.size() - 3;
-      std::vector<tridem::Vec2d> centroids(grains);
-      for (std::size_t i = 0; i < grains; ++i) {
-        const auto& v = s.triangles[i].vertices;
-        centroids[i] = (v[0] + v[1] + v[2]) / 3.0;
-      }
-      std::vector<tridem::TriangleSpec> numbered;
-      numbered.reserve(s.triangles.size());
-      for (const std::size_t i : tridem::space_filling_order(centroids))
-        numbered.push_back(s.triangles[i]);
-      numbered.insert(numbered.end(), s.triangles.end() - 3, s.triangles.end());
-      s.triangles = std::move(numbered);
+      tridem::number_by_place(s.triangles, s.triangles.size() - 3);
       return s;
     }
   }

@@ -54,4 +54,18 @@ std::vector<std::size_t> space_filling_order(const std::vector<Vec2d>& points) {
   return order;
 }
 
+void number_by_place(std::vector<TriangleSpec>& triangles, std::size_t count) {
+  std::vector<Vec2d> centroids(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto& v = triangles[i].vertices;
+    centroids[i] = (v[0] + v[1] + v[2]) / 3.0;
+  }
+  std::vector<TriangleSpec> numbered;
+  numbered.reserve(triangles.size());
+  for (const std::size_t i : space_filling_order(centroids)) numbered.push_back(triangles[i]);
+  numbered.insert(numbered.end(), triangles.begin() + static_cast<std::ptrdiff_t>(count),
+                  triangles.end());
+  triangles = std::move(numbered);
+}
+
 }  // namespace tridem

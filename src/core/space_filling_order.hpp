@@ -3,6 +3,7 @@
 // near each other in space get near positions in the order (docs/performance.md, "The
 // particles' order": a GPU run of grains numbered at random took 0.45 of the time-step
 // rate of the same grains numbered row by row).
+#include "tridem/scene.hpp"
 #include "tridem/vec2.hpp"
 
 #include <cstddef>
@@ -18,5 +19,9 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y);
 /// The indices of `points` in the order of their cells (2^16 to a side of their bounding
 /// box) along the Hilbert curve; points of one cell keep their order.
 std::vector<std::size_t> space_filling_order(const std::vector<Vec2d>& points);
+
+/// The first `count` of `triangles` (lone ones: no body or bond refers to them) put in the
+/// space_filling_order of their centroids; the rest stay where they are.
+void number_by_place(std::vector<TriangleSpec>& triangles, std::size_t count);
 
 }  // namespace tridem

@@ -30,15 +30,7 @@ TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
   EXPECT_EQ(numbering_note(rows), "");
 
   Scene curve = dense_pile(100000);
-  std::vector<Vec2d> centroids;
-  for (std::size_t i = 0; i + 3 < curve.triangles.size(); ++i) {
-    const auto& v = curve.triangles[i].vertices;
-    centroids.push_back((v[0] + v[1] + v[2]) / 3.0);
-  }
-  std::vector<TriangleSpec> numbered;
-  for (const std::size_t i : space_filling_order(centroids)) numbered.push_back(curve.triangles[i]);
-  numbered.insert(numbered.end(), curve.triangles.end() - 3, curve.triangles.end());
-  curve.triangles = numbered;
+  number_by_place(curve.triangles, curve.triangles.size() - 3);  // the walls stay last
   const ParticleModel along = build_particle_model(curve);
   EXPECT_LT(consecutive_id_distance(along), 2.0);
   EXPECT_EQ(numbering_note(along), "");

@@ -63,6 +63,35 @@ TEST(SpaceFillingOrder, OrdersScatteredPointsSoThatNeighboursFollowEachOther) {
   EXPECT_LT(curved, 0.1);
 }
 
+TEST(SpaceFillingOrder, NumbersTheFirstTrianglesByPlaceAndLeavesTheRest) {
+  std::mt19937_64 random(9);
+  std::uniform_real_distribution<double> at(0.0, 10.0);
+  std::vector<TriangleSpec> triangles(5000);
+  for (TriangleSpec& t : triangles) {
+    const Vec2d c{at(random), at(random)};
+    t.vertices = {c, c + Vec2d{0.01, 0}, c + Vec2d{0, 0.01}};
+  }
+  std::vector<TriangleSpec> numbered = triangles;
+  number_by_place(numbered, 4990);
+  auto x_of = [](const std::vector<TriangleSpec>& ts) {
+    std::vector<double> x;
+    for (const TriangleSpec& t : ts) x.push_back(t.vertices[0].x);
+    return x;
+  };
+  const std::vector<double> before = x_of(triangles), after = x_of(numbered);
+  for (std::size_t i = 4990; i < 5000; ++i) EXPECT_EQ(after[i], before[i]);  // left in place
+  std::vector<double> a(before.begin(), before.begin() + 4990),
+      b(after.begin(), after.begin() + 4990);
+  EXPECT_NE(a, b);
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  EXPECT_EQ(a, b);  // the same triangles
+  double step = 0;
+  for (std::size_t i = 1; i < 4990; ++i)
+    step += norm(numbered[i].vertices[0] - numbered[i - 1].vertices[0]);
+  EXPECT_LT(step / 4989, 0.5);  // ~0.14 along the curve, ~5 in the given order
+}
+
 TEST(SpaceFillingOrder, KeepsTheOrderOfPointsInOneCellAndOfNone) {
   EXPECT_TRUE(space_filling_order({}).empty());
   const std::vector<Vec2d> same(5, Vec2d{1, 2});
