@@ -17,8 +17,6 @@
 #include "tridem/error.hpp"
 #include "tridem/generate.hpp"
 
-#include "core/space_filling_order.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
