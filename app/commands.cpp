@@ -59,6 +59,9 @@ int run(const RunArgs& args) {
   options.force = args.force;
   options.threads = args.threads;
   options.device = args.device.value_or(0);
+  if (args.particle_order)
+    options.particle_order =
+        value_in(kParticleOrderNames, *args.particle_order).value_or(ParticleOrder::Auto);
   options.progress = !args.quiet;
   options.restart = args.restart;
   options.started = started;
@@ -85,6 +88,12 @@ int run(const RunArgs& args) {
       throw Error(fmt::format("--device picks the GPU of a run of one rank; this job has {} "
                               "ranks, and each takes the GPU of its rank on its node "
                               "(docs/scaling.md): leave --device out",
+                              args.ranks));
+    // The ranks keep each sub-domain's particles in their own order (docs/scaling.md).
+    if (options.particle_order == ParticleOrder::Place)
+      throw Error(fmt::format("--particle-order place numbers the particles of a run of one "
+                              "rank; this job has {} ranks, which keep their own order: leave "
+                              "--particle-order out",
                               args.ranks));
     return mpi::run_on_ranks(read, options, report);
   }

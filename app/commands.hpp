@@ -19,6 +19,7 @@ struct RunArgs {
   std::optional<std::string> restart;  ///< checkpoint to continue from
   int threads = 0;
   std::optional<int> device;  ///< --device; unset: the first GPU (one rank) or the rank's own
+  std::optional<std::string> particle_order;  ///< a spelling of kParticleOrderNames
   bool force = false;
   bool quiet = false;
   /// --live [PORT]: the live view (docs/live-view.md); empty text for the default port.

@@ -108,6 +108,14 @@ int main(int argc, char** argv) {
       ->add_option("--device", run_args.device,
                    "GPU of the cuda backend, numbered from 0 (default 0)")
       ->check(at_least(0));
+  run_cmd
+      ->add_option("--particle-order", run_args.particle_order,
+                   "The order the solver keeps the particles in (outputs always use the scene's "
+                   "ids): " +
+                       tridem::spellings_of(tridem::kParticleOrderNames) +
+                       "; auto (the default) numbers a large scene by place when its ids lie "
+                       "far apart (docs/performance.md)")
+      ->check(CLI::IsMember(spelling_list(tridem::kParticleOrderNames)));
   run_cmd->add_option("--restart", run_args.restart,
                       "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
       ->check(existing("checkpoint"));

@@ -57,6 +57,9 @@
 //                     shuffled_pile(n) is dense_pile(n) with its grains numbered in a
 //                     random order (fixed seed): what the particles' order costs;
 //                     curve_pile(n) numbers them along a Hilbert curve (numbering = "space")
+//   --particle_order=auto|scene|place  SolverConfig::particle_order (default auto, as
+//                     tridem run: shuffled_pile from 10^5 is then numbered by place inside
+//                     the solver; scene measures the scene's random order)
 //   --settle_steps=N  steps that settle settled_pile (default 50000)
 //   --run_ahead=0     the CUDA solver without run-ahead (each step waits for the status of
 //                     the one before it; the default launches each step before that status
@@ -162,6 +165,9 @@ bool g_run_ahead = true;
 
 /// --contact_rows_per_copy: SolverConfig::gpu_contact_rows_per_copy (0 = its default).
 std::size_t g_contact_rows_per_copy = 0;
+
+/// --particle_order: SolverConfig::particle_order.
+tridem::ParticleOrder g_particle_order = tridem::ParticleOrder::Auto;
 
 /// Which standard pile a case measures.
 enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve };
@@ -272,6 +278,7 @@ std::unique_ptr<tridem::Solver> make(const Variant& v, Pile kind, std::size_t n)
   tridem::SolverConfig config;
   config.gpu_run_ahead = g_run_ahead;
   config.gpu_contact_rows_per_copy = g_contact_rows_per_copy;
+  config.particle_order = g_particle_order;
   auto solver = tridem::make_solver(scene, config);
   if (kind == Pile::Settled) solver->load_state(settled_state(n, v.precision));
   return solver;
@@ -421,6 +428,15 @@ int main(int argc, char** argv) {
   if (const std::string text = take_flag(argc, argv, "contact_rows_per_copy"); !text.empty())
     g_contact_rows_per_copy =
         static_cast<std::size_t>(parse_number("tridem_bench", "contact_rows_per_copy", text));
+  if (const std::string text = take_flag(argc, argv, "particle_order"); !text.empty()) {
+    const auto order = tridem::value_in(tridem::kParticleOrderNames, text);
+    if (!order) {
+      std::cerr << "tridem_bench: --particle_order wants one of "
+                << tridem::spellings_of(tridem::kParticleOrderNames) << "; got '" << text << "'\n";
+      return 2;
+    }
+    g_particle_order = *order;
+  }
   if (const std::string text = take_flag(argc, argv, "skin"); !text.empty())
     g_skin = tridem::bench::parse_number_in("tridem_bench", "skin", text, 0, 1,
                                             "a number in [0, 1] (a fraction of the grid cell)");

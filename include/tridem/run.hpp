@@ -25,6 +25,7 @@ struct RunOptions {
   bool force = false;       ///< accept dt above dt_crit
   int threads = 0;          ///< OpenMP threads, 0 = default
   int device = 0;           ///< the cuda backend's GPU (SolverConfig::device)
+  ParticleOrder particle_order = ParticleOrder::Auto;  ///< SolverConfig::particle_order
   bool progress = true;     ///< bar on stderr when it is a terminal
   std::FILE* log = stdout;  ///< where the start and summary lines go
   /// A checkpoint to continue from (tridem run --restart): the run goes on from its step

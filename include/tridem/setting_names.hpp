@@ -5,6 +5,7 @@
 #include "tridem/generate.hpp"
 #include "tridem/render.hpp"
 #include "tridem/scene.hpp"
+#include "tridem/solver.hpp"
 
 #include <array>
 #include <optional>
@@ -35,6 +36,10 @@ inline constexpr Spellings<ContactTest, 2> kContactTestNames{
 
 inline constexpr Spellings<GrainNumbering, 2> kGrainNumberingNames{
     {{"placement", GrainNumbering::Placement}, {"space", GrainNumbering::Space}}};
+
+inline constexpr Spellings<ParticleOrder, 3> kParticleOrderNames{{{"auto", ParticleOrder::Auto},
+                                                                  {"scene", ParticleOrder::Scene},
+                                                                  {"place", ParticleOrder::Place}}};
 
 inline constexpr Spellings<DecompositionLayout, 2> kLayoutNames{
     {{"1d", DecompositionLayout::Strips}, {"2d", DecompositionLayout::Grid}}};

@@ -82,6 +82,28 @@ struct Snapshot {
   std::size_t size() const { return x.size(); }
   /// Sizes every per-particle array for n particles (src/core/snapshot_resize.cpp).
   void resize(std::size_t n);
+  /// f(a, b) for each per-particle array a of this snapshot and the same array b of
+  /// `other` (a Snapshot, const or not): the shown fields, the vertices, mass, inertia,
+  /// material and motion. resize() and the solver that numbers particles by place
+  /// (core/place_numbered_solver) go through it, so that an array added here is sized and
+  /// mapped to the scene's ids with the rest.
+  template <class Other, class F>
+  void for_each_particle_array(Other& other, F&& f) {
+    for_each_field([&](auto field) {
+      for_each_array(column(field),
+                     [&](auto& a, int k) { f(a, array_at(other.column(field), k)); });
+    });
+    f(x1, other.x1);
+    f(y1, other.y1);
+    f(x2, other.x2);
+    f(y2, other.y2);
+    f(x3, other.x3);
+    f(y3, other.y3);
+    f(mass, other.mass);
+    f(inertia, other.inertia);
+    f(material, other.material);
+    f(motion, other.motion);
+  }
   /// Sizes the body columns for `bodies` bodies of the size() triangles; 0 empties them.
   void resize_bodies(std::size_t bodies) {
     const std::size_t members = bodies > 0 ? size() : 0;

@@ -62,6 +62,15 @@ enum class ThreadUse {
   Alternating,  ///< threads and one in turn, step by step (tests: both ways give the same bits)
 };
 
+/// The order in which a solver keeps and steps the particles (docs/performance.md, "The
+/// particles' order"). Whichever it picks, everything it gives (snapshots, states,
+/// checkpoints, messages) names the particles by the scene's ids.
+enum class ParticleOrder {
+  Auto,   ///< by place when a large scene is numbered far from where its particles lie
+  Scene,  ///< the scene's order
+  Place,  ///< the free particles along a curve through their centroids; walls stay put
+};
+
 struct SolverConfig {
   /// OpenMP threads of the openmp backend; 0 = the runtime's default. Applied to the
   /// solver's own parallel regions only: the caller's OpenMP settings are left as they were.
@@ -81,6 +90,11 @@ struct SolverConfig {
   /// time, so that a frame's GPU scratch is bounded whatever its contacts; 0 = the default,
   /// 2^22 rows (168 MB in float). The same contacts either way (tests use a small one).
   std::size_t gpu_contact_rows_per_copy = 0;
+  /// Auto numbers by place a scene of lone triangles without bonds of at least 10^5
+  /// particles whose consecutive ids lie over 20 grain sizes apart (core/numbering_note):
+  /// such a run steps at up to twice the rate. Its results then differ from the scene
+  /// order's in rounding (sums in another order); Scene keeps them bit for bit.
+  ParticleOrder particle_order = ParticleOrder::Auto;
 };
 
 class Solver {

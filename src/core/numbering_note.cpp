@@ -55,16 +55,25 @@ double numbering_spread(const ParticleModel& model) {
   return scrambled > 0 ? consecutive_mean(model) / scrambled : 0.0;
 }
 
-std::string numbering_note(const ParticleModel& model) {
+std::string numbering_note(const ParticleModel& model, bool by_place) {
   if (model.size() < kLargeNumbering) return {};
   const double apart = consecutive_id_distance(model);
   if (!(apart > kFarNumbering)) return {};
+  if (by_place)
+    return fmt::format(
+        "note: the particles are numbered far from where they lie (ids i and i + 1 are {:.0f} "
+        "grain sizes apart on average): the solver keeps them numbered by place, which steps "
+        "such a scene at up to twice the rate, and every output names them by the scene's "
+        "ids (docs/performance.md, \"The particles' order\"; --particle-order scene keeps "
+        "the scene's order)\n",
+        apart);
   return fmt::format(
       "note: the particles are numbered far from where they lie (ids i and i + 1 are {:.0f} "
       "grain sizes apart on average): a pair's two grains then lie far apart in memory, and "
       "a large run steps at up to half the rate of the same grains numbered by place "
       "(docs/performance.md, \"The particles' order\"); list them by place in the scene, or "
-      "give generated grains numbering = \"space\"\n",
+      "give generated grains numbering = \"space\" (the solver itself numbers by place only "
+      "scenes of lone triangles without bonds, under --particle-order auto)\n",
       apart);
 }
 

@@ -26,7 +26,8 @@ double consecutive_id_distance(const ParticleModel& model);
 double numbering_spread(const ParticleModel& model);
 
 /// The note `tridem run` prints after its start line when a large scene is numbered far
-/// from where it lies (empty otherwise).
-std::string numbering_note(const ParticleModel& model);
+/// from where it lies (empty otherwise): how to number it by place, or, when the solver
+/// does (`by_place`, core/place_numbered_solver), that it does.
+std::string numbering_note(const ParticleModel& model, bool by_place);
 
 }  // namespace tridem

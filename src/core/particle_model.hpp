@@ -31,8 +31,33 @@ struct ParticleModel {
   /// Bodies of several triangles; empty without them. A member's motion, velocity and
   /// angular velocity above are then its body's rigid motion at its centroid.
   BodyModel bodies;
+  /// The id by which messages name each particle; empty: its index. A solver numbering the
+  /// particles by place (core/place_numbered_solver) runs on the scene's particles in
+  /// another order, and its blow-up and deep-pair messages name them by their scene ids.
+  std::vector<std::int64_t> shown_id;
 
   std::size_t size() const { return centroid.size(); }
+  std::int64_t shown(std::int64_t i) const {
+    return shown_id.empty() ? i : shown_id[static_cast<std::size_t>(i)];
+  }
+  /// f(a, b) for each per-particle array a above (shown_id aside) and the same array b of
+  /// `other` (a ParticleModel, const or not): a model's particles put in another order
+  /// (core/place_numbered_solver) move in every one of them.
+  template <class Other, class F>
+  void for_each_particle_array(Other& other, F&& f) {
+    f(offsets, other.offsets);
+    f(centroid, other.centroid);
+    f(area, other.area);
+    f(mass, other.mass);
+    f(inertia, other.inertia);
+    f(longest_edge, other.longest_edge);
+    f(smallest_height, other.smallest_height);
+    f(material, other.material);
+    f(motion, other.motion);
+    f(velocity, other.velocity);
+    f(angular_velocity, other.angular_velocity);
+    f(program, other.program);
+  }
 };
 
 /// Bytes of one particle's model (what the scene reader budgets for, and the memory

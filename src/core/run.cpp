@@ -3,6 +3,7 @@
 #include "core/initial_overlaps.hpp"
 #include "core/numbering_note.hpp"
 #include "core/output_notes.hpp"
+#include "core/place_numbered_solver.hpp"
 #include "core/solver_factory.hpp"
 #include "core/stage_report.hpp"
 #include "core/time_loop.hpp"
@@ -100,6 +101,7 @@ RunSummary run_scene(Scene scene, const RunOptions& options) {
   SolverConfig config;
   config.threads = options.threads;
   config.device = options.device;
+  config.particle_order = options.particle_order;
   config.force = options.force;
   config.thread_use = ThreadUse::Measured;  // threads only where they pay on these cores
   const ParticleModel model = build_particle_model(scene);
@@ -110,6 +112,9 @@ RunSummary run_scene(Scene scene, const RunOptions& options) {
   const auto solver = options.make_solver ? options.make_solver(scene, model, ts, config)
                                           : make_solver(scene, model, ts, config);
   clock.lap("solver");
+  // MPI ranks (options.make_solver) keep the scene's order: they are not renumbered.
+  const bool numbered_by_place =
+      !options.make_solver && numbers_by_place(scene, model, config.particle_order);
   const auto free =
       static_cast<std::size_t>(std::count(model.motion.begin(), model.motion.end(), Motion::Free));
   // What the checkpoints of this run record, and what a restart must match.
@@ -127,7 +132,8 @@ RunSummary run_scene(Scene scene, const RunOptions& options) {
             output_notes(scene.output, model.size(), scene.simulation.precision);
         !note.empty())
       fmt::print(log, "{}", note);
-    if (const std::string note = numbering_note(model); !note.empty()) fmt::print(log, "{}", note);
+    if (const std::string note = numbering_note(model, numbered_by_place); !note.empty())
+      fmt::print(log, "{}", note);
     if (resume)
       fmt::print(log, "continuing from {} at step {} (t = {:.6g} s)\n", *options.restart,
                  resume->step, resume->time);

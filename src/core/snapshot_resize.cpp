@@ -4,27 +4,19 @@
 #include "tridem/snapshot.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace tridem {
 
 void Snapshot::resize(std::size_t n) {
-  std::vector<std::vector<double>*> reals;
-  for_each_field([&](auto field) {
-    for_each_array(column(field), [&reals](std::vector<double>& v, int) { reals.push_back(&v); });
-  });
-  for (auto* v : {&x1, &y1, &x2, &y2, &x3, &y3, &mass, &inertia}) reals.push_back(v);
-  const auto count = static_cast<std::ptrdiff_t>(reals.size()) + 2;
+  std::vector<std::function<void()>> resizes;
+  for_each_particle_array(*this,
+                          [&](auto& v, auto&) { resizes.emplace_back([&v, n] { v.resize(n); }); });
+  const auto count = static_cast<std::ptrdiff_t>(resizes.size());
   const bool grows = n > x.size();
 #pragma omp parallel for schedule(dynamic, 1) if (grows && n > 65536)
-  for (std::ptrdiff_t k = 0; k < count; ++k) {
-    if (k < count - 2)
-      reals[static_cast<std::size_t>(k)]->resize(n);
-    else if (k == count - 2)
-      material.resize(n);
-    else
-      motion.resize(n);
-  }
+  for (std::ptrdiff_t k = 0; k < count; ++k) resizes[static_cast<std::size_t>(k)]();
 }
 
 }  // namespace tridem

@@ -3,6 +3,7 @@
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
 #include "core/periodic_checks.hpp"
+#include "core/place_numbered_solver.hpp"
 #include "tridem/error.hpp"
 #include "tridem/scene_io.hpp"
 #include "tridem/setting_names.hpp"
@@ -110,9 +111,15 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
         requested == Backend::Auto ? " (picked by backend = auto)" : "",
         backend_name(Backend::OpenMP)));
   check_device(config.device, backend, requested);
-  if (scene.simulation.precision == Precision::Float)
-    return make_for_real<float>(scene, model, ts, config, backend);
-  return make_for_real<double>(scene, model, ts, config, backend);
+  auto make = [&](const ParticleModel& m) {
+    return scene.simulation.precision == Precision::Float
+               ? make_for_real<float>(scene, m, ts, config, backend)
+               : make_for_real<double>(scene, m, ts, config, backend);
+  };
+  if (!numbers_by_place(scene, model, config.particle_order)) return make(model);
+  std::vector<std::int32_t> order = place_order(model);
+  std::unique_ptr<Solver> inner = make(reordered_model(model, order));
+  return make_place_numbered_solver(std::move(inner), std::move(order), scene, model);
 }
 
 }  // namespace tridem

@@ -61,6 +61,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (periodic_ && cell_.shear_rate != 0) image_power_.assign(n_, 0.0);
   programs_ = model.programs;
   program_knots_ = model.program_knots;
+  shown_id_ = model.shown_id;
   if (std::any_of(programs_.begin(), programs_.end(), physics::follows_length))
     servo_targets_.assign(programs_.size(), 0.0);
   if (!model.bodies.empty()) {
@@ -576,8 +577,8 @@ void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
   std::int64_t s = pairs_.offset[emitter];
   while (!(result_[s].depth > penetration_limit_)) ++s;
   const std::int32_t j = pairs_.partner[s];
-  const DeepPair pair{emitter,
-                      j,
+  const DeepPair pair{shown_id(emitter),
+                      shown_id(j),
                       static_cast<double>(x_[emitter]),
                       static_cast<double>(y_[emitter]),
                       static_cast<double>(x_[j]),
@@ -639,7 +640,8 @@ void CpuSolver<Real>::check_runaway() const {
     team_single([&] {
       const auto i = static_cast<std::size_t>(bad);
       const physics::Pose<double> p = advanced_pose(i);
-      throw RunError(runaway_message(step_ + 1, bad, x_[i], y_[i], norm(p.v), dt_, limit_));
+      throw RunError(
+          runaway_message(step_ + 1, shown_id(bad), x_[i], y_[i], norm(p.v), dt_, limit_));
     });
 }
 

@@ -54,6 +54,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     : n_(model.size()),
       method_(scene.simulation.method),
       host_model_(model),
+      shown_id_(model.shown_id),
       run_ahead_(config.gpu_run_ahead),
       contact_rows_per_copy_(config.gpu_contact_rows_per_copy > 0 ? config.gpu_contact_rows_per_copy
                                                                   : kContactRowsPerCopy) {
@@ -655,7 +656,7 @@ void CudaSolver<Real>::report_runaway(int i) const {
       physics::Pose<double>{{x, y}, at(d_.theta), {at(d_.vx), at(d_.vy)}, at(d_.w)}, true,
       Vec2<Real>{at(d_.fx), at(d_.fy)}, at(d_.torque), at(d_.inv_mass), at(d_.inv_inertia),
       params_.gravity, params_.local_damping, params_.dt);
-  throw RunError(runaway_message(step_ + 1, i, x, y, norm(pose.v), params_.dt, limit_));
+  throw RunError(runaway_message(step_ + 1, shown_id(i), x, y, norm(pose.v), params_.dt, limit_));
 }
 
 template <class Real>
@@ -697,7 +698,8 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
     return xy;
   };
   const Vec2d a = position(emitter), b = position(j);
-  const DeepPair pair{emitter, j, a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
+  const DeepPair pair{
+      shown_id(emitter), shown_id(j), a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
   throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth),
                                      static_cast<double>(params_.dt), limit_));
 }

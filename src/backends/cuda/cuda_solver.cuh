@@ -180,6 +180,11 @@ class CudaSolver final : public Solver {
   /// for snapshots.
   ParticleBuffers<Real> d_;
   ModelColumns<Real> host_model_;
+  /// ParticleModel::shown_id: the ids the messages name.
+  std::vector<std::int64_t> shown_id_;
+  std::int64_t shown_id(std::int64_t i) const {
+    return shown_id_.empty() ? i : shown_id_[static_cast<std::size_t>(i)];
+  }
   /// Bodies, when some has several members (tridem/body_fields.hpp); else 0 and empty.
   std::size_t n_bodies_ = 0;
   BodyBuffers bodies_;

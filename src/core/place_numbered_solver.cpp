@@ -1,0 +1,271 @@
+#include "core/place_numbered_solver.hpp"
+
+#include "broadphase/candidate_pairs.hpp"
+#include "broadphase/emitter_rule.hpp"
+#include "core/numbering_note.hpp"
+#include "core/space_filling_order.hpp"
+#include "tridem/error.hpp"
+#include "tridem/scene_io.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <climits>
+#include <utility>
+
+namespace tridem {
+
+namespace {
+
+/// out[k] = in[index[k]] for every k of `index`.
+template <class Out, class In>
+void gather(Out& out, const In& in, const std::vector<std::int32_t>& index) {
+  const auto n = static_cast<std::int64_t>(index.size());
+  out.resize(index.size());
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (std::int64_t k = 0; k < n; ++k) out[k] = in[static_cast<std::size_t>(index[k])];
+}
+
+/// −x, but +0 for either zero: a contact whose roles swap keeps "0" in the contacts CSV.
+double flipped(double x) { return x == 0 ? 0.0 : -x; }
+
+/// Sorts the rows of pairs by (emitter, partner).
+template <class Row>
+void sort_rows(std::vector<Row>& rows) {
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+    return a.emitter != b.emitter ? a.emitter < b.emitter : a.partner < b.partner;
+  });
+}
+
+class PlaceNumberedSolver final : public Solver {
+ public:
+  PlaceNumberedSolver(std::unique_ptr<Solver> inner, std::vector<std::int32_t> order,
+                      const Scene& scene, const ParticleModel& model)
+      : inner_(std::move(inner)), scene_of_(std::move(order)), inner_of_(scene_of_.size()) {
+    for (std::size_t k = 0; k < scene_of_.size(); ++k)
+      inner_of_[static_cast<std::size_t>(scene_of_[k])] = static_cast<std::int32_t>(k);
+    // All-pairs has no size classes (broadphase/emitter_rule.hpp): every particle is small.
+    small_ = scene.simulation.method == Method::AllPairs
+                 ? std::vector<std::uint8_t>(model.size(), 1)
+                 : classify_for_grid(model.longest_edge, model.motion).small;
+    free_.resize(model.size());
+    for (std::size_t i = 0; i < model.size(); ++i) free_[i] = model.motion[i] == Motion::Free;
+  }
+
+  void advance(std::int64_t steps) override { inner_->advance(steps); }
+  void snapshot(Snapshot& out, bool with_contacts) const override;
+  void save_state(SolverState& out) const override;
+  void load_state(const SolverState& in) override;
+  EnergyBudget energy() const override { return inner_->energy(); }
+  std::int64_t step() const override { return inner_->step(); }
+  double time() const override { return inner_->time(); }
+  double dt() const override { return inner_->dt(); }
+  std::size_t size() const override { return inner_->size(); }
+  std::string description() const override {
+    return inner_->description() + ", particles numbered by place";
+  }
+  StageTimes stage_times() const override { return inner_->stage_times(); }
+  void set_stage_timing(bool on) override { inner_->set_stage_timing(on); }
+  std::string statistics() const override { return inner_->statistics(); }
+
+ private:
+  /// Whether a emits the pair (a, b) of scene ids, by the rule every backend follows.
+  bool emits(std::int32_t a, std::int32_t b) const {
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+    return emits_pair(a, b, small_[ua] != 0, small_[ub] != 0, free_[ua] != 0, free_[ub] != 0);
+  }
+  /// The contact history of `from` with its particles renamed by `id` (inner to scene ids,
+  /// or back) into `to`: a pair whose emitter changes (two small particles whose order
+  /// flips) sees the other side's displacement, −u (physics/contact_force.hpp: the history
+  /// follows v_emitter − v_partner). `scene_ids`: the renamed ids are the scene's.
+  void rename_pairs(const SolverState& from, SolverState& to, const std::vector<std::int32_t>& id,
+                    bool scene_ids) const;
+  void show_contacts(const std::vector<ContactRecord>& in, std::vector<ContactRecord>& out) const;
+
+  std::unique_ptr<Solver> inner_;
+  std::vector<std::int32_t> scene_of_;      ///< the scene id of the inner solver's particle k
+  std::vector<std::int32_t> inner_of_;      ///< the inner index of scene particle i
+  std::vector<std::uint8_t> small_, free_;  ///< by scene id: the emitter rule's classes
+  mutable Snapshot inner_snapshot_;
+  mutable SolverState inner_state_;
+  mutable std::vector<std::int64_t> row_start_;  ///< show_contacts' counting sort
+};
+
+void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
+  inner_->snapshot(inner_snapshot_, with_contacts);
+  const Snapshot& in = inner_snapshot_;
+  out.step = in.step;
+  out.time = in.time;
+  out.contact_precision = in.contact_precision;
+  out.periodic = in.periodic;
+  out.resize(in.size());
+  out.for_each_particle_array(in, [&](auto& to, const auto& from) { gather(to, from, inner_of_); });
+  out.resize_bodies(0);  // numbered by place only without bodies or bonds
+  for (auto* v : {&out.bond_damage, &out.bond_x0, &out.bond_y0, &out.bond_x1, &out.bond_y1})
+    v->clear();
+  out.bond_a.clear();
+  out.bond_b.clear();
+  out.bond_broken.clear();
+  if (with_contacts)
+    show_contacts(in.contacts, out.contacts);
+  else
+    out.contacts.clear();
+}
+
+// The records in the scene's ids and in the order a solver of the scene's numbering gives
+// them: by emitter, partners ascending (a counting sort by emitter, then each short row).
+void PlaceNumberedSolver::show_contacts(const std::vector<ContactRecord>& in,
+                                        std::vector<ContactRecord>& out) const {
+  const std::size_t n = scene_of_.size();
+  row_start_.assign(n + 1, 0);
+  for (const ContactRecord& r : in) {
+    const std::int32_t a = scene_of_[static_cast<std::size_t>(r.i)];
+    const std::int32_t b = scene_of_[static_cast<std::size_t>(r.j)];
+    ++row_start_[static_cast<std::size_t>(emits(a, b) ? a : b) + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  out.resize(in.size());
+  for (ContactRecord r : in) {
+    const std::int32_t a = scene_of_[static_cast<std::size_t>(r.i)];
+    const std::int32_t b = scene_of_[static_cast<std::size_t>(r.j)];
+    if (emits(a, b)) {
+      r.i = a;
+      r.j = b;
+    } else {
+      // Seen from the other particle: the force on it, the normal into its partner, the
+      // translation of its own image.
+      r.i = b;
+      r.j = a;
+      for (double* v : {&r.fx, &r.fy, &r.nx, &r.ny, &r.image_dx, &r.image_dy}) *v = flipped(*v);
+    }
+    out[static_cast<std::size_t>(row_start_[static_cast<std::size_t>(r.i)]++)] = r;
+  }
+  // row_start_[i] is now the end of row i; rows are a few contacts long.
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto end = static_cast<std::size_t>(row_start_[i]);
+    std::stable_sort(out.begin() + static_cast<std::ptrdiff_t>(begin),
+                     out.begin() + static_cast<std::ptrdiff_t>(end),
+                     [](const ContactRecord& x, const ContactRecord& y) { return x.j < y.j; });
+    begin = end;
+  }
+}
+
+void PlaceNumberedSolver::rename_pairs(const SolverState& from, SolverState& to,
+                                       const std::vector<std::int32_t>& id, bool scene_ids) const {
+  struct Row {
+    std::int32_t emitter, partner;
+    std::array<double, kSlipsPerPair> slip;
+  };
+  std::vector<Row> rows(from.pairs());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    Row r{id[static_cast<std::size_t>(from.pair_emitter[k])],
+          id[static_cast<std::size_t>(from.pair_partner[k])], from.pair_slip[k]};
+    const std::int32_t a = scene_ids ? r.emitter : scene_of_[static_cast<std::size_t>(r.emitter)];
+    const std::int32_t b = scene_ids ? r.partner : scene_of_[static_cast<std::size_t>(r.partner)];
+    // The emitter rule in the renamed ids, with each particle's classes (by scene id).
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+    if (!emits_pair(r.emitter, r.partner, small_[ua] != 0, small_[ub] != 0, free_[ua] != 0,
+                    free_[ub] != 0)) {
+      std::swap(r.emitter, r.partner);
+      for (double& u : r.slip) u = -u;
+    }
+    rows[k] = r;
+  }
+  sort_rows(rows);
+  to.pair_emitter.resize(rows.size());
+  to.pair_partner.resize(rows.size());
+  to.pair_slip.resize(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    to.pair_emitter[k] = rows[k].emitter;
+    to.pair_partner[k] = rows[k].partner;
+    to.pair_slip[k] = rows[k].slip;
+  }
+}
+
+/// Every per-particle column of `to` from `from` through `index` (an empty column, the
+/// energy sums' zeros, stays empty); the rest of the state as it is.
+void rename_particles(const SolverState& from, SolverState& to,
+                      const std::vector<std::int32_t>& index) {
+  to.step = from.step;
+  to.time = from.time;
+  SolverState::for_each_field([&](auto field) {
+    for_each_array(to.column(field), [&](auto& t, int k) {
+      const auto& f = array_at(from.column(field), k);
+      if (f.empty())
+        t.clear();
+      else
+        gather(t, f, index);
+    });
+  });
+  SolverState::for_each_body_column([&](auto field) { to.column(field) = from.column(field); });
+  to.bond_damage = from.bond_damage;
+  to.bond_dissipated = from.bond_dissipated;
+}
+
+void PlaceNumberedSolver::save_state(SolverState& out) const {
+  inner_->save_state(inner_state_);
+  rename_particles(inner_state_, out, inner_of_);
+  rename_pairs(inner_state_, out, scene_of_, true);
+}
+
+void PlaceNumberedSolver::load_state(const SolverState& in) {
+  // Checked in the scene's ids, so that a problem names the particle the user knows.
+  validate_solver_state(in, size(), 0, description());
+  rename_particles(in, inner_state_, scene_of_);
+  rename_pairs(in, inner_state_, inner_of_, false);
+  inner_->load_state(inner_state_);
+}
+
+}  // namespace
+
+bool numbers_by_place(const Scene& scene, const ParticleModel& model, ParticleOrder order) {
+  if (order == ParticleOrder::Scene) return false;
+  const char* kept = scene.has_bodies()     ? "bodies of several triangles"
+                     : !scene.bonds.empty() ? "bonds"
+                     : model.size() > static_cast<std::size_t>(INT32_MAX)
+                         ? "more than 2^31 particles"
+                         : nullptr;
+  if (order == ParticleOrder::Place) {
+    if (kept)
+      throw RunError(fmt::format(
+          "{}: particle order \"place\" renumbers scenes of lone triangles, and this one has "
+          "{}: give particle order \"scene\" or \"auto\"",
+          scene_label(scene), kept));
+    return true;
+  }
+  return !kept && model.size() >= kLargeNumbering && consecutive_id_distance(model) > kFarNumbering;
+}
+
+std::vector<std::int32_t> place_order(const ParticleModel& model) {
+  std::vector<std::int32_t> order(model.size()), free;
+  std::vector<Vec2d> centroids;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    order[i] = static_cast<std::int32_t>(i);
+    if (model.motion[i] != Motion::Free) continue;
+    free.push_back(static_cast<std::int32_t>(i));
+    centroids.push_back(model.centroid[i]);
+  }
+  const std::vector<std::size_t> along = space_filling_order(centroids);
+  for (std::size_t k = 0; k < free.size(); ++k)
+    order[static_cast<std::size_t>(free[k])] = free[along[k]];
+  return order;
+}
+
+ParticleModel reordered_model(const ParticleModel& model, const std::vector<std::int32_t>& order) {
+  ParticleModel out;
+  out.for_each_particle_array(model, [&](auto& to, const auto& from) { gather(to, from, order); });
+  out.programs = model.programs;
+  out.program_knots = model.program_knots;
+  out.bodies = model.bodies;
+  out.shown_id.assign(order.begin(), order.end());
+  return out;
+}
+
+std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner,
+                                                   std::vector<std::int32_t> order,
+                                                   const Scene& scene, const ParticleModel& model) {
+  return std::make_unique<PlaceNumberedSolver>(std::move(inner), std::move(order), scene, model);
+}
+
+}  // namespace tridem

@@ -1,0 +1,325 @@
+// The solver that numbers the particles by place (core/place_numbered_solver) against the
+// scene's order: without contacts the same bits; with them the same contacts, named and
+// ordered as the scene's order names them, and states within rounding; checkpoints of
+// either order continue in the other; messages name the scene's particles; and which
+// scenes auto numbers by place.
+#include "core/place_numbered_solver.hpp"
+#include "core/particle_model.hpp"
+#include "support/gpu.hpp"
+#include "support/periodic_scenes.hpp"
+#include "support/scene_builder.hpp"
+#include "support/snapshot_compare.hpp"
+#include "tridem/error.hpp"
+#include "tridem/standard_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tridem {
+namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
+
+/// The scene's free triangles in a random order (its walls, the fixed ones, stay).
+Scene shuffled(Scene s, unsigned seed = 7) {
+  std::vector<TriangleSpec> free;
+  for (const TriangleSpec& t : s.triangles)
+    if (t.motion == Motion::Free) free.push_back(t);
+  std::mt19937_64 random(seed);
+  std::shuffle(free.begin(), free.end(), random);
+  std::size_t k = 0;
+  for (TriangleSpec& t : s.triangles)
+    if (t.motion == Motion::Free) t = free[k++];
+  return s;
+}
+
+std::unique_ptr<Solver> solver_for(Scene s, ParticleOrder order, Backend backend = Backend::Cpu,
+                                   Precision precision = Precision::Double) {
+  s.simulation.backend = backend;
+  s.simulation.precision = precision;
+  SolverConfig config;
+  config.particle_order = order;
+  return make_solver(s, config);
+}
+
+Snapshot snapshot_of(const Solver& solver) {
+  Snapshot snap;
+  solver.snapshot(snap, true);
+  return snap;
+}
+
+/// The same contacts in the same order (the scene's ids, each pair's emitter first), and
+/// forces and states within `tolerance` of the largest value of their kind. A contact's
+/// point is placed from its emitter's centroid after the step (core/snapshot_fill.hpp), so
+/// that the two emitters of a pair place it up to a step's motion apart: `dt` bounds it.
+void expect_within_rounding(const Snapshot& a, const Snapshot& b, double tolerance, double dt) {
+  ASSERT_EQ(a.size(), b.size());
+  double speed = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) speed = std::max(speed, std::hypot(a.vx[i], a.vy[i]));
+  const double step_motion = 2 * speed * dt;
+  ASSERT_EQ(a.contacts.size(), b.contacts.size());
+  double force = 0;
+  for (const ContactRecord& c : a.contacts) force = std::max(force, std::hypot(c.fx, c.fy));
+  ASSERT_GT(force, 0.0) << "the scene must be in contact";
+  for (std::size_t k = 0; k < a.contacts.size(); ++k) {
+    const ContactRecord &p = a.contacts[k], &q = b.contacts[k];
+    ASSERT_EQ(p.i, q.i) << "contact " << k;
+    ASSERT_EQ(p.j, q.j) << "contact " << k;
+    EXPECT_NEAR(p.fx, q.fx, tolerance * force) << "contact " << k;
+    EXPECT_NEAR(p.fy, q.fy, tolerance * force) << "contact " << k;
+    EXPECT_NEAR(p.nx, q.nx, 1e3 * tolerance) << "contact " << k;
+    EXPECT_NEAR(p.ny, q.ny, 1e3 * tolerance) << "contact " << k;
+    EXPECT_NEAR(p.px, q.px, step_motion) << "contact " << k;
+    EXPECT_NEAR(p.py, q.py, step_motion) << "contact " << k;
+    EXPECT_NEAR(p.image_dx, q.image_dx, 1e-12) << "contact " << k;
+    EXPECT_EQ(std::signbit(p.image_dx), std::signbit(q.image_dx)) << "contact " << k;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_NEAR(a.x[i], b.x[i], 1e-12) << "particle " << i;
+    ASSERT_NEAR(a.y[i], b.y[i], 1e-12) << "particle " << i;
+    ASSERT_NEAR(a.vx[i], b.vx[i], 1e-9) << "particle " << i;
+    ASSERT_NEAR(a.omega[i], b.omega[i], 1e-6) << "particle " << i;
+    ASSERT_EQ(a.material[i], b.material[i]);
+    ASSERT_EQ(a.mass[i], b.mass[i]);
+  }
+}
+
+TEST(PlaceNumbering, TheOrderMovesFreeParticlesOnlyAndPutsNeighboursTogether) {
+  const Scene s = shuffled(test::jostling_pile(20, 12));
+  const ParticleModel model = build_particle_model(s);
+  const std::vector<std::int32_t> order = place_order(model);
+  ASSERT_EQ(order.size(), model.size());
+  std::vector<std::int32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    ASSERT_EQ(sorted[i], static_cast<std::int32_t>(i));
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(order[k], static_cast<std::int32_t>(k)) << "a wall";
+  const ParticleModel inner = reordered_model(model, order);
+  double apart_scene = 0, apart_inner = 0;
+  for (std::size_t k = 4; k < model.size(); ++k) {
+    apart_scene += norm(model.centroid[k] - model.centroid[k - 1]);
+    apart_inner += norm(inner.centroid[k] - inner.centroid[k - 1]);
+  }
+  EXPECT_LT(apart_inner, 0.25 * apart_scene);
+  for (std::size_t k = 0; k < model.size(); ++k) {
+    EXPECT_EQ(inner.shown(static_cast<std::int64_t>(k)), order[k]);
+    EXPECT_EQ(inner.mass[k], model.mass[static_cast<std::size_t>(order[k])]);
+  }
+}
+
+TEST(PlaceNumbering, WithoutContactsEveryParticleMovesBitForBitAsInTheScenesOrder) {
+  Scene s = test::empty_scene();
+  s.simulation.gravity = {0.3, -9.81};
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 300; ++k) {
+    const Vec2d c{5.0 * u(random), 5.0 * u(random)};
+    s.triangles.push_back(
+        test::triangle({c.x, c.y}, {c.x + 0.01, c.y}, {c.x, c.y + 0.012}, {u(random), u(random)}));
+    s.triangles.back().angular_velocity = u(random);
+  }
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  EXPECT_NE(by_place->description().find("numbered by place"), std::string::npos);
+  EXPECT_EQ(scene_order->description().find("numbered by place"), std::string::npos);
+  scene_order->advance(200);
+  by_place->advance(200);
+  test::expect_identical(snapshot_of(*scene_order), snapshot_of(*by_place));
+}
+
+TEST(PlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
+  const Scene s = shuffled(test::jostling_pile(20, 12));
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  scene_order->advance(600);
+  by_place->advance(600);
+  const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
+  EXPECT_GT(a.contacts.size(), 40u);
+  expect_within_rounding(a, b, 1e-9, scene_order->dt());
+  // OpenMP numbered by place is the serial one numbered by place, to the bit.
+  auto parallel = solver_for(s, ParticleOrder::Place, Backend::OpenMP);
+  parallel->advance(600);
+  test::expect_identical(b, snapshot_of(*parallel));
+}
+
+TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
+  const Scene s = shuffled(test::periodic_pile(12, 8));
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  scene_order->advance(300);
+  by_place->advance(300);
+  const Snapshot a = snapshot_of(*scene_order);
+  const auto through = std::count_if(a.contacts.begin(), a.contacts.end(),
+                                     [](const ContactRecord& c) { return c.image_dx != 0; });
+  EXPECT_GT(through, 0) << "some contact must be through the periodic boundary";
+  expect_within_rounding(a, snapshot_of(*by_place), 1e-9, scene_order->dt());
+}
+
+/// The contact history as a map from (emitter, partner) to its slip, leaving out the zero
+/// ones: a state lists a history of −0 (a bit pattern a restart keeps), and a pair whose
+/// roles swap inside the solver has +0 for it, which needs no entry.
+std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2>> history(const Solver& s) {
+  SolverState state;
+  s.save_state(state);
+  std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2>> out;
+  for (std::size_t k = 0; k < state.pairs(); ++k)
+    if (state.pair_slip[k][0] != 0 || state.pair_slip[k][1] != 0)
+      out[{state.pair_emitter[k], state.pair_partner[k]}] = state.pair_slip[k];
+  return out;
+}
+
+TEST(PlaceNumbering, SavedStatesAreInTheScenesIdsAndContinueInEitherOrder) {
+  const Scene s = shuffled(test::jostling_pile(20, 12));
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  scene_order->advance(500);
+  by_place->advance(500);
+
+  // The same pairs with the same history, signs included: a pair whose roles swapped
+  // inside the solver is shown from the scene's emitter.
+  const auto ha = history(*scene_order), hb = history(*by_place);
+  ASSERT_GT(ha.size(), 30u);
+  ASSERT_EQ(ha.size(), hb.size());
+  double largest = 0;
+  for (const auto& [pair, slip] : ha)
+    largest = std::max({largest, std::abs(slip[0]), std::abs(slip[1])});
+  ASSERT_GT(largest, 0.0);
+  for (const auto& [pair, slip] : ha) {
+    const auto found = hb.find(pair);
+    ASSERT_NE(found, hb.end()) << pair.first << "-" << pair.second;
+    for (int c = 0; c < 2; ++c) EXPECT_NEAR(found->second[c], slip[c], 1e-6 * largest);
+  }
+
+  // Each order's state continues the other's, within rounding of the uninterrupted runs.
+  SolverState from_scene, from_place;
+  scene_order->save_state(from_scene);
+  by_place->save_state(from_place);
+  auto place_from_scene = solver_for(s, ParticleOrder::Place);
+  place_from_scene->load_state(from_scene);
+  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
+  scene_from_place->load_state(from_place);
+  // A state saved and loaded in the same order continues it to the bit.
+  auto place_again = solver_for(s, ParticleOrder::Place);
+  place_again->load_state(from_place);
+  for (Solver* solver : {scene_order.get(), by_place.get(), place_from_scene.get(),
+                         scene_from_place.get(), place_again.get()})
+    solver->advance(150);
+  const Snapshot reference = snapshot_of(*scene_order);
+  expect_within_rounding(reference, snapshot_of(*place_from_scene), 1e-9, scene_order->dt());
+  expect_within_rounding(reference, snapshot_of(*scene_from_place), 1e-9, scene_order->dt());
+  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
+}
+
+TEST(PlaceNumbering, ALoadedStateIsCheckedInTheScenesIds) {
+  const Scene s = shuffled(test::jostling_pile(6, 4));
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  SolverState state;
+  by_place->save_state(state);
+  state.pair_emitter = {5};
+  state.pair_partner = {5};
+  state.pair_slip = {{0.0, 1.0}};
+  try {
+    by_place->load_state(state);
+    FAIL() << "a pair of a particle with itself was loaded";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("5"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PlaceNumbering, ABlowUpNamesTheScenesParticle) {
+  Scene s = shuffled(test::jostling_pile(20, 12));
+  const ParticleModel model = build_particle_model(s);
+  const std::vector<std::int32_t> order = place_order(model);
+  // A free particle that the solver keeps at another index.
+  std::size_t fast = 3;
+  while (order[fast] == static_cast<std::int32_t>(fast)) ++fast;
+  const auto inner = static_cast<std::size_t>(
+      std::find(order.begin(), order.end(), static_cast<std::int32_t>(fast)) - order.begin());
+  ASSERT_NE(inner, fast);
+  s.triangles[fast].velocity = {1e6, 0};  // blows up in the first step
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  try {
+    by_place->advance(1);
+    FAIL() << "no blow-up";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("particle " + std::to_string(fast) + " "), std::string::npos) << what;
+  }
+}
+
+TEST(PlaceNumbering, ADeepPairNamesTheScenesParticles) {
+  Scene s = test::empty_scene();
+  // Ten grains in a row, numbered from the right, the last two overlapping deeply.
+  for (int k = 9; k >= 0; --k) {
+    const double x = 0.05 * k;
+    s.triangles.push_back(test::triangle({x, 0}, {x + 0.02, 0}, {x, 0.02}));
+  }
+  const double x = 0.004;  // over grain 9, the one at x = 0
+  s.triangles.push_back(test::triangle({x, 0}, {x + 0.02, 0}, {x, 0.02}));
+  s.simulation.max_penetration = 0.3;
+  const ParticleModel model = build_particle_model(s);
+  const std::vector<std::int32_t> order = place_order(model);
+  ASSERT_NE(order[9], 9) << "the deep pair must be renumbered";
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  try {
+    by_place->advance(1);
+    FAIL() << "no deep pair";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    const bool named = what.find("particles 9 (") != std::string::npos
+                           ? what.find(" and 10 (") != std::string::npos
+                           : what.find("particles 10 (") != std::string::npos &&
+                                 what.find(" and 9 (") != std::string::npos;
+    EXPECT_TRUE(named) << what;
+  }
+}
+
+TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesOfLoneTrianglesOnly) {
+  const Scene rows = dense_pile(100000);
+  const Scene random = shuffled(rows);
+  EXPECT_FALSE(numbers_by_place(rows, build_particle_model(rows), ParticleOrder::Auto));
+  const ParticleModel random_model = build_particle_model(random);
+  EXPECT_TRUE(numbers_by_place(random, random_model, ParticleOrder::Auto));
+  EXPECT_FALSE(numbers_by_place(random, random_model, ParticleOrder::Scene));
+  const Scene small = shuffled(test::jostling_pile(20, 12));
+  const ParticleModel small_model = build_particle_model(small);
+  EXPECT_FALSE(numbers_by_place(small, small_model, ParticleOrder::Auto));
+  EXPECT_TRUE(numbers_by_place(small, small_model, ParticleOrder::Place));
+  // Bodies keep the scene's order: auto leaves them, place refuses them.
+  Scene bodies = random;
+  bodies.bodies.resize(random.triangles.size() - 1);
+  for (std::size_t b = 0; b < bodies.bodies.size(); ++b) bodies.bodies[b] = {b, 1};
+  bodies.bodies.back().count = 2;
+  EXPECT_FALSE(numbers_by_place(bodies, random_model, ParticleOrder::Auto));
+  EXPECT_THROW(numbers_by_place(bodies, random_model, ParticleOrder::Place), RunError);
+}
+
+TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = shuffled(test::jostling_pile(20, 12));
+  auto scene_order = solver_for(s, ParticleOrder::Scene, Backend::Cuda);
+  auto by_place = solver_for(s, ParticleOrder::Place, Backend::Cuda);
+  scene_order->advance(250);
+  by_place->advance(250);
+  expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*by_place), 1e-9,
+                         scene_order->dt());
+  // Its state, in the scene's ids, continues in the scene's order.
+  SolverState state;
+  by_place->save_state(state);
+  auto continued = solver_for(s, ParticleOrder::Scene, Backend::Cuda);
+  continued->load_state(state);
+  continued->advance(100);
+  scene_order->advance(100);
+  expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*continued), 1e-9,
+                         scene_order->dt());
+}
+
+}  // namespace TRIDEM_TEST_FILE
+}  // namespace
+}  // namespace tridem
