@@ -180,9 +180,14 @@ int info(const std::string& path) {
                  ? "a scene this small keeps its data in the caches whatever its order"
              : info.numbering_spread < 0.25 ? "by place"
              : info.numbering_spread > 0.5
-                 ? "at random: a large run steps at up to half the rate of the same grains "
-                   "numbered by place"
-                 : "partly by place");
+                 ? (info.numbered_by_place
+                        ? "at random: tridem run numbers them by place inside the solver, "
+                          "whose outputs keep these ids"
+                        : "at random: a large run steps at up to half the rate of the same "
+                          "grains numbered by place")
+             : info.numbered_by_place ? "partly by place: tridem run numbers them by place "
+                                        "inside the solver, whose outputs keep these ids"
+                                      : "partly by place");
   return 0;
 }
 

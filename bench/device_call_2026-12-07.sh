@@ -12,11 +12,16 @@ mib=$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -
 nvidia-smi --query-gpu=name,memory.total --format=csv,noheader
 if [ "${SHUFFLE:-0}" = 1 ]; then
   # What the particles' order costs the GPU: dense_pile against the same grains numbered
-  # at random (shuffled_pile), both precisions, one binary, cases interleaved.
-  .devbin/bench/tridem_bench --scenes=dense_pile,shuffled_pile,curve_pile --backends=cuda,cuda-float \
-    --min_n="${SHUFFLE_MIN_N:-1e4}" --max_n="${SHUFFLE_MAX_N:-1e6}" --benchmark_repetitions=3 \
-    --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
-    --benchmark_out="$out/shuffle.json" --benchmark_out_format=json 2>&1 | tee "$out/shuffle.txt" | grep -E "median|scene"
+  # at random (shuffled_pile), both precisions, one binary, cases interleaved; the solver
+  # in the scene's order (scene) and numbering by place when far (auto, the default).
+  for order in ${ORDERS:-scene auto}; do
+    .devbin/bench/tridem_bench --scenes=dense_pile,shuffled_pile,curve_pile --backends=cuda,cuda-float \
+      --min_n="${SHUFFLE_MIN_N:-1e4}" --max_n="${SHUFFLE_MAX_N:-1e6}" --benchmark_repetitions=3 \
+      --particle_order="$order" --frames="${SHUFFLE_FRAMES:-}" \
+      --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
+      --benchmark_out="$out/shuffle_$order.json" --benchmark_out_format=json 2>&1 |
+      tee "$out/shuffle_$order.txt" | grep -E "median|scene"
+  done
 fi
 if [ "${OMP_AB:-0}" = 1 ]; then
   # The CPU solvers' partner records (backends/cpu/partner_record.hpp) on the host's cores:

@@ -28,7 +28,7 @@
 //                     mixed mode: double state, float pairs; docs/model.md, "Precision"),
 //                     the others double
 //   --stage_timing=0  run without per-stage times (what timing costs: compare s_per_step)
-//   --frames=1        also time one output frame (snapshot) per variant and size
+//   --frames=1        also time one output frame (snapshot) per variant, size and scene
 //   --contact_rows_per_copy=R  rows of a frame's contact network the cuda backend
 //                     compacts and downloads at a time (default 2^22; a number above the
 //                     contacts takes them in one piece, as before windows)
@@ -354,10 +354,13 @@ void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std
 /// The cost of one output frame: the state (6 arrays of n in double in every precision)
 /// and the forces (3 in the precision) copied from the solver's memory into a host
 /// Snapshot, without and with the contact network.
-void snapshot_case(benchmark::State& state, Variant v, std::size_t n, bool contacts) {
-  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n);
+void snapshot_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, bool contacts) {
+  const std::unique_ptr<tridem::Solver> solver = warmed_up(state, v, n, kind);
   if (!solver) return;
   tridem::Snapshot snap;
+  // A run's frames after its first two: the buffers grown (a solver numbering by place
+  // swaps its contacts' buffer with the snapshot's, so that both grow in two frames).
+  for (int warm = 0; warm < 2; ++warm) solver->snapshot(snap, contacts);
   for (auto _ : state) solver->snapshot(snap, contacts);
   const double real = v.precision == tridem::Precision::Float ? 4 : 8;
   using benchmark::Counter;
@@ -497,12 +500,17 @@ int main(int argc, char** argv) {
         if (n >= 1000000 && large_reps > 0) bm->Repetitions(large_reps);
       }
       if (!frames) continue;
-      for (const bool contacts : {false, true}) {
-        auto* fb = benchmark::RegisterBenchmark(
-            (std::string(contacts ? "frame_with_contacts/" : "frame/") + v.name() + size).c_str(),
-            snapshot_case, v, n, contacts);
-        fb->Iterations(3)->UseRealTime()->Unit(benchmark::kMillisecond);
-      }
+      // dense_pile's frames keep their names of before; another pile's carry its name.
+      for (const Pile kind : piles)
+        for (const bool contacts : {false, true}) {
+          const std::string pile =
+              kind == Pile::Dense ? std::string() : std::string(pile_name(kind)) + "/";
+          auto* fb = benchmark::RegisterBenchmark(
+              (std::string(contacts ? "frame_with_contacts/" : "frame/") + pile + v.name() + size)
+                  .c_str(),
+              snapshot_case, v, kind, n, contacts);
+          fb->Iterations(3)->UseRealTime()->Unit(benchmark::kMillisecond);
+        }
     }
   }
   benchmark::RunSpecifiedBenchmarks();

@@ -104,6 +104,9 @@ struct SceneInfo {
   /// numbering_distance over two id-scrambled particles' distance: near 0 by place, near 1
   /// at random (core/numbering_note.hpp).
   double numbering_spread = 0;
+  /// tridem run (--particle-order auto) numbers the particles by place inside the solver
+  /// (core/place_numbered_solver: a large scene of lone triangles numbered far apart).
+  bool numbered_by_place = false;
 };
 
 SceneInfo describe_scene(const Scene& scene);

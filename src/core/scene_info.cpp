@@ -2,6 +2,7 @@
 #include "core/memory_estimate.hpp"
 #include "core/numbering_note.hpp"
 #include "core/particle_model.hpp"
+#include "core/place_numbered_solver.hpp"
 #include "core/time_step.hpp"
 #include "tridem/run.hpp"
 
@@ -45,6 +46,7 @@ SceneInfo describe_scene(const Scene& scene) {
   info.gpu = cuda_device_description();
   info.numbering_distance = consecutive_id_distance(model);
   info.numbering_spread = numbering_spread(model);
+  info.numbered_by_place = numbers_by_place(scene, model, ParticleOrder::Auto);
   return info;
 }
 

@@ -5,11 +5,14 @@
 // scenes auto numbers by place.
 #include "core/place_numbered_solver.hpp"
 #include "core/particle_model.hpp"
+#include "core/solver_factory.hpp"
+#include "core/time_step.hpp"
 #include "support/gpu.hpp"
 #include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
 #include "tridem/error.hpp"
+#include "tridem/run.hpp"
 #include "tridem/standard_scenes.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +22,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -54,8 +58,17 @@ Snapshot snapshot_of(const Solver& solver) {
   return snap;
 }
 
-/// The same contacts in the same order (the scene's ids, each pair's emitter first), and
-/// forces and states within `tolerance` of the largest value of their kind. A contact's
+/// The contacts by (i, j), and a periodic pair's images by their translation: a solver
+/// numbering by place lists them in its own order.
+std::vector<ContactRecord> by_pair(std::vector<ContactRecord> c) {
+  std::stable_sort(c.begin(), c.end(), [](const ContactRecord& x, const ContactRecord& y) {
+    return std::tie(x.i, x.j, x.image_dx, x.image_dy) < std::tie(y.i, y.j, y.image_dx, y.image_dy);
+  });
+  return c;
+}
+
+/// The same contacts (the scene's ids, each pair's emitter as i), and forces and states
+/// within `tolerance` of the largest value of their kind. A contact's
 /// point is placed from its emitter's centroid after the step (core/snapshot_fill.hpp), so
 /// that the two emitters of a pair place it up to a step's motion apart: `dt` bounds it.
 void expect_within_rounding(const Snapshot& a, const Snapshot& b, double tolerance, double dt) {
@@ -67,8 +80,9 @@ void expect_within_rounding(const Snapshot& a, const Snapshot& b, double toleran
   double force = 0;
   for (const ContactRecord& c : a.contacts) force = std::max(force, std::hypot(c.fx, c.fy));
   ASSERT_GT(force, 0.0) << "the scene must be in contact";
-  for (std::size_t k = 0; k < a.contacts.size(); ++k) {
-    const ContactRecord &p = a.contacts[k], &q = b.contacts[k];
+  const std::vector<ContactRecord> ca = by_pair(a.contacts), cb = by_pair(b.contacts);
+  for (std::size_t k = 0; k < ca.size(); ++k) {
+    const ContactRecord &p = ca[k], &q = cb[k];
     ASSERT_EQ(p.i, q.i) << "contact " << k;
     ASSERT_EQ(p.j, q.j) << "contact " << k;
     EXPECT_NEAR(p.fx, q.fx, tolerance * force) << "contact " << k;
@@ -141,11 +155,67 @@ TEST(PlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   by_place->advance(600);
   const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
   EXPECT_GT(a.contacts.size(), 40u);
+  // Between two grains the lower id is i, as in the scene's order (the walls, larger than
+  // the grid's cells, are always j).
+  for (const ContactRecord& c : b.contacts) {
+    if (c.j >= 3) EXPECT_LT(c.i, c.j);
+  }
   expect_within_rounding(a, b, 1e-9, scene_order->dt());
   // OpenMP numbered by place is the serial one numbered by place, to the bit.
   auto parallel = solver_for(s, ParticleOrder::Place, Backend::OpenMP);
   parallel->advance(600);
   test::expect_identical(b, snapshot_of(*parallel));
+}
+
+/// A CPU solver with the contact copy every backend can give (make_snapshot_contact_copy),
+/// as the CUDA solver has one of its own: the place-numbered solver maps it.
+class CopyingSolver final : public Solver {
+ public:
+  explicit CopyingSolver(std::unique_ptr<Solver> s) : s_(std::move(s)) {}
+  void advance(std::int64_t steps) override { s_->advance(steps); }
+  void snapshot(Snapshot& out, bool with_contacts) const override {
+    s_->snapshot(out, with_contacts);
+  }
+  std::unique_ptr<ContactCopy> make_contact_copy() const override {
+    return make_snapshot_contact_copy(*s_);
+  }
+  void save_state(SolverState& out) const override { s_->save_state(out); }
+  void load_state(const SolverState& in) override { s_->load_state(in); }
+  EnergyBudget energy() const override { return s_->energy(); }
+  std::int64_t step() const override { return s_->step(); }
+  double time() const override { return s_->time(); }
+  double dt() const override { return s_->dt(); }
+  std::size_t size() const override { return s_->size(); }
+  std::string description() const override { return s_->description(); }
+  StageTimes stage_times() const override { return s_->stage_times(); }
+  void set_stage_timing(bool on) override { s_->set_stage_timing(on); }
+
+ private:
+  std::unique_ptr<Solver> s_;
+};
+
+TEST(PlaceNumbering, AFramesContactCopyGivesTheSnapshotsContacts) {
+  const Scene s = shuffled(test::jostling_pile(20, 12));
+  const ParticleModel model = build_particle_model(s);
+  const TimeStep ts = estimate_time_step(s, model);
+  const std::vector<std::int32_t> order = place_order(model);
+  SolverConfig config;
+  config.particle_order = ParticleOrder::Scene;
+  auto inner = make_solver(s, reordered_model(model, order), ts, config);
+  EXPECT_EQ(inner->make_contact_copy(), nullptr) << "the CPU takes them with the snapshot";
+  auto by_place = make_place_numbered_solver(std::make_unique<CopyingSolver>(std::move(inner)),
+                                             order, s, model);
+  by_place->advance(400);
+  const std::unique_ptr<ContactCopy> copy = by_place->make_contact_copy();
+  ASSERT_TRUE(copy);
+  Snapshot copied;
+  by_place->snapshot(copied, false);
+  EXPECT_TRUE(copied.contacts.empty());
+  copy->start();
+  copy->finish(copied);
+  const Snapshot whole = snapshot_of(*by_place);
+  EXPECT_GT(whole.contacts.size(), 30u);
+  test::expect_identical(whole, copied);
 }
 
 TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
@@ -228,7 +298,7 @@ TEST(PlaceNumbering, ALoadedStateIsCheckedInTheScenesIds) {
     by_place->load_state(state);
     FAIL() << "a pair of a particle with itself was loaded";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("5"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pair 0 (5, 5)"), std::string::npos) << e.what();
   }
 }
 
@@ -287,6 +357,8 @@ TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesOfLoneTrianglesOnly) {
   const ParticleModel random_model = build_particle_model(random);
   EXPECT_TRUE(numbers_by_place(random, random_model, ParticleOrder::Auto));
   EXPECT_FALSE(numbers_by_place(random, random_model, ParticleOrder::Scene));
+  EXPECT_TRUE(describe_scene(random).numbered_by_place) << "tridem info tells it";
+  EXPECT_FALSE(describe_scene(rows).numbered_by_place);
   const Scene small = shuffled(test::jostling_pile(20, 12));
   const ParticleModel small_model = build_particle_model(small);
   EXPECT_FALSE(numbers_by_place(small, small_model, ParticleOrder::Auto));
@@ -309,6 +381,14 @@ TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   by_place->advance(250);
   expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*by_place), 1e-9,
                          scene_order->dt());
+  // The frames' contact copy (beside the steps) is the snapshot's, to the bit.
+  const std::unique_ptr<ContactCopy> copy = by_place->make_contact_copy();
+  ASSERT_TRUE(copy) << "the CUDA solver's copy, mapped";
+  Snapshot copied;
+  by_place->snapshot(copied, false);
+  copy->start();
+  copy->finish(copied);
+  test::expect_identical(snapshot_of(*by_place), copied);
   // Its state, in the scene's ids, continues in the scene's order.
   SolverState state;
   by_place->save_state(state);
