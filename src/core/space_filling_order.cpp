@@ -1,6 +1,7 @@
 #include "core/space_filling_order.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <utility>
 
@@ -46,11 +47,20 @@ std::vector<std::size_t> space_filling_order(const std::vector<Vec2d>& points) {
     const double c = (v - origin) * to_cell;
     return static_cast<std::uint32_t>(std::clamp(c, 0.0, static_cast<double>(kSide - 1)));
   };
-  std::vector<std::uint64_t> key(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    key[i] = hilbert_index(cell(points[i].x, lo.x), cell(points[i].y, lo.y));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  // The curve's index (below 2^32) above the point's (below 2^32: 4x10^9 points would be
+  // 64 GB of centroids), sorted as plain numbers: the points of one cell keep their order,
+  // and at 10^6 points the sort reads no key at random (the solver's set-up sorts the
+  // free particles so, core/place_numbered_solver).
+  const auto n = static_cast<std::int64_t>(points.size());
+  std::vector<std::uint64_t> keyed(points.size());
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const Vec2d& p = points[static_cast<std::size_t>(i)];
+    keyed[static_cast<std::size_t>(i)] =
+        (hilbert_index(cell(p.x, lo.x), cell(p.y, lo.y)) << 32) | static_cast<std::uint64_t>(i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k] & 0xffffffffu;
   return order;
 }
 

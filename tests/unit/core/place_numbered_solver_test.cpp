@@ -158,7 +158,9 @@ TEST(PlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   // Between two grains the lower id is i, as in the scene's order (the walls, larger than
   // the grid's cells, are always j).
   for (const ContactRecord& c : b.contacts) {
-    if (c.j >= 3) EXPECT_LT(c.i, c.j);
+    if (c.j >= 3) {
+      EXPECT_LT(c.i, c.j);
+    }
   }
   expect_within_rounding(a, b, 1e-9, scene_order->dt());
   // OpenMP numbered by place is the serial one numbered by place, to the bit.
