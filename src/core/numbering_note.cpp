@@ -73,7 +73,7 @@ std::string numbering_note(const ParticleModel& model, bool by_place) {
       "a large run steps at up to half the rate of the same grains numbered by place "
       "(docs/performance.md, \"The particles' order\"); list them by place in the scene, or "
       "give generated grains numbering = \"space\" (the solver itself numbers by place only "
-      "scenes of lone triangles without bonds, under --particle-order auto)\n",
+      "scenes without bonds, under --particle-order auto)\n",
       apart);
 }
 

@@ -35,6 +35,8 @@ struct ParticleModel {
   /// particles by place (core/place_numbered_solver) runs on the scene's particles in
   /// another order, and its blow-up and deep-pair messages name them by their scene ids.
   std::vector<std::int64_t> shown_id;
+  /// As shown_id, for the bodies of several triangles (empty: a body's index).
+  std::vector<std::int64_t> shown_body_id;
 
   std::size_t size() const { return centroid.size(); }
   std::int64_t shown(std::int64_t i) const {

@@ -44,11 +44,21 @@ struct PlaceNumbering {
   std::vector<std::int32_t> scene_of;     ///< the scene id of the inner solver's particle k
   std::vector<std::int32_t> inner_of;     ///< the inner index of scene particle i
   std::vector<std::uint8_t> small, free;  ///< by scene id: the emitter rule's classes
+  /// Bodies of several triangles (all empty without): as scene_of and inner_of, and the
+  /// scene's first member of each body (n + 1 entries, Snapshot::body_first).
+  std::vector<std::int32_t> body_scene_of, body_inner_of;
+  std::vector<std::int64_t> body_first;
 
-  PlaceNumbering(std::vector<std::int32_t> order, const Scene& scene, const ParticleModel& model)
-      : scene_of(std::move(order)), inner_of(scene_of.size()) {
+  PlaceNumbering(PlaceOrder order, const Scene& scene, const ParticleModel& model)
+      : scene_of(std::move(order.triangles)),
+        inner_of(scene_of.size()),
+        body_scene_of(std::move(order.bodies)),
+        body_inner_of(body_scene_of.size()) {
     for (std::size_t k = 0; k < scene_of.size(); ++k)
       inner_of[static_cast<std::size_t>(scene_of[k])] = static_cast<std::int32_t>(k);
+    for (std::size_t k = 0; k < body_scene_of.size(); ++k)
+      body_inner_of[static_cast<std::size_t>(body_scene_of[k])] = static_cast<std::int32_t>(k);
+    if (!body_scene_of.empty()) body_first = model.bodies.first;
     // All-pairs has no size classes (broadphase/emitter_rule.hpp): every particle is small.
     small = scene.simulation.method == Method::AllPairs
                 ? std::vector<std::uint8_t>(model.size(), 1)
@@ -129,8 +139,8 @@ class PlaceNumberedContactCopy final : public ContactCopy {
 
 class PlaceNumberedSolver final : public Solver {
  public:
-  PlaceNumberedSolver(std::unique_ptr<Solver> inner, std::vector<std::int32_t> order,
-                      const Scene& scene, const ParticleModel& model)
+  PlaceNumberedSolver(std::unique_ptr<Solver> inner, PlaceOrder order, const Scene& scene,
+                      const ParticleModel& model)
       : inner_(std::move(inner)),
         numbering_(std::make_shared<const PlaceNumbering>(std::move(order), scene, model)) {}
 
@@ -164,12 +174,33 @@ class PlaceNumberedSolver final : public Solver {
   /// follows v_emitter − v_partner). `scene_ids`: the renamed ids are the scene's.
   void rename_pairs(const SolverState& from, SolverState& to, const std::vector<std::int32_t>& id,
                     bool scene_ids) const;
+  /// The snapshot's body columns in the scene's body ids (none without bodies).
+  void show_bodies(const Snapshot& in, Snapshot& out) const;
 
   std::unique_ptr<Solver> inner_;
   std::shared_ptr<const PlaceNumbering> numbering_;
   mutable Snapshot inner_snapshot_;
   mutable SolverState inner_state_;
 };
+
+void PlaceNumberedSolver::show_bodies(const Snapshot& in, Snapshot& out) const {
+  const PlaceNumbering& m = *numbering_;
+  out.resize_bodies(m.body_scene_of.size());
+  if (m.body_scene_of.empty()) return;
+  Snapshot::for_each_body_column(
+      [&](auto field) { gather(out.column(field), in.column(field), m.body_inner_of); });
+  gather(out.body_mass, in.body_mass, m.body_inner_of);
+  gather(out.body_inertia, in.body_inertia, m.body_inner_of);
+  out.body_first = m.body_first;
+  const auto n = static_cast<std::int64_t>(out.size());
+#pragma omp parallel for schedule(static) if (n > 65536)
+  for (std::int64_t a = 0; a < n; ++a) {
+    const std::int32_t inner_body =
+        in.member_body[static_cast<std::size_t>(m.inner_of[static_cast<std::size_t>(a)])];
+    out.member_body[static_cast<std::size_t>(a)] =
+        m.body_scene_of[static_cast<std::size_t>(inner_body)];
+  }
+}
 
 void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
   inner_->snapshot(inner_snapshot_, with_contacts);
@@ -181,7 +212,8 @@ void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
   out.resize(in.size());
   out.for_each_particle_array(
       in, [&](auto& to, const auto& from) { gather(to, from, numbering_->inner_of); });
-  out.resize_bodies(0);  // numbered by place only without bodies or bonds
+  show_bodies(in, out);
+  // Numbered by place only without bonds.
   for (auto* v : {&out.bond_damage, &out.bond_x0, &out.bond_y0, &out.bond_x1, &out.bond_y1})
     v->clear();
   out.bond_a.clear();
@@ -226,7 +258,8 @@ void PlaceNumberedSolver::rename_pairs(const SolverState& from, SolverState& to,
 /// Every per-particle column of `to` from `from` through `index` (an empty column, the
 /// energy sums' zeros, stays empty); the rest of the state as it is.
 void rename_particles(const SolverState& from, SolverState& to,
-                      const std::vector<std::int32_t>& index) {
+                      const std::vector<std::int32_t>& index,
+                      const std::vector<std::int32_t>& body_index) {
   to.step = from.step;
   to.time = from.time;
   SolverState::for_each_field([&](auto field) {
@@ -238,21 +271,26 @@ void rename_particles(const SolverState& from, SolverState& to,
         gather(t, f, index);
     });
   });
-  SolverState::for_each_body_column([&](auto field) { to.column(field) = from.column(field); });
+  SolverState::for_each_body_column([&](auto field) {
+    if (from.column(field).empty())
+      to.column(field).clear();
+    else
+      gather(to.column(field), from.column(field), body_index);
+  });
   to.bond_damage = from.bond_damage;
   to.bond_dissipated = from.bond_dissipated;
 }
 
 void PlaceNumberedSolver::save_state(SolverState& out) const {
   inner_->save_state(inner_state_);
-  rename_particles(inner_state_, out, numbering_->inner_of);
+  rename_particles(inner_state_, out, numbering_->inner_of, numbering_->body_inner_of);
   rename_pairs(inner_state_, out, numbering_->scene_of, true);
 }
 
 void PlaceNumberedSolver::load_state(const SolverState& in) {
   // Checked in the scene's ids, so that a problem names the particle the user knows.
-  validate_solver_state(in, size(), 0, description());
-  rename_particles(in, inner_state_, numbering_->scene_of);
+  validate_solver_state(in, size(), numbering_->body_scene_of.size(), description());
+  rename_particles(in, inner_state_, numbering_->scene_of, numbering_->body_scene_of);
   rename_pairs(in, inner_state_, numbering_->inner_of, false);
   inner_->load_state(inner_state_);
 }
@@ -261,49 +299,127 @@ void PlaceNumberedSolver::load_state(const SolverState& in) {
 
 bool numbers_by_place(const Scene& scene, const ParticleModel& model, ParticleOrder order) {
   if (order == ParticleOrder::Scene) return false;
-  const char* kept = scene.has_bodies()     ? "bodies of several triangles"
-                     : !scene.bonds.empty() ? "bonds"
+  const char* kept = !scene.bonds.empty() ? "bonds"
                      : model.size() > static_cast<std::size_t>(INT32_MAX)
                          ? "more than 2^31 particles"
                          : nullptr;
   if (order == ParticleOrder::Place) {
     if (kept)
       throw RunError(fmt::format(
-          "{}: particle order \"place\" renumbers scenes of lone triangles, and this one has "
-          "{}: give particle order \"scene\" or \"auto\"",
+          "{}: particle order \"place\" renumbers scenes without bonds, and this one has {}: "
+          "give particle order \"scene\" or \"auto\"",
           scene_label(scene), kept));
     return true;
   }
   return !kept && model.size() >= kLargeNumbering && consecutive_id_distance(model) > kFarNumbering;
 }
 
-std::vector<std::int32_t> place_order(const ParticleModel& model) {
-  std::vector<std::int32_t> order(model.size()), free;
-  std::vector<Vec2d> centroids;
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    order[i] = static_cast<std::int32_t>(i);
-    if (model.motion[i] != Motion::Free) continue;
-    free.push_back(static_cast<std::int32_t>(i));
-    centroids.push_back(model.centroid[i]);
-  }
-  const std::vector<std::size_t> along = space_filling_order(centroids);
-  for (std::size_t k = 0; k < free.size(); ++k)
-    order[static_cast<std::size_t>(free[k])] = free[along[k]];
-  return order;
+namespace {
+
+/// Each item's position along the curve among the free ones (by their centroids); the
+/// others' entries are unused.
+std::vector<std::size_t> curve_rank(const std::vector<Motion>& motion,
+                                    const std::vector<Vec2d>& centroid) {
+  std::vector<std::size_t> free, rank(motion.size(), 0);
+  std::vector<Vec2d> points;
+  for (std::size_t i = 0; i < motion.size(); ++i)
+    if (motion[i] == Motion::Free) {
+      free.push_back(i);
+      points.push_back(centroid[i]);
+    }
+  const std::vector<std::size_t> along = space_filling_order(points);
+  for (std::size_t k = 0; k < along.size(); ++k) rank[free[along[k]]] = k;
+  return rank;
 }
 
-ParticleModel reordered_model(const ParticleModel& model, const std::vector<std::int32_t>& order) {
-  ParticleModel out;
-  out.for_each_particle_array(model, [&](auto& to, const auto& from) { gather(to, from, order); });
-  out.programs = model.programs;
-  out.program_knots = model.program_knots;
-  out.bodies = model.bodies;
-  out.shown_id.assign(order.begin(), order.end());
+}  // namespace
+
+PlaceOrder place_order(const ParticleModel& model) {
+  PlaceOrder out;
+  const BodyModel& bodies = model.bodies;
+  if (bodies.empty()) {
+    // Lone triangles: the free ones, in the curve's order, take the free ones' places.
+    const std::vector<std::size_t> rank = curve_rank(model.motion, model.centroid);
+    std::vector<std::int32_t> free;
+    out.triangles.resize(model.size());
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      out.triangles[i] = static_cast<std::int32_t>(i);
+      if (model.motion[i] == Motion::Free) free.push_back(static_cast<std::int32_t>(i));
+    }
+    for (const std::int32_t i : free) out.triangles[free[rank[static_cast<std::size_t>(i)]]] = i;
+    return out;
+  }
+  // Bodies, as wholes: each run of consecutive free bodies in the curve's order, so that the
+  // run covers the same triangles and every wall body keeps its members' ids.
+  const std::vector<std::size_t> rank = curve_rank(bodies.motion, bodies.centroid);
+  const std::size_t nb = bodies.size();
+  out.bodies.resize(nb);
+  for (std::size_t b = 0; b < nb; ++b) out.bodies[b] = static_cast<std::int32_t>(b);
+  for (std::size_t b = 0; b < nb;) {
+    if (bodies.motion[b] != Motion::Free) {
+      ++b;
+      continue;
+    }
+    std::size_t end = b;
+    while (end < nb && bodies.motion[end] == Motion::Free) ++end;
+    std::sort(out.bodies.begin() + static_cast<std::ptrdiff_t>(b),
+              out.bodies.begin() + static_cast<std::ptrdiff_t>(end),
+              [&](std::int32_t x, std::int32_t y) {
+                return rank[static_cast<std::size_t>(x)] < rank[static_cast<std::size_t>(y)];
+              });
+    b = end;
+  }
+  out.triangles.reserve(model.size());
+  for (const std::int32_t b : out.bodies)
+    for (std::int64_t i = bodies.first[static_cast<std::size_t>(b)];
+         i < bodies.first[static_cast<std::size_t>(b) + 1]; ++i)
+      out.triangles.push_back(static_cast<std::int32_t>(i));
   return out;
 }
 
-std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner,
-                                                   std::vector<std::int32_t> order,
+Scene reordered_scene(const Scene& scene, const PlaceOrder& order) {
+  Scene inner;
+  inner.source = scene.source;
+  inner.simulation = scene.simulation;
+  inner.output = scene.output;
+  inner.materials = scene.materials;
+  inner.programs = scene.programs;
+  inner.program_knots = scene.program_knots;
+  inner.triangles.reserve(scene.triangles.size());
+  for (const std::int32_t i : order.triangles)
+    inner.triangles.push_back(scene.triangles[static_cast<std::size_t>(i)]);
+  std::size_t first = 0;
+  for (const std::int32_t b : order.bodies) {
+    BodySpec body = scene.bodies[static_cast<std::size_t>(b)];
+    body.first = first;
+    first += body.count;
+    inner.bodies.push_back(body);
+  }
+  return inner;
+}
+
+ParticleModel reordered_model(const Scene& scene, const ParticleModel& model,
+                              const PlaceOrder& order) {
+  if (order.bodies.empty()) {
+    ParticleModel out;
+    out.for_each_particle_array(
+        model, [&](auto& to, const auto& from) { gather(to, from, order.triangles); });
+    out.programs = model.programs;
+    out.program_knots = model.program_knots;
+    out.bodies = model.bodies;
+    out.shown_id.assign(order.triangles.begin(), order.triangles.end());
+    return out;
+  }
+  // Bodies: the model of the scene in the new order, built as any scene's (a body's mass,
+  // inertia and members' offsets sum its members, in their own order: the same bits).
+  const Scene inner = reordered_scene(scene, order);
+  ParticleModel out = build_particle_model(inner);
+  out.shown_id.assign(order.triangles.begin(), order.triangles.end());
+  out.shown_body_id.assign(order.bodies.begin(), order.bodies.end());
+  return out;
+}
+
+std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner, PlaceOrder order,
                                                    const Scene& scene, const ParticleModel& model) {
   return std::make_unique<PlaceNumberedSolver>(std::move(inner), std::move(order), scene, model);
 }

@@ -117,8 +117,8 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
                : make_for_real<double>(scene, m, ts, config, backend);
   };
   if (!numbers_by_place(scene, model, config.particle_order)) return make(model);
-  std::vector<std::int32_t> order = place_order(model);
-  std::unique_ptr<Solver> inner = make(reordered_model(model, order));
+  PlaceOrder order = place_order(model);
+  std::unique_ptr<Solver> inner = make(reordered_model(scene, model, order));
   return make_place_numbered_solver(std::move(inner), std::move(order), scene, model);
 }
 

@@ -62,6 +62,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   programs_ = model.programs;
   program_knots_ = model.program_knots;
   shown_id_ = model.shown_id;
+  shown_body_id_ = model.shown_body_id;
   if (std::any_of(programs_.begin(), programs_.end(), physics::follows_length))
     servo_targets_.assign(programs_.size(), 0.0);
   if (!model.bodies.empty()) {
@@ -763,9 +764,9 @@ void CpuSolver<Real>::check_body_runaway() const {
     team_single([&] {
       const auto b = static_cast<std::size_t>(bad);
       const physics::Pose<double> p = advanced_body_pose(b);
-      throw RunError("body id " + std::to_string(bad) + ": " +
-                     runaway_message(step_ + 1, body_first_[b], body_x_[b], body_y_[b], norm(p.v),
-                                     dt_, limit_));
+      throw RunError("body id " + std::to_string(shown_body_id(bad)) + ": " +
+                     runaway_message(step_ + 1, shown_id(body_first_[b]), body_x_[b], body_y_[b],
+                                     norm(p.v), dt_, limit_));
     });
 }
 

@@ -201,8 +201,12 @@ class CpuSolver final : public Solver {
   std::vector<MotionProgram> programs_;
   /// ParticleModel::shown_id: the ids the messages name.
   std::vector<std::int64_t> shown_id_;
+  std::vector<std::int64_t> shown_body_id_;  ///< ParticleModel::shown_body_id
   std::int64_t shown_id(std::int64_t i) const {
     return shown_id_.empty() ? i : shown_id_[static_cast<std::size_t>(i)];
+  }
+  std::int64_t shown_body_id(std::int64_t b) const {
+    return shown_body_id_.empty() ? b : shown_body_id_[static_cast<std::size_t>(b)];
   }
   std::vector<ProgramKnot> program_knots_;
   // The step's target force of each program, when some servo follows a length

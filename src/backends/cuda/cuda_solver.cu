@@ -55,6 +55,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
       method_(scene.simulation.method),
       host_model_(model),
       shown_id_(model.shown_id),
+      shown_body_id_(model.shown_body_id),
       run_ahead_(config.gpu_run_ahead),
       contact_rows_per_copy_(config.gpu_contact_rows_per_copy > 0 ? config.gpu_contact_rows_per_copy
                                                                   : kContactRowsPerCopy) {
@@ -676,9 +677,9 @@ void CudaSolver<Real>::report_body_runaway(int k) const {
       true, Vec2d{at(bodies_.body_fx), at(bodies_.body_fy)}, at(bodies_.body_torque),
       at(bodies_.body_inv_mass), at(bodies_.body_inv_inertia), params_.gravity,
       params_.local_damping, params_.dt);
-  throw RunError(
-      "body id " + std::to_string(k) + ": " +
-      runaway_message(step_ + 1, at(bodies_.body_first), x, y, norm(pose.v), params_.dt, limit_));
+  throw RunError("body id " + std::to_string(shown_body_id(k)) + ": " +
+                 runaway_message(step_ + 1, shown_id(at(bodies_.body_first)), x, y, norm(pose.v),
+                                 params_.dt, limit_));
 }
 
 template <class Real>

@@ -7,6 +7,7 @@
 #include "core/particle_model.hpp"
 #include "core/solver_factory.hpp"
 #include "core/time_step.hpp"
+#include "support/body_scenes.hpp"
 #include "support/gpu.hpp"
 #include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <random>
 #include <string>
 #include <tuple>
@@ -107,14 +109,14 @@ void expect_within_rounding(const Snapshot& a, const Snapshot& b, double toleran
 TEST(PlaceNumbering, TheOrderMovesFreeParticlesOnlyAndPutsNeighboursTogether) {
   const Scene s = shuffled(test::jostling_pile(20, 12));
   const ParticleModel model = build_particle_model(s);
-  const std::vector<std::int32_t> order = place_order(model);
+  const std::vector<std::int32_t> order = place_order(model).triangles;
   ASSERT_EQ(order.size(), model.size());
   std::vector<std::int32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t i = 0; i < sorted.size(); ++i)
     ASSERT_EQ(sorted[i], static_cast<std::int32_t>(i));
   for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(order[k], static_cast<std::int32_t>(k)) << "a wall";
-  const ParticleModel inner = reordered_model(model, order);
+  const ParticleModel inner = reordered_model(s, model, place_order(model));
   double apart_scene = 0, apart_inner = 0;
   for (std::size_t k = 4; k < model.size(); ++k) {
     apart_scene += norm(model.centroid[k] - model.centroid[k - 1]);
@@ -200,10 +202,10 @@ TEST(PlaceNumbering, AFramesContactCopyGivesTheSnapshotsContacts) {
   const Scene s = shuffled(test::jostling_pile(20, 12));
   const ParticleModel model = build_particle_model(s);
   const TimeStep ts = estimate_time_step(s, model);
-  const std::vector<std::int32_t> order = place_order(model);
+  const PlaceOrder order = place_order(model);
   SolverConfig config;
   config.particle_order = ParticleOrder::Scene;
-  auto inner = make_solver(s, reordered_model(model, order), ts, config);
+  auto inner = make_solver(s, reordered_model(s, model, order), ts, config);
   EXPECT_EQ(inner->make_contact_copy(), nullptr) << "the CPU takes them with the snapshot";
   auto by_place = make_place_numbered_solver(std::make_unique<CopyingSolver>(std::move(inner)),
                                              order, s, model);
@@ -307,7 +309,7 @@ TEST(PlaceNumbering, ALoadedStateIsCheckedInTheScenesIds) {
 TEST(PlaceNumbering, ABlowUpNamesTheScenesParticle) {
   Scene s = shuffled(test::jostling_pile(20, 12));
   const ParticleModel model = build_particle_model(s);
-  const std::vector<std::int32_t> order = place_order(model);
+  const std::vector<std::int32_t> order = place_order(model).triangles;
   // A free particle that the solver keeps at another index.
   std::size_t fast = 3;
   while (order[fast] == static_cast<std::int32_t>(fast)) ++fast;
@@ -336,7 +338,7 @@ TEST(PlaceNumbering, ADeepPairNamesTheScenesParticles) {
   s.triangles.push_back(test::triangle({x, 0}, {x + 0.02, 0}, {x, 0.02}));
   s.simulation.max_penetration = 0.3;
   const ParticleModel model = build_particle_model(s);
-  const std::vector<std::int32_t> order = place_order(model);
+  const std::vector<std::int32_t> order = place_order(model).triangles;
   ASSERT_NE(order[9], 9) << "the deep pair must be renumbered";
   auto by_place = solver_for(s, ParticleOrder::Place);
   try {
@@ -352,7 +354,7 @@ TEST(PlaceNumbering, ADeepPairNamesTheScenesParticles) {
   }
 }
 
-TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesOfLoneTrianglesOnly) {
+TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesWithoutBonds) {
   const Scene rows = dense_pile(100000);
   const Scene random = shuffled(rows);
   EXPECT_FALSE(numbers_by_place(rows, build_particle_model(rows), ParticleOrder::Auto));
@@ -365,13 +367,118 @@ TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesOfLoneTrianglesOnly) {
   const ParticleModel small_model = build_particle_model(small);
   EXPECT_FALSE(numbers_by_place(small, small_model, ParticleOrder::Auto));
   EXPECT_TRUE(numbers_by_place(small, small_model, ParticleOrder::Place));
-  // Bodies keep the scene's order: auto leaves them, place refuses them.
-  Scene bodies = random;
-  bodies.bodies.resize(random.triangles.size() - 1);
-  for (std::size_t b = 0; b < bodies.bodies.size(); ++b) bodies.bodies[b] = {b, 1};
-  bodies.bodies.back().count = 2;
-  EXPECT_FALSE(numbers_by_place(bodies, random_model, ParticleOrder::Auto));
-  EXPECT_THROW(numbers_by_place(bodies, random_model, ParticleOrder::Place), RunError);
+  // Bonds keep the scene's order: auto leaves them, place refuses them.
+  Scene bonded = random;
+  bonded.bonds.push_back(BondSpec{0, 1, {}, {}});
+  EXPECT_FALSE(numbers_by_place(bonded, random_model, ParticleOrder::Auto));
+  EXPECT_THROW(numbers_by_place(bonded, random_model, ParticleOrder::Place), RunError);
+}
+
+/// The body pile with its free bodies in a random order (members in theirs; the walls,
+/// last, stay).
+Scene shuffled_bodies(const Scene& s) {
+  std::vector<std::int32_t> bodies(s.bodies.size());
+  std::iota(bodies.begin(), bodies.end(), 0);
+  std::size_t free = 0;
+  while (free < s.bodies.size() && s.bodies[free].motion == Motion::Free) ++free;
+  std::mt19937_64 random(11);
+  std::shuffle(bodies.begin(), bodies.begin() + static_cast<std::ptrdiff_t>(free), random);
+  PlaceOrder order;
+  order.bodies = bodies;
+  for (const std::int32_t b : bodies)
+    for (std::size_t k = 0; k < s.bodies[static_cast<std::size_t>(b)].count; ++k)
+      order.triangles.push_back(
+          static_cast<std::int32_t>(s.bodies[static_cast<std::size_t>(b)].first + k));
+  return reordered_scene(s, order);
+}
+
+TEST(PlaceNumbering, BodiesMoveAsWholesAndWallBodiesKeepTheirIds) {
+  const Scene s = shuffled_bodies(test::settling_body_pile());
+  ASSERT_TRUE(s.has_bodies());
+  const ParticleModel model = build_particle_model(s);
+  const PlaceOrder order = place_order(model);
+  ASSERT_EQ(order.bodies.size(), s.bodies.size());
+  std::size_t moved = 0;
+  for (std::size_t k = 0; k < order.bodies.size(); ++k) {
+    const BodySpec& body = s.bodies[static_cast<std::size_t>(order.bodies[k])];
+    if (body.motion != Motion::Free) {
+      EXPECT_EQ(order.bodies[k], static_cast<std::int32_t>(k));
+    }
+    moved += order.bodies[k] != static_cast<std::int32_t>(k);
+  }
+  EXPECT_GT(moved, order.bodies.size() / 2);
+  // Each body's members follow one another, in their order.
+  std::size_t t = 0;
+  for (const std::int32_t b : order.bodies) {
+    const BodySpec& body = s.bodies[static_cast<std::size_t>(b)];
+    for (std::size_t k = 0; k < body.count; ++k, ++t)
+      ASSERT_EQ(order.triangles[t], static_cast<std::int32_t>(body.first + k));
+  }
+  EXPECT_EQ(t, s.triangles.size());
+  const ParticleModel inner = reordered_model(s, model, order);
+  for (std::size_t k = 0; k < order.bodies.size(); ++k) {
+    const auto b = static_cast<std::size_t>(order.bodies[k]);
+    EXPECT_EQ(inner.bodies.mass[k], model.bodies.mass[b]);
+    EXPECT_EQ(inner.bodies.inertia[k], model.bodies.inertia[b]);
+  }
+}
+
+TEST(PlaceNumbering, ABodyPileHasTheScenesContactsAndBodiesWithinRounding) {
+  const Scene s = shuffled_bodies(test::settling_body_pile());
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  scene_order->advance(200);
+  by_place->advance(200);
+  const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
+  expect_within_rounding(a, b, 1e-9, scene_order->dt());
+  ASSERT_EQ(a.body_count(), b.body_count());
+  EXPECT_EQ(a.member_body, b.member_body);
+  EXPECT_EQ(a.body_first, b.body_first);
+  EXPECT_EQ(a.body_mass, b.body_mass);
+  for (std::size_t k = 0; k < a.body_count(); ++k) {
+    ASSERT_NEAR(a.body_x[k], b.body_x[k], 1e-12) << "body " << k;
+    ASSERT_NEAR(a.body_vy[k], b.body_vy[k], 1e-9) << "body " << k;
+    ASSERT_NEAR(a.body_omega[k], b.body_omega[k], 1e-6) << "body " << k;
+  }
+
+  // States in the scene's ids continue in either order.
+  SolverState from_place, from_scene;
+  by_place->save_state(from_place);
+  scene_order->save_state(from_scene);
+  EXPECT_EQ(from_place.body_x.size(), s.bodies.size());
+  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
+  scene_from_place->load_state(from_place);
+  auto place_from_scene = solver_for(s, ParticleOrder::Place);
+  place_from_scene->load_state(from_scene);
+  auto place_again = solver_for(s, ParticleOrder::Place);
+  place_again->load_state(from_place);
+  for (Solver* solver : {scene_order.get(), by_place.get(), scene_from_place.get(),
+                         place_from_scene.get(), place_again.get()})
+    solver->advance(100);
+  const Snapshot reference = snapshot_of(*scene_order);
+  expect_within_rounding(reference, snapshot_of(*scene_from_place), 1e-9, scene_order->dt());
+  expect_within_rounding(reference, snapshot_of(*place_from_scene), 1e-9, scene_order->dt());
+  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
+}
+
+TEST(PlaceNumbering, ABodysBlowUpNamesTheScenesBody) {
+  Scene s = shuffled_bodies(test::settling_body_pile());
+  const PlaceOrder order = place_order(build_particle_model(s));
+  std::size_t fast = 0;
+  while (order.bodies[fast] == static_cast<std::int32_t>(fast)) ++fast;
+  const auto body = static_cast<std::size_t>(order.bodies[fast]);  // kept at index `fast`
+  s.bodies[body].velocity = {1e6, 0};
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  try {
+    by_place->advance(1);
+    FAIL() << "no blow-up";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find("body id " + std::to_string(body) + ": "), 0u) << what;
+    EXPECT_NE(what.find("particle " + std::to_string(s.bodies[body].first) + " "),
+              std::string::npos)
+        << what;
+  }
 }
 
 TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
