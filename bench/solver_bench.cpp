@@ -56,7 +56,9 @@
 //                     into each repetition's solver; counter `settle_steps`;
 //                     shuffled_pile(n) is dense_pile(n) with its grains numbered in a
 //                     random order (fixed seed): what the particles' order costs;
-//                     curve_pile(n) numbers them along a Hilbert curve (numbering = "space")
+//                     curve_pile(n) numbers them along a Hilbert curve (numbering = "space");
+//                     shuffled_body_pile(n) is body_pile(n) with its bodies in a random
+//                     order (members together)
 //   --particle_order=auto|scene|place  SolverConfig::particle_order (default auto, as
 //                     tridem run: shuffled_pile from 10^5 is then numbered by place inside
 //                     the solver; scene measures the scene's random order)
@@ -69,6 +71,7 @@
 //                     step from the boxes themselves (same results: what keeping it gives)
 #include "backends/cuda/cuda_backend.hpp"
 #include "bench_flags.hpp"
+#include "core/place_numbered_solver.hpp"
 #include "core/space_filling_order.hpp"
 #include "tridem/setting_names.hpp"
 #include "tridem/solver.hpp"
@@ -84,6 +87,7 @@
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <string>
@@ -170,9 +174,9 @@ std::size_t g_contact_rows_per_copy = 0;
 tridem::ParticleOrder g_particle_order = tridem::ParticleOrder::Auto;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve };
-constexpr Pile kPiles[] = {Pile::Dense,   Pile::Bodies,   Pile::Bonded,
-                           Pile::Settled, Pile::Shuffled, Pile::Curve};
+enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve, ShuffledBodies };
+constexpr Pile kPiles[] = {Pile::Dense,    Pile::Bodies, Pile::Bonded,        Pile::Settled,
+                           Pile::Shuffled, Pile::Curve,  Pile::ShuffledBodies};
 const char* pile_name(Pile p) {
   switch (p) {
     case Pile::Dense: return "dense_pile";
@@ -181,6 +185,7 @@ const char* pile_name(Pile p) {
     case Pile::Settled: return "settled_pile";
     case Pile::Shuffled: return "shuffled_pile";
     case Pile::Curve: return "curve_pile";
+    case Pile::ShuffledBodies: return "shuffled_body_pile";
   }
   return "";
 }
@@ -215,6 +220,18 @@ tridem::Scene make_pile(Pile kind, std::size_t n) {
       tridem::Scene s = tridem::dense_pile(n);
       s.source = "curve_pile";
       tridem::number_by_place(s.triangles, s.triangles.size() - 3);
+      return s;
+    }
+    case Pile::ShuffledBodies: {
+      // body_pile with its bodies (of 10 triangles) in a random order, members together:
+      // generated polygons are numbered in their placement order so.
+      const tridem::Scene bodies = tridem::body_pile(n);
+      std::vector<std::int32_t> order(bodies.bodies.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::mt19937_64 random(12345);
+      std::shuffle(order.begin(), order.end() - 3, random);  // the walls stay last
+      tridem::Scene s = tridem::reordered_scene(bodies, tridem::body_order(bodies, order));
+      s.source = "shuffled_body_pile";
       return s;
     }
   }
@@ -417,7 +434,7 @@ int main(int argc, char** argv) {
                                    [&](Pile x) { return name == pile_name(x); });
       if (p == std::end(kPiles)) {
         std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
-                     "settled_pile, shuffled_pile, curve_pile; got '"
+                     "settled_pile, shuffled_pile, curve_pile, shuffled_body_pile; got '"
                   << name << "'\n";
         return 2;
       }

@@ -377,6 +377,18 @@ PlaceOrder place_order(const ParticleModel& model) {
   return out;
 }
 
+PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies) {
+  PlaceOrder order;
+  order.triangles.reserve(scene.triangles.size());
+  for (const std::int32_t b : bodies) {
+    const BodySpec& body = scene.bodies[static_cast<std::size_t>(b)];
+    for (std::size_t k = 0; k < body.count; ++k)
+      order.triangles.push_back(static_cast<std::int32_t>(body.first + k));
+  }
+  order.bodies = std::move(bodies);
+  return order;
+}
+
 Scene reordered_scene(const Scene& scene, const PlaceOrder& order) {
   Scene inner;
   inner.source = scene.source;

@@ -39,6 +39,10 @@ struct PlaceOrder {
 /// their programs, servos and walls.csv rows are the scene's.
 PlaceOrder place_order(const ParticleModel& model);
 
+/// The order of `scene`'s bodies `bodies` (every body id once), their members with each:
+/// a scene's bodies put in another order (benchmarks and tests shuffle them so).
+PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies);
+
 /// `scene` with its triangles and bodies (when it has some of several triangles) in
 /// `order`: what the solver steps (without its bonds).
 Scene reordered_scene(const Scene& scene, const PlaceOrder& order);

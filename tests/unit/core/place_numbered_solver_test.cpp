@@ -383,13 +383,7 @@ Scene shuffled_bodies(const Scene& s) {
   while (free < s.bodies.size() && s.bodies[free].motion == Motion::Free) ++free;
   std::mt19937_64 random(11);
   std::shuffle(bodies.begin(), bodies.begin() + static_cast<std::ptrdiff_t>(free), random);
-  PlaceOrder order;
-  order.bodies = bodies;
-  for (const std::int32_t b : bodies)
-    for (std::size_t k = 0; k < s.bodies[static_cast<std::size_t>(b)].count; ++k)
-      order.triangles.push_back(
-          static_cast<std::int32_t>(s.bodies[static_cast<std::size_t>(b)].first + k));
-  return reordered_scene(s, order);
+  return reordered_scene(s, body_order(s, std::move(bodies)));
 }
 
 TEST(PlaceNumbering, BodiesMoveAsWholesAndWallBodiesKeepTheirIds) {
@@ -507,6 +501,21 @@ TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   scene_order->advance(100);
   expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*continued), 1e-9,
                          scene_order->dt());
+}
+
+TEST(GpuPlaceNumbering, ABodyPileHasTheScenesContactsAndBodiesWithinRounding) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  const Scene s = shuffled_bodies(test::settling_body_pile());
+  auto scene_order = solver_for(s, ParticleOrder::Scene, Backend::Cuda);
+  auto by_place = solver_for(s, ParticleOrder::Place, Backend::Cuda);
+  scene_order->advance(200);
+  by_place->advance(200);
+  const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
+  expect_within_rounding(a, b, 1e-9, scene_order->dt());
+  EXPECT_EQ(a.member_body, b.member_body);
+  ASSERT_EQ(a.body_count(), b.body_count());
+  for (std::size_t k = 0; k < a.body_count(); ++k)
+    ASSERT_NEAR(a.body_x[k], b.body_x[k], 1e-12) << "body " << k;
 }
 
 }  // namespace TRIDEM_TEST_FILE
