@@ -105,7 +105,7 @@ struct SceneInfo {
   /// at random (core/numbering_note.hpp).
   double numbering_spread = 0;
   /// tridem run (--particle-order auto) numbers the particles by place inside the solver
-  /// (core/place_numbered_solver: a large scene without bonds numbered far apart).
+  /// (core/place_numbered_solver: a large scene numbered far apart).
   bool numbered_by_place = false;
 };
 

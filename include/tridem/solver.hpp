@@ -90,7 +90,7 @@ struct SolverConfig {
   /// time, so that a frame's GPU scratch is bounded whatever its contacts; 0 = the default,
   /// 2^22 rows (168 MB in float). The same contacts either way (tests use a small one).
   std::size_t gpu_contact_rows_per_copy = 0;
-  /// Auto numbers by place (bodies as wholes) a scene without bonds of at least 10^5
+  /// Auto numbers by place (bodies as wholes) a scene of at least 10^5
   /// particles whose consecutive ids lie over 20 grain sizes apart (core/numbering_note):
   /// such a run steps at up to twice the rate. Its results then differ from the scene
   /// order's in rounding (sums in another order); Scene keeps them bit for bit.

@@ -72,8 +72,8 @@ std::string numbering_note(const ParticleModel& model, bool by_place) {
       "grain sizes apart on average): a pair's two grains then lie far apart in memory, and "
       "a large run steps at up to half the rate of the same grains numbered by place "
       "(docs/performance.md, \"The particles' order\"); list them by place in the scene, or "
-      "give generated grains numbering = \"space\" (the solver itself numbers by place only "
-      "scenes without bonds, under --particle-order auto)\n",
+      "give generated grains numbering = \"space\", or leave the solver's --particle-order at "
+      "auto, which numbers them by place itself in a run of one rank\n",
       apart);
 }
 

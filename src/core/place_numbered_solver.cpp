@@ -211,6 +211,8 @@ void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
     to_scene_order(out.member_body, m.inner_of);
     for (std::int32_t& b : out.member_body) b = m.body_scene_of[static_cast<std::size_t>(b)];
   }
+  for (auto* ends : {&out.bond_a, &out.bond_b})
+    for (std::int32_t& i : *ends) i = m.scene_of[static_cast<std::size_t>(i)];
   if (with_contacts) m.rename_contacts(out.contacts);
 }
 
@@ -288,19 +290,17 @@ void PlaceNumberedSolver::load_state(const SolverState& in) {
 
 bool numbers_by_place(const Scene& scene, const ParticleModel& model, ParticleOrder order) {
   if (order == ParticleOrder::Scene) return false;
-  const char* kept = !scene.bonds.empty() ? "bonds"
-                     : model.size() > static_cast<std::size_t>(INT32_MAX)
-                         ? "more than 2^31 particles"
-                         : nullptr;
+  // The solver's pairs and bonds index particles by 32-bit ids.
+  const bool too_many = model.size() > static_cast<std::size_t>(INT32_MAX);
   if (order == ParticleOrder::Place) {
-    if (kept)
-      throw RunError(fmt::format(
-          "{}: particle order \"place\" renumbers scenes without bonds, and this one has {}: "
-          "give particle order \"scene\" or \"auto\"",
-          scene_label(scene), kept));
+    if (too_many)
+      throw RunError(fmt::format("{}: particle order \"place\" renumbers at most 2^31 "
+                                 "particles: give particle order \"scene\" or \"auto\"",
+                                 scene_label(scene)));
     return true;
   }
-  return !kept && model.size() >= kLargeNumbering && consecutive_id_distance(model) > kFarNumbering;
+  return !too_many && model.size() >= kLargeNumbering &&
+         consecutive_id_distance(model) > kFarNumbering;
 }
 
 namespace {
@@ -395,6 +395,17 @@ Scene reordered_scene(const Scene& scene, const PlaceOrder& order) {
     body.first = first;
     first += body.count;
     inner.bodies.push_back(body);
+  }
+  if (!scene.bonds.empty()) {
+    std::vector<std::size_t> inner_of(order.triangles.size());
+    for (std::size_t k = 0; k < order.triangles.size(); ++k)
+      inner_of[static_cast<std::size_t>(order.triangles[k])] = k;
+    inner.bonds.reserve(scene.bonds.size());
+    for (BondSpec bond : scene.bonds) {
+      bond.a = inner_of[bond.a];
+      bond.b = inner_of[bond.b];
+      inner.bonds.push_back(bond);
+    }
   }
   return inner;
 }

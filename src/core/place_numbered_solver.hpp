@@ -3,10 +3,11 @@
 // scene's ids. Grains numbered in no spatial order (poured, imported, mixed) put a pair's
 // two grains far apart in memory: a run of 10^6 then steps at about half the rate
 // (docs/performance.md, "The particles' order"). make_solver puts such a scene's free
-// particles or bodies along core/space_filling_order's curve for the backend's solver, and this
-// wrapper maps back whatever leaves it: snapshots (every per-particle array, the contacts'
-// i and j), saved and loaded states (so checkpoints are in the scene's ids, and either
-// numbering continues the other's), and the particles its messages name (shown_id).
+// particles or bodies along core/space_filling_order's curve for the backend's solver, and
+// this wrapper maps back whatever leaves it: snapshots (every per-particle and per-body
+// array, the contacts' and bonds' ends), saved and loaded states (so checkpoints are in the
+// scene's ids, and either numbering continues the other's), and the particles its
+// messages name (shown_id).
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
@@ -19,8 +20,7 @@ namespace tridem {
 
 /// Whether make_solver numbers `scene`'s particles by place under `order`: Place, or Auto
 /// for a scene of at least kLargeNumbering particles numbered far from where they lie
-/// (core/numbering_note). Scenes without bonds only: Place on one with bonds throws
-/// RunError saying why.
+/// (core/numbering_note). Place on a scene of over 2^31 particles throws RunError.
 bool numbers_by_place(const Scene& scene, const ParticleModel& model, ParticleOrder order);
 
 /// The order the solver keeps the particles in.
@@ -44,7 +44,8 @@ PlaceOrder place_order(const ParticleModel& model);
 PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies);
 
 /// `scene` with its triangles and bodies (when it has some of several triangles) in
-/// `order`: what the solver steps (without its bonds).
+/// `order`, its bonds between the same triangles in their order, each keeping its ends'
+/// roles (so a bond's a may now be above its b): the scene the solver steps.
 Scene reordered_scene(const Scene& scene, const PlaceOrder& order);
 
 /// `model` (of `scene`) with its particles and bodies in `order`, shown_id and

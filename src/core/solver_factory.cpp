@@ -111,14 +111,19 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
         requested == Backend::Auto ? " (picked by backend = auto)" : "",
         backend_name(Backend::OpenMP)));
   check_device(config.device, backend, requested);
-  auto make = [&](const ParticleModel& m) {
-    return scene.simulation.precision == Precision::Float
-               ? make_for_real<float>(scene, m, ts, config, backend)
-               : make_for_real<double>(scene, m, ts, config, backend);
+  auto make = [&](const Scene& s, const ParticleModel& m) {
+    return s.simulation.precision == Precision::Float
+               ? make_for_real<float>(s, m, ts, config, backend)
+               : make_for_real<double>(s, m, ts, config, backend);
   };
-  if (!numbers_by_place(scene, model, config.particle_order)) return make(model);
+  if (!numbers_by_place(scene, model, config.particle_order)) return make(scene, model);
   PlaceOrder order = place_order(model);
-  std::unique_ptr<Solver> inner = make(reordered_model(scene, model, order));
+  // The solver reads a scene's settings and bonds, not its triangles (its model has them):
+  // a scene without bonds serves as it is.
+  std::unique_ptr<Solver> inner =
+      scene.bonds.empty()
+          ? make(scene, reordered_model(scene, model, order))
+          : make(reordered_scene(scene, order), reordered_model(scene, model, order));
   return make_place_numbered_solver(std::move(inner), std::move(order), scene, model);
 }
 

@@ -42,7 +42,7 @@ TEST(NumberingNote, RowsAndACurvePassAndARandomNumberingIsTold) {
   const std::string note = numbering_note(random, false);
   EXPECT_NE(note.find("numbered far from where they lie"), std::string::npos) << note;
   EXPECT_NE(note.find("numbering = \"space\""), std::string::npos) << note;
-  EXPECT_NE(note.find("--particle-order auto"), std::string::npos) << note;  // how it would
+  EXPECT_NE(note.find("--particle-order at auto"), std::string::npos) << note;  // how it would
   // The solver numbering them by place says so, and not how to do it.
   const std::string told = numbering_note(random, true);
   EXPECT_NE(told.find("the solver keeps them numbered by place"), std::string::npos) << told;

@@ -354,7 +354,7 @@ TEST(PlaceNumbering, ADeepPairNamesTheScenesParticles) {
   }
 }
 
-TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesWithoutBonds) {
+TEST(PlaceNumbering, AutoNumbersLargeScenesNumberedFarApart) {
   const Scene rows = dense_pile(100000);
   const Scene random = shuffled(rows);
   EXPECT_FALSE(numbers_by_place(rows, build_particle_model(rows), ParticleOrder::Auto));
@@ -367,11 +367,64 @@ TEST(PlaceNumbering, AutoNumbersLargeFarNumberedScenesWithoutBonds) {
   const ParticleModel small_model = build_particle_model(small);
   EXPECT_FALSE(numbers_by_place(small, small_model, ParticleOrder::Auto));
   EXPECT_TRUE(numbers_by_place(small, small_model, ParticleOrder::Place));
-  // Bonds keep the scene's order: auto leaves them, place refuses them.
-  Scene bonded = random;
-  bonded.bonds.push_back(BondSpec{0, 1, {}, {}});
-  EXPECT_FALSE(numbers_by_place(bonded, random_model, ParticleOrder::Auto));
-  EXPECT_THROW(numbers_by_place(bonded, random_model, ParticleOrder::Place), RunError);
+}
+
+/// bonded_pile(n) with its grains in a random order: the bonds follow their triangles
+/// (each with its lower id first, in ascending order, as a scene lists them).
+Scene shuffled_bonded(std::size_t n) {
+  const Scene s = bonded_pile(n);
+  PlaceOrder order;
+  order.triangles.resize(s.triangles.size());
+  std::iota(order.triangles.begin(), order.triangles.end(), 0);
+  std::mt19937_64 random(13);
+  std::shuffle(order.triangles.begin(), order.triangles.end() - 3, random);  // walls last
+  Scene out = reordered_scene(s, order);
+  for (BondSpec& b : out.bonds)
+    if (b.a > b.b) std::swap(b.a, b.b);
+  std::sort(out.bonds.begin(), out.bonds.end(), [](const BondSpec& x, const BondSpec& y) {
+    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+  });
+  return out;
+}
+
+TEST(PlaceNumbering, ABondedPileHasTheScenesBondsAndContactsWithinRounding) {
+  Scene s = shuffled_bonded(2000);
+  s.materials[0].tensile_strength *= 1e-3;  // some bonds break within the run
+  s.materials[0].shear_strength *= 1e-3;
+  auto scene_order = solver_for(s, ParticleOrder::Scene);
+  auto by_place = solver_for(s, ParticleOrder::Place);
+  scene_order->advance(300);
+  by_place->advance(300);
+  const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
+  expect_within_rounding(a, b, 1e-9, scene_order->dt());
+  EXPECT_EQ(a.bond_a, b.bond_a);
+  EXPECT_EQ(a.bond_b, b.bond_b);
+  EXPECT_EQ(a.bond_broken, b.bond_broken);
+  ASSERT_EQ(a.bond_damage.size(), b.bond_damage.size());
+  double damage = 0;
+  for (std::size_t k = 0; k < a.bond_damage.size(); ++k) {
+    damage += a.bond_damage[k];
+    ASSERT_NEAR(a.bond_damage[k], b.bond_damage[k], 1e-9) << "bond " << k;
+    ASSERT_NEAR(a.bond_x0[k], b.bond_x0[k], 1e-12) << "bond " << k;
+    ASSERT_NEAR(a.bond_y1[k], b.bond_y1[k], 1e-12) << "bond " << k;
+  }
+  EXPECT_GT(damage, 0.0) << "the bonds must be loaded";
+
+  // The bonds' state continues in either order.
+  SolverState from_place;
+  by_place->save_state(from_place);
+  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
+  scene_from_place->load_state(from_place);
+  auto place_again = solver_for(s, ParticleOrder::Place);
+  place_again->load_state(from_place);
+  for (Solver* solver :
+       {scene_order.get(), by_place.get(), scene_from_place.get(), place_again.get()})
+    solver->advance(100);
+  const Snapshot reference = snapshot_of(*scene_order), continued = snapshot_of(*scene_from_place);
+  expect_within_rounding(reference, continued, 1e-9, scene_order->dt());
+  for (std::size_t k = 0; k < reference.bond_damage.size(); ++k)
+    ASSERT_NEAR(reference.bond_damage[k], continued.bond_damage[k], 1e-9) << "bond " << k;
+  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
 }
 
 /// The body pile with its free bodies in a random order (members in theirs; the walls,
