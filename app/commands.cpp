@@ -178,16 +178,16 @@ int info(const std::string& path) {
              info.numbering_distance, info.numbering_spread,
              info.triangles < kLargeNumbering
                  ? "a scene this small keeps its data in the caches whatever its order"
+             // Bodies' members lie together whatever the bodies' order: the spread alone
+             // would call a pile of polygons at random "by place".
+             : info.numbered_by_place
+                 ? "far apart: tridem run numbers them by place inside the solver, whose "
+                   "outputs keep these ids"
              : info.numbering_spread < 0.25 ? "by place"
              : info.numbering_spread > 0.5
-                 ? (info.numbered_by_place
-                        ? "at random: tridem run numbers them by place inside the solver, "
-                          "whose outputs keep these ids"
-                        : "at random: a large run steps at up to half the rate of the same "
-                          "grains numbered by place")
-             : info.numbered_by_place ? "partly by place: tridem run numbers them by place "
-                                        "inside the solver, whose outputs keep these ids"
-                                      : "partly by place");
+                 ? "at random: a large run steps at up to half the rate of the same grains "
+                   "numbered by place"
+                 : "partly by place");
   return 0;
 }
 

@@ -182,6 +182,20 @@ paste -d, pile_out/final.csv place_out/final.csv | tail -n +2 |
 expect_ok "$tridem" run pile.toml --quiet --particle-order scene --steps 5 --out scene_order_out
 grep -q "numbered by place" out.txt && fail "--particle-order scene: the solver renumbered"
 expect_error "particle-order" "$tridem" run pile.toml --particle-order nowhere
+# Generated polygons (bodies), 1.4x10^5 triangles in their placement order: tridem info
+# and tridem run (auto) say the solver numbers them by place, and it does.
+sed -e 's/^steps = 200/steps = 2/' -e 's/^every = 100/every = 0/' \
+    -e 's/^kind = "random"/kind = "polygons"\nsides = [5, 8]\npacking_fraction = 0.5\nseed = 3/' \
+    -e 's/^region = .*/region = [[-1, 0.001], [1, 1.2]]/' -e 's/^size = 0.05/size = [0.006, 0.009]/' \
+    -e 's/vertices = \[\[1, 0\], \[-1, 0\], \[0, -1\]\]/vertices = [[1.1, 0], [-1.1, 0], [0, -1]]/' \
+    pile.toml >polygons.toml
+expect_ok "$tridem" info polygons.toml
+grep -q "^numbering .*tridem run numbers them by place inside the solver" out.txt ||
+  fail "info does not say that run numbers the polygons by place: $(grep ^numbering out.txt)"
+expect_ok "$tridem" run polygons.toml --quiet --out polygons_out
+grep -q "particles numbered by place" out.txt || fail "auto did not number the polygons by place :: $(head -1 out.txt)"
+grep -q "^note: .*the solver keeps them numbered by place" out.txt || fail "run does not note the numbering"
+[ "$(head -1 polygons_out/bodies.csv)" = "id,x,y,theta,vx,vy,omega,mass,inertia,members" ] || fail "polygons: bodies.csv header"
 expect_error "folder 'missing/dir' does not exist" "$tridem" render pile_out -o missing/dir/x.png
 "$tridem" --version | grep -q "^tridem [0-9]" || fail "--version"
 "$tridem" --help | grep -q "run" || fail "--help"
