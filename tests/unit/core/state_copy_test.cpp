@@ -88,6 +88,20 @@ TEST(StateCopy, SnapshotFallbackIsTheSnapshotToo) {
   expect_copy_of_this_step(*solver, *copy, 2);
 }
 
+// A solver numbering the particles by place (core/place_numbered_solver) gives the live
+// view the state in the scene's ids, as its snapshots.
+TEST(StateCopy, OfASolverNumberingByPlaceIsItsSnapshot) {
+  Scene scene = test::jostling_pile(6, 4);
+  scene.simulation.backend = Backend::Cpu;
+  SolverConfig config;
+  config.particle_order = ParticleOrder::Place;
+  auto solver = make_solver(scene, config);
+  ASSERT_NE(solver->description().find("numbered by place"), std::string::npos);
+  const std::unique_ptr<StateCopy> copy = solver->make_state_copy();
+  solver->advance(30);
+  expect_copy_of_this_step(*solver, *copy, 4);
+}
+
 }  // namespace TRIDEM_TEST_FILE
 }  // namespace
 }  // namespace tridem
