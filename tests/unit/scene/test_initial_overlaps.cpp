@@ -7,6 +7,7 @@
 #include "tridem/scene_io.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <chrono>
 #include <string>
@@ -107,6 +108,35 @@ TEST(InitialOverlaps, EdgeCrossingsWithNoVertexInsideAreFound) {
   EXPECT_EQ(o->b, 1u);
   // Along an edge normal, the other triangle must move by its whole height inside it.
   EXPECT_NEAR(o->depth, 1.0, 1e-4);
+}
+
+// Every overlap, found on the threads, comes in one order whatever their number: a grid of
+// grains each overlapping its right and upper neighbours, against one thread.
+TEST(InitialOverlaps, TheListOfEveryOverlapIsTheSameOnAnyNumberOfThreads) {
+  std::vector<TriangleSpec> ts;
+  for (int row = 0; row < 60; ++row)
+    for (int column = 0; column < 60; ++column) {
+      const double x = 0.09 * column + 0.01 * (row % 3), y = 0.08 * row;
+      TriangleSpec t;
+      t.vertices = {Vec2d{x, y}, Vec2d{x + 0.1, y}, Vec2d{x + 0.05, y + 0.0866}};
+      ts.push_back(t);
+    }
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const std::vector<InitialOverlap> one = find_initial_overlaps(ts);
+  ASSERT_GT(one.size(), 3000u);
+  for (int threads : {2, 3, 4}) {
+    omp_set_num_threads(threads);
+    const std::vector<InitialOverlap> many = find_initial_overlaps(ts);
+    ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+    for (std::size_t k = 0; k < one.size(); ++k) {
+      ASSERT_EQ(many[k].a, one[k].a) << k;
+      ASSERT_EQ(many[k].b, one[k].b) << k;
+      ASSERT_EQ(many[k].depth, one[k].depth) << k;
+      ASSERT_EQ(many[k].push.x, one[k].push.x) << k;
+    }
+  }
+  omp_set_num_threads(saved);
 }
 
 TEST(InitialOverlaps, GeneratedScenesDoNotOverlap) {
