@@ -10,7 +10,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <climits>
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <tuple>
 #include <utility>
@@ -222,11 +223,11 @@ void PlaceNumberedSolver::rename_pairs(const SolverState& from, SolverState& to,
     std::int32_t emitter, partner;
     std::array<double, kSlipsPerPair> slip;
   };
+  const std::vector<std::int32_t>& scene_of = numbering_->scene_of;
   std::vector<Row> rows(from.pairs());
   for (std::size_t k = 0; k < rows.size(); ++k) {
     Row r{id[static_cast<std::size_t>(from.pair_emitter[k])],
           id[static_cast<std::size_t>(from.pair_partner[k])], from.pair_slip[k]};
-    const std::vector<std::int32_t>& scene_of = numbering_->scene_of;
     const std::int32_t a = scene_ids ? r.emitter : scene_of[static_cast<std::size_t>(r.emitter)];
     const std::int32_t b = scene_ids ? r.partner : scene_of[static_cast<std::size_t>(r.partner)];
     if (!numbering_->emits(r.emitter, r.partner, a, b)) {
