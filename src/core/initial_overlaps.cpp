@@ -183,6 +183,44 @@ std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSp
   return found.front();
 }
 
+std::optional<InitialOverlap> first_initial_overlap_where(
+    const std::vector<TriangleSpec>& triangles, const PeriodicCell& cell,
+    const std::function<bool(std::size_t a, std::size_t b)>& counts) {
+  if (triangles.empty()) return std::nullopt;
+  const Layout layout(triangles, cell);
+  CandidatePairs<double> grid(layout.longest, layout.motion);
+  PairList pairs;
+  layout.find(grid, pairs);
+  const auto n = static_cast<std::int64_t>(layout.tri.size());
+  auto before = [](const InitialOverlap& x, const std::optional<InitialOverlap>& y) {
+    return !y || (x.a != y->a ? x.a < y->a : x.b < y->b);
+  };
+  // Each thread's first, then the first of those: the same pair on any number of threads.
+  std::vector<std::optional<InitialOverlap>> first(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel
+  {
+    std::optional<InitialOverlap>& mine = first[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t e = 0; e < n; ++e)
+      for (std::int64_t s = pairs.offset[e]; s < pairs.offset[e + 1]; ++s) {
+        const std::int32_t j = pairs.partner[s];
+        const auto ue = static_cast<std::size_t>(e), uj = static_cast<std::size_t>(j);
+        if (!counts(std::min(ue, uj), std::max(ue, uj))) continue;
+        InitialOverlap o{ue, uj, 0, {}};
+        if (!overlapping(layout, e, j, o.depth, o.push)) continue;
+        if (o.a > o.b) {
+          std::swap(o.a, o.b);
+          o.push = -o.push;
+        }
+        if (before(o, mine)) mine = o;
+      }
+  }
+  std::optional<InitialOverlap> out;
+  for (const std::optional<InitialOverlap>& o : first)
+    if (o && before(*o, out)) out = o;
+  return out;
+}
+
 namespace {
 
 /// The rigid units relax_initial_overlaps moves: a body of several triangles, or a lone

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,13 @@ std::vector<InitialOverlap> find_initial_overlaps(const std::vector<TriangleSpec
 /// The first overlapping pair (lowest a, then b), or none.
 std::optional<InitialOverlap> first_initial_overlap(const std::vector<TriangleSpec>& triangles,
                                                     const PeriodicCell& cell = {});
+
+/// The first overlapping pair (lowest a, then b) among those `counts(a, b)` accepts (a < b),
+/// or none. A pair it refuses is not tested at all: a scene that keeps the overlaps of its
+/// imported grains (some 6x10^6 pairs at 10^6 triangles) tests only the others.
+std::optional<InitialOverlap> first_initial_overlap_where(
+    const std::vector<TriangleSpec>& triangles, const PeriodicCell& cell,
+    const std::function<bool(std::size_t a, std::size_t b)>& counts);
 
 /// What relax_initial_overlaps did, for the run's log.
 struct RelaxReport {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -112,7 +113,7 @@ TEST(InitialOverlaps, EdgeCrossingsWithNoVertexInsideAreFound) {
 
 // Every overlap, found on the threads, comes in one order whatever their number: a grid of
 // grains each overlapping its right and upper neighbours, against one thread.
-TEST(InitialOverlaps, TheListOfEveryOverlapIsTheSameOnAnyNumberOfThreads) {
+TEST(InitialOverlaps, TheOverlapsFoundOnThreadsAreTheSameOnAnyNumberOfThreads) {
   std::vector<TriangleSpec> ts;
   for (int row = 0; row < 60; ++row)
     for (int column = 0; column < 60; ++column) {
@@ -137,6 +138,23 @@ TEST(InitialOverlaps, TheListOfEveryOverlapIsTheSameOnAnyNumberOfThreads) {
     }
   }
   omp_set_num_threads(saved);
+
+  // The first pair a filter accepts is the first such pair of the whole list, on any
+  // number of threads, and the pairs it refuses are left out.
+  auto counts = [](std::size_t a, std::size_t b) { return a >= 1000 && (a + b) % 7 == 3; };
+  const auto want = std::find_if(one.begin(), one.end(),
+                                 [&](const InitialOverlap& o) { return counts(o.a, o.b); });
+  ASSERT_NE(want, one.end());
+  for (int threads : {1, 2, 4}) {
+    omp_set_num_threads(threads);
+    const std::optional<InitialOverlap> first = first_initial_overlap_where(ts, {}, counts);
+    ASSERT_TRUE(first) << threads << " threads";
+    EXPECT_EQ(first->a, want->a);
+    EXPECT_EQ(first->b, want->b);
+    EXPECT_EQ(first->depth, want->depth);
+  }
+  omp_set_num_threads(saved);
+  EXPECT_FALSE(first_initial_overlap_where(ts, {}, [](std::size_t, std::size_t) { return false; }));
 }
 
 TEST(InitialOverlaps, GeneratedScenesDoNotOverlap) {
