@@ -448,15 +448,6 @@ int main(int argc, char** argv) {
   if (const std::string text = take_flag(argc, argv, "contact_rows_per_copy"); !text.empty())
     g_contact_rows_per_copy =
         static_cast<std::size_t>(parse_number("tridem_bench", "contact_rows_per_copy", text));
-  if (const std::string text = take_flag(argc, argv, "particle_order"); !text.empty()) {
-    const auto order = tridem::value_in(tridem::kParticleOrderNames, text);
-    if (!order) {
-      std::cerr << "tridem_bench: --particle_order wants one of "
-                << tridem::spellings_of(tridem::kParticleOrderNames) << "; got '" << text << "'\n";
-      return 2;
-    }
-    g_particle_order = *order;
-  }
   if (const std::string text = take_flag(argc, argv, "skin"); !text.empty())
     g_skin = tridem::bench::parse_number_in("tridem_bench", "skin", text, 0, 1,
                                             "a number in [0, 1] (a fraction of the grid cell)");
@@ -466,7 +457,9 @@ int main(int argc, char** argv) {
   if (!take_choice("tridem_bench", argc, argv, "method", tridem::kMethodNames, g_method.method) ||
       !take_choice("tridem_bench", argc, argv, "contact_test", tridem::kContactTestNames,
                    g_method.contact_test) ||
-      !take_choice("tridem_bench", argc, argv, "layout", tridem::kLayoutNames, d.layout))
+      !take_choice("tridem_bench", argc, argv, "layout", tridem::kLayoutNames, d.layout) ||
+      !take_choice("tridem_bench", argc, argv, "particle_order", tridem::kParticleOrderNames,
+                   g_particle_order))
     return 2;
   g_method.bbox_prefilter = prefilter_flag != "0";
   g_stage_timing = take_flag(argc, argv, "stage_timing") != "0";
