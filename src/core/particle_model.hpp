@@ -12,6 +12,21 @@
 
 namespace tridem {
 
+/// The ids by which a solver's messages (a blow-up, a too deep pair) name its particles and
+/// bodies; empty: their index. A solver numbering the particles by place
+/// (core/place_numbered_solver) runs on the scene's particles in another order and names
+/// them by their scene ids.
+struct ShownIds {
+  std::vector<std::int64_t> particle, body;
+
+  std::int64_t of_particle(std::int64_t i) const {
+    return particle.empty() ? i : particle[static_cast<std::size_t>(i)];
+  }
+  std::int64_t of_body(std::int64_t b) const {
+    return body.empty() ? b : body[static_cast<std::size_t>(b)];
+  }
+};
+
 struct ParticleModel {
   std::vector<std::array<Vec2d, 3>> offsets;  ///< body-frame vertices about the centroid, CCW
   std::vector<Vec2d> centroid;
@@ -31,18 +46,11 @@ struct ParticleModel {
   /// Bodies of several triangles; empty without them. A member's motion, velocity and
   /// angular velocity above are then its body's rigid motion at its centroid.
   BodyModel bodies;
-  /// The id by which messages name each particle; empty: its index. A solver numbering the
-  /// particles by place (core/place_numbered_solver) runs on the scene's particles in
-  /// another order, and its blow-up and deep-pair messages name them by their scene ids.
-  std::vector<std::int64_t> shown_id;
-  /// As shown_id, for the bodies of several triangles (empty: a body's index).
-  std::vector<std::int64_t> shown_body_id;
+  /// The ids by which messages name the particles and bodies (ShownIds).
+  ShownIds shown_ids;
 
   std::size_t size() const { return centroid.size(); }
-  std::int64_t shown(std::int64_t i) const {
-    return shown_id.empty() ? i : shown_id[static_cast<std::size_t>(i)];
-  }
-  /// f(a, b) for each per-particle array a above (shown_id aside) and the same array b of
+  /// f(a, b) for each per-particle array a above (shown_ids aside) and the same array b of
   /// `other` (a ParticleModel, const or not): a model's particles put in another order
   /// (core/place_numbered_solver) move in every one of them.
   template <class Other, class F>

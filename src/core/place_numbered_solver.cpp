@@ -420,15 +420,15 @@ ParticleModel reordered_model(const Scene& scene, const ParticleModel& model,
     out.programs = model.programs;
     out.program_knots = model.program_knots;
     out.bodies = model.bodies;
-    out.shown_id.assign(order.triangles.begin(), order.triangles.end());
+    out.shown_ids.particle.assign(order.triangles.begin(), order.triangles.end());
     return out;
   }
   // Bodies: the model of the scene in the new order, built as any scene's (a body's mass,
   // inertia and members' offsets sum its members, in their own order: the same bits).
   const Scene inner = reordered_scene(scene, order);
   ParticleModel out = build_particle_model(inner);
-  out.shown_id.assign(order.triangles.begin(), order.triangles.end());
-  out.shown_body_id.assign(order.bodies.begin(), order.bodies.end());
+  out.shown_ids.particle.assign(order.triangles.begin(), order.triangles.end());
+  out.shown_ids.body.assign(order.bodies.begin(), order.bodies.end());
   return out;
 }
 

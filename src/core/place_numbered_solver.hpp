@@ -7,7 +7,7 @@
 // this wrapper maps back whatever leaves it: snapshots (every per-particle and per-body
 // array, the contacts' and bonds' ends), saved and loaded states (so checkpoints are in the
 // scene's ids, and either numbering continues the other's), and the particles its
-// messages name (shown_id).
+// messages name (ParticleModel::shown_ids).
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
@@ -48,8 +48,8 @@ PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies);
 /// roles (so a bond's a may now be above its b): the scene the solver steps.
 Scene reordered_scene(const Scene& scene, const PlaceOrder& order);
 
-/// `model` (of `scene`) with its particles and bodies in `order`, shown_id and
-/// shown_body_id naming each by its scene id.
+/// `model` (of `scene`) with its particles and bodies in `order`, its shown_ids naming
+/// each by its scene id.
 ParticleModel reordered_model(const Scene& scene, const ParticleModel& model,
                               const PlaceOrder& order);
 

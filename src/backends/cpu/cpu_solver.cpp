@@ -61,8 +61,7 @@ CpuSolver<Real>::CpuSolver(const Scene& scene, const ParticleModel& model, const
   if (periodic_ && cell_.shear_rate != 0) image_power_.assign(n_, 0.0);
   programs_ = model.programs;
   program_knots_ = model.program_knots;
-  shown_id_ = model.shown_id;
-  shown_body_id_ = model.shown_body_id;
+  shown_ids_ = model.shown_ids;
   if (std::any_of(programs_.begin(), programs_.end(), physics::follows_length))
     servo_targets_.assign(programs_.size(), 0.0);
   if (!model.bodies.empty()) {
@@ -578,12 +577,9 @@ void CpuSolver<Real>::report_penetration(std::int32_t emitter) const {
   std::int64_t s = pairs_.offset[emitter];
   while (!(result_[s].depth > penetration_limit_)) ++s;
   const std::int32_t j = pairs_.partner[s];
-  const DeepPair pair{shown_id(emitter),
-                      shown_id(j),
-                      static_cast<double>(x_[emitter]),
-                      static_cast<double>(y_[emitter]),
-                      static_cast<double>(x_[j]),
-                      static_cast<double>(y_[j]),
+  const DeepPair pair{shown_ids_.of_particle(emitter),      shown_ids_.of_particle(j),
+                      static_cast<double>(x_[emitter]),     static_cast<double>(y_[emitter]),
+                      static_cast<double>(x_[j]),           static_cast<double>(y_[j]),
                       static_cast<double>(result_[s].depth)};
   throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(penetration_limit_),
                                      static_cast<double>(dt_), limit_));
@@ -641,8 +637,8 @@ void CpuSolver<Real>::check_runaway() const {
     team_single([&] {
       const auto i = static_cast<std::size_t>(bad);
       const physics::Pose<double> p = advanced_pose(i);
-      throw RunError(
-          runaway_message(step_ + 1, shown_id(bad), x_[i], y_[i], norm(p.v), dt_, limit_));
+      throw RunError(runaway_message(step_ + 1, shown_ids_.of_particle(bad), x_[i], y_[i],
+                                     norm(p.v), dt_, limit_));
     });
 }
 
@@ -764,9 +760,9 @@ void CpuSolver<Real>::check_body_runaway() const {
     team_single([&] {
       const auto b = static_cast<std::size_t>(bad);
       const physics::Pose<double> p = advanced_body_pose(b);
-      throw RunError("body id " + std::to_string(shown_body_id(bad)) + ": " +
-                     runaway_message(step_ + 1, shown_id(body_first_[b]), body_x_[b], body_y_[b],
-                                     norm(p.v), dt_, limit_));
+      throw RunError("body id " + std::to_string(shown_ids_.of_body(bad)) + ": " +
+                     runaway_message(step_ + 1, shown_ids_.of_particle(body_first_[b]), body_x_[b],
+                                     body_y_[b], norm(p.v), dt_, limit_));
     });
 }
 

@@ -199,15 +199,7 @@ class CpuSolver final : public Solver {
   bool walls_move_ = false;  ///< some fixed or prescribed particle has a velocity
   // The walls' motion programs (physics/motion_program.hpp), as the model resolved them.
   std::vector<MotionProgram> programs_;
-  /// ParticleModel::shown_id: the ids the messages name.
-  std::vector<std::int64_t> shown_id_;
-  std::vector<std::int64_t> shown_body_id_;  ///< ParticleModel::shown_body_id
-  std::int64_t shown_id(std::int64_t i) const {
-    return shown_id_.empty() ? i : shown_id_[static_cast<std::size_t>(i)];
-  }
-  std::int64_t shown_body_id(std::int64_t b) const {
-    return shown_body_id_.empty() ? b : shown_body_id_[static_cast<std::size_t>(b)];
-  }
+  ShownIds shown_ids_;  ///< ParticleModel::shown_ids: the ids the messages name
   std::vector<ProgramKnot> program_knots_;
   // The step's target force of each program, when some servo follows a length
   // (length_between; empty without): filled by update_servo_targets in the Gather stage.

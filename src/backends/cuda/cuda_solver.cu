@@ -54,8 +54,7 @@ CudaSolver<Real>::CudaSolver(const Scene& scene, const ParticleModel& model, con
     : n_(model.size()),
       method_(scene.simulation.method),
       host_model_(model),
-      shown_id_(model.shown_id),
-      shown_body_id_(model.shown_body_id),
+      shown_ids_(model.shown_ids),
       run_ahead_(config.gpu_run_ahead),
       contact_rows_per_copy_(config.gpu_contact_rows_per_copy > 0 ? config.gpu_contact_rows_per_copy
                                                                   : kContactRowsPerCopy) {
@@ -657,7 +656,8 @@ void CudaSolver<Real>::report_runaway(int i) const {
       physics::Pose<double>{{x, y}, at(d_.theta), {at(d_.vx), at(d_.vy)}, at(d_.w)}, true,
       Vec2<Real>{at(d_.fx), at(d_.fy)}, at(d_.torque), at(d_.inv_mass), at(d_.inv_inertia),
       params_.gravity, params_.local_damping, params_.dt);
-  throw RunError(runaway_message(step_ + 1, shown_id(i), x, y, norm(pose.v), params_.dt, limit_));
+  throw RunError(runaway_message(step_ + 1, shown_ids_.of_particle(i), x, y, norm(pose.v),
+                                 params_.dt, limit_));
 }
 
 template <class Real>
@@ -677,9 +677,9 @@ void CudaSolver<Real>::report_body_runaway(int k) const {
       true, Vec2d{at(bodies_.body_fx), at(bodies_.body_fy)}, at(bodies_.body_torque),
       at(bodies_.body_inv_mass), at(bodies_.body_inv_inertia), params_.gravity,
       params_.local_damping, params_.dt);
-  throw RunError("body id " + std::to_string(shown_body_id(k)) + ": " +
-                 runaway_message(step_ + 1, shown_id(at(bodies_.body_first)), x, y, norm(pose.v),
-                                 params_.dt, limit_));
+  throw RunError("body id " + std::to_string(shown_ids_.of_body(k)) + ": " +
+                 runaway_message(step_ + 1, shown_ids_.of_particle(at(bodies_.body_first)), x, y,
+                                 norm(pose.v), params_.dt, limit_));
 }
 
 template <class Real>
@@ -700,7 +700,8 @@ void CudaSolver<Real>::report_penetration(int emitter) const {
   };
   const Vec2d a = position(emitter), b = position(j);
   const DeepPair pair{
-      shown_id(emitter), shown_id(j), a.x, a.y, b.x, b.y, static_cast<double>(result[s].depth)};
+      shown_ids_.of_particle(emitter),     shown_ids_.of_particle(j), a.x, a.y, b.x, b.y,
+      static_cast<double>(result[s].depth)};
   throw RunError(penetration_message(step_ + 1, pair, static_cast<double>(params_.max_depth),
                                      static_cast<double>(params_.dt), limit_));
 }

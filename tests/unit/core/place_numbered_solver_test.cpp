@@ -126,7 +126,7 @@ TEST(PlaceNumbering, TheOrderMovesFreeParticlesOnlyAndPutsNeighboursTogether) {
   }
   EXPECT_LT(apart_inner, 0.25 * apart_scene);
   for (std::size_t k = 0; k < model.size(); ++k) {
-    EXPECT_EQ(inner.shown(static_cast<std::int64_t>(k)), order[k]);
+    EXPECT_EQ(inner.shown_ids.of_particle(static_cast<std::int64_t>(k)), order[k]);
     EXPECT_EQ(inner.mass[k], model.mass[static_cast<std::size_t>(order[k])]);
   }
 }
@@ -268,6 +268,39 @@ TEST(PlaceNumbering, EveryMethodHasTheScenesContactsWithinRounding) {
   }
 }
 
+/// The snapshots of a run continued in either order.
+struct Continued {
+  Snapshot reference;         ///< the scene order's run, not interrupted
+  Snapshot place_from_scene;  ///< the scene order's state, continued numbered by place
+  Snapshot scene_from_place;  ///< the state numbered by place, continued in the scene's order
+};
+
+/// The states of `scene_order` and `by_place` (solvers of `s` at one step) each continued
+/// `steps` steps by a solver of the other order, and by_place's by one of its own: the
+/// crossings within rounding of the uninterrupted scene order's run, the same order's
+/// bit for bit the uninterrupted one's.
+Continued expect_states_continue_in_either_order(const Scene& s, Solver& scene_order,
+                                                 Solver& by_place, std::int64_t steps) {
+  SolverState from_scene, from_place;
+  scene_order.save_state(from_scene);
+  by_place.save_state(from_place);
+  auto place_from_scene = solver_for(s, ParticleOrder::Place);
+  place_from_scene->load_state(from_scene);
+  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
+  scene_from_place->load_state(from_place);
+  auto place_again = solver_for(s, ParticleOrder::Place);
+  place_again->load_state(from_place);
+  for (Solver* solver :
+       {&scene_order, &by_place, place_from_scene.get(), scene_from_place.get(), place_again.get()})
+    solver->advance(steps);
+  Continued out{snapshot_of(scene_order), snapshot_of(*place_from_scene),
+                snapshot_of(*scene_from_place)};
+  expect_within_rounding(out.reference, out.place_from_scene, 1e-9, scene_order.dt());
+  expect_within_rounding(out.reference, out.scene_from_place, 1e-9, scene_order.dt());
+  test::expect_identical(snapshot_of(by_place), snapshot_of(*place_again));
+  return out;
+}
+
 /// The contact history as a map from (emitter, partner) to its slip, leaving out the zero
 /// ones: a state lists a history of −0 (a bit pattern a restart keeps), and a pair whose
 /// roles swap inside the solver has +0 for it, which needs no entry.
@@ -304,23 +337,7 @@ TEST(PlaceNumbering, SavedStatesAreInTheScenesIdsAndContinueInEitherOrder) {
   }
 
   // Each order's state continues the other's, within rounding of the uninterrupted runs.
-  SolverState from_scene, from_place;
-  scene_order->save_state(from_scene);
-  by_place->save_state(from_place);
-  auto place_from_scene = solver_for(s, ParticleOrder::Place);
-  place_from_scene->load_state(from_scene);
-  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
-  scene_from_place->load_state(from_place);
-  // A state saved and loaded in the same order continues it to the bit.
-  auto place_again = solver_for(s, ParticleOrder::Place);
-  place_again->load_state(from_place);
-  for (Solver* solver : {scene_order.get(), by_place.get(), place_from_scene.get(),
-                         scene_from_place.get(), place_again.get()})
-    solver->advance(150);
-  const Snapshot reference = snapshot_of(*scene_order);
-  expect_within_rounding(reference, snapshot_of(*place_from_scene), 1e-9, scene_order->dt());
-  expect_within_rounding(reference, snapshot_of(*scene_from_place), 1e-9, scene_order->dt());
-  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
+  expect_states_continue_in_either_order(s, *scene_order, *by_place, 150);
 }
 
 TEST(PlaceNumbering, ALoadedStateIsCheckedInTheScenesIds) {
@@ -444,20 +461,11 @@ TEST(PlaceNumbering, ABondedPileHasTheScenesBondsAndContactsWithinRounding) {
   EXPECT_GT(damage, 0.0) << "the bonds must be loaded";
 
   // The bonds' state continues in either order.
-  SolverState from_place;
-  by_place->save_state(from_place);
-  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
-  scene_from_place->load_state(from_place);
-  auto place_again = solver_for(s, ParticleOrder::Place);
-  place_again->load_state(from_place);
-  for (Solver* solver :
-       {scene_order.get(), by_place.get(), scene_from_place.get(), place_again.get()})
-    solver->advance(100);
-  const Snapshot reference = snapshot_of(*scene_order), continued = snapshot_of(*scene_from_place);
-  expect_within_rounding(reference, continued, 1e-9, scene_order->dt());
-  for (std::size_t k = 0; k < reference.bond_damage.size(); ++k)
-    ASSERT_NEAR(reference.bond_damage[k], continued.bond_damage[k], 1e-9) << "bond " << k;
-  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
+  const Continued c = expect_states_continue_in_either_order(s, *scene_order, *by_place, 100);
+  for (std::size_t k = 0; k < c.reference.bond_damage.size(); ++k) {
+    ASSERT_NEAR(c.reference.bond_damage[k], c.scene_from_place.bond_damage[k], 1e-9) << k;
+    ASSERT_NEAR(c.reference.bond_damage[k], c.place_from_scene.bond_damage[k], 1e-9) << k;
+  }
 }
 
 /// The body pile with its free bodies in a random order (members in theirs; the walls,
@@ -522,23 +530,10 @@ TEST(PlaceNumbering, ABodyPileHasTheScenesContactsAndBodiesWithinRounding) {
   }
 
   // States in the scene's ids continue in either order.
-  SolverState from_place, from_scene;
+  SolverState from_place;
   by_place->save_state(from_place);
-  scene_order->save_state(from_scene);
   EXPECT_EQ(from_place.body_x.size(), s.bodies.size());
-  auto scene_from_place = solver_for(s, ParticleOrder::Scene);
-  scene_from_place->load_state(from_place);
-  auto place_from_scene = solver_for(s, ParticleOrder::Place);
-  place_from_scene->load_state(from_scene);
-  auto place_again = solver_for(s, ParticleOrder::Place);
-  place_again->load_state(from_place);
-  for (Solver* solver : {scene_order.get(), by_place.get(), scene_from_place.get(),
-                         place_from_scene.get(), place_again.get()})
-    solver->advance(100);
-  const Snapshot reference = snapshot_of(*scene_order);
-  expect_within_rounding(reference, snapshot_of(*scene_from_place), 1e-9, scene_order->dt());
-  expect_within_rounding(reference, snapshot_of(*place_from_scene), 1e-9, scene_order->dt());
-  test::expect_identical(snapshot_of(*by_place), snapshot_of(*place_again));
+  expect_states_continue_in_either_order(s, *scene_order, *by_place, 100);
 }
 
 TEST(PlaceNumbering, ABodysBlowUpNamesTheScenesBody) {
