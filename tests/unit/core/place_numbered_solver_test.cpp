@@ -54,6 +54,18 @@ std::unique_ptr<Solver> solver_for(Scene s, ParticleOrder order, Backend backend
   return make_solver(s, config);
 }
 
+/// A solver of `s` in the scene's order and one numbering by place, both advanced `steps`.
+struct BothOrders {
+  std::unique_ptr<Solver> scene_order, by_place;
+};
+BothOrders both_orders(const Scene& s, std::int64_t steps, Backend backend = Backend::Cpu) {
+  BothOrders out{solver_for(s, ParticleOrder::Scene, backend),
+                 solver_for(s, ParticleOrder::Place, backend)};
+  out.scene_order->advance(steps);
+  out.by_place->advance(steps);
+  return out;
+}
+
 Snapshot snapshot_of(const Solver& solver) {
   Snapshot snap;
   solver.snapshot(snap, true);
@@ -153,10 +165,7 @@ TEST(PlaceNumbering, WithoutContactsEveryParticleMovesBitForBitAsInTheScenesOrde
 
 TEST(PlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   const Scene s = shuffled(test::jostling_pile(20, 12));
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(600);
-  by_place->advance(600);
+  auto [scene_order, by_place] = both_orders(s, 600);
   const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
   EXPECT_GT(a.contacts.size(), 40u);
   // Between two grains the lower id is i, as in the scene's order (the walls, larger than
@@ -226,10 +235,7 @@ TEST(PlaceNumbering, AFramesContactCopyGivesTheSnapshotsContacts) {
 
 TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
   const Scene s = shuffled(test::periodic_pile(12, 8));
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(300);
-  by_place->advance(300);
+  auto [scene_order, by_place] = both_orders(s, 300);
   const Snapshot a = snapshot_of(*scene_order);
   const auto through = std::count_if(a.contacts.begin(), a.contacts.end(),
                                      [](const ContactRecord& c) { return c.image_dx != 0; });
@@ -240,10 +246,7 @@ TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
 // Lees-Edwards images: a sheared gas whose grains meet through the moving boundary.
 TEST(PlaceNumbering, LeesEdwardsContactsKeepTheirImagesSeenFromTheScenesEmitter) {
   const Scene s = shuffled(test::dense_sheared_gas(10));
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(400);
-  by_place->advance(400);
+  auto [scene_order, by_place] = both_orders(s, 400);
   const Snapshot a = snapshot_of(*scene_order);
   const auto through = std::count_if(a.contacts.begin(), a.contacts.end(),
                                      [](const ContactRecord& c) { return c.image_dy != 0; });
@@ -258,10 +261,7 @@ TEST(PlaceNumbering, EveryMethodHasTheScenesContactsWithinRounding) {
     Scene s = test::with_decomposition(shuffled(test::jostling_pile(12, 8)),
                                        DecompositionLayout::Strips, 64);
     s.simulation.method = method;
-    auto scene_order = solver_for(s, ParticleOrder::Scene);
-    auto by_place = solver_for(s, ParticleOrder::Place);
-    scene_order->advance(500);
-    by_place->advance(500);
+    auto [scene_order, by_place] = both_orders(s, 500);
     SCOPED_TRACE(scene_order->description());
     expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*by_place), 1e-9,
                            scene_order->dt());
@@ -316,10 +316,7 @@ std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2>> history(c
 
 TEST(PlaceNumbering, SavedStatesAreInTheScenesIdsAndContinueInEitherOrder) {
   const Scene s = shuffled(test::jostling_pile(20, 12));
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(500);
-  by_place->advance(500);
+  auto [scene_order, by_place] = both_orders(s, 500);
 
   // The same pairs with the same history, signs included: a pair whose roles swapped
   // inside the solver is shown from the scene's emitter.
@@ -441,10 +438,7 @@ TEST(PlaceNumbering, ABondedPileHasTheScenesBondsAndContactsWithinRounding) {
   Scene s = shuffled_bonded(2000);
   s.materials[0].tensile_strength *= 1e-3;  // some bonds break within the run
   s.materials[0].shear_strength *= 1e-3;
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(300);
-  by_place->advance(300);
+  auto [scene_order, by_place] = both_orders(s, 300);
   const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
   expect_within_rounding(a, b, 1e-9, scene_order->dt());
   EXPECT_EQ(a.bond_a, b.bond_a);
@@ -513,10 +507,7 @@ TEST(PlaceNumbering, BodiesMoveAsWholesAndWallBodiesKeepTheirIds) {
 
 TEST(PlaceNumbering, ABodyPileHasTheScenesContactsAndBodiesWithinRounding) {
   const Scene s = shuffled_bodies(test::settling_body_pile());
-  auto scene_order = solver_for(s, ParticleOrder::Scene);
-  auto by_place = solver_for(s, ParticleOrder::Place);
-  scene_order->advance(200);
-  by_place->advance(200);
+  auto [scene_order, by_place] = both_orders(s, 200);
   const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
   expect_within_rounding(a, b, 1e-9, scene_order->dt());
   ASSERT_EQ(a.body_count(), b.body_count());
@@ -559,10 +550,7 @@ TEST(PlaceNumbering, ABodysBlowUpNamesTheScenesBody) {
 TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
   TRIDEM_SKIP_WITHOUT_GPU();
   const Scene s = shuffled(test::jostling_pile(20, 12));
-  auto scene_order = solver_for(s, ParticleOrder::Scene, Backend::Cuda);
-  auto by_place = solver_for(s, ParticleOrder::Place, Backend::Cuda);
-  scene_order->advance(250);
-  by_place->advance(250);
+  auto [scene_order, by_place] = both_orders(s, 250, Backend::Cuda);
   expect_within_rounding(snapshot_of(*scene_order), snapshot_of(*by_place), 1e-9,
                          scene_order->dt());
   // The frames' contact copy (beside the steps) is the snapshot's, to the bit.
@@ -587,10 +575,7 @@ TEST(GpuPlaceNumbering, ACollidingPileHasTheScenesContactsWithinRounding) {
 TEST(GpuPlaceNumbering, ABodyPileHasTheScenesContactsAndBodiesWithinRounding) {
   TRIDEM_SKIP_WITHOUT_GPU();
   const Scene s = shuffled_bodies(test::settling_body_pile());
-  auto scene_order = solver_for(s, ParticleOrder::Scene, Backend::Cuda);
-  auto by_place = solver_for(s, ParticleOrder::Place, Backend::Cuda);
-  scene_order->advance(200);
-  by_place->advance(200);
+  auto [scene_order, by_place] = both_orders(s, 200, Backend::Cuda);
   const Snapshot a = snapshot_of(*scene_order), b = snapshot_of(*by_place);
   expect_within_rounding(a, b, 1e-9, scene_order->dt());
   EXPECT_EQ(a.member_body, b.member_body);
