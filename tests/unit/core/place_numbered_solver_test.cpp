@@ -233,25 +233,26 @@ TEST(PlaceNumbering, AFramesContactCopyGivesTheSnapshotsContacts) {
   test::expect_identical(whole, copied);
 }
 
-TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
-  const Scene s = shuffled(test::periodic_pile(12, 8));
-  auto [scene_order, by_place] = both_orders(s, 300);
+/// A periodic scene numbered by place against its own order after `steps`, some contacts
+/// through the boundary (`through`): the images' translations seen from the scene's emitter.
+void expect_images_within_rounding(const Scene& s, std::int64_t steps,
+                                   bool (*through)(const ContactRecord&)) {
+  auto [scene_order, by_place] = both_orders(s, steps);
   const Snapshot a = snapshot_of(*scene_order);
-  const auto through = std::count_if(a.contacts.begin(), a.contacts.end(),
-                                     [](const ContactRecord& c) { return c.image_dx != 0; });
-  EXPECT_GT(through, 0) << "some contact must be through the periodic boundary";
+  EXPECT_GT(std::count_if(a.contacts.begin(), a.contacts.end(), through), 0)
+      << "some contact must be through the boundary";
   expect_within_rounding(a, snapshot_of(*by_place), 1e-9, scene_order->dt());
+}
+
+TEST(PlaceNumbering, PeriodicContactsKeepTheirImagesSeenFromTheScenesEmitter) {
+  expect_images_within_rounding(shuffled(test::periodic_pile(12, 8)), 300,
+                                [](const ContactRecord& c) { return c.image_dx != 0; });
 }
 
 // Lees-Edwards images: a sheared gas whose grains meet through the moving boundary.
 TEST(PlaceNumbering, LeesEdwardsContactsKeepTheirImagesSeenFromTheScenesEmitter) {
-  const Scene s = shuffled(test::dense_sheared_gas(10));
-  auto [scene_order, by_place] = both_orders(s, 400);
-  const Snapshot a = snapshot_of(*scene_order);
-  const auto through = std::count_if(a.contacts.begin(), a.contacts.end(),
-                                     [](const ContactRecord& c) { return c.image_dy != 0; });
-  EXPECT_GT(through, 0) << "some contact must be through the sheared boundary";
-  expect_within_rounding(a, snapshot_of(*by_place), 1e-9, scene_order->dt());
+  expect_images_within_rounding(shuffled(test::dense_sheared_gas(10)), 400,
+                                [](const ContactRecord& c) { return c.image_dy != 0; });
 }
 
 // Every way of finding the pairs follows the one emitter rule: each, numbered by place,
