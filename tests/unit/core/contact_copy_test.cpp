@@ -7,6 +7,7 @@
 #include "core/solver_factory.hpp"
 #include "physics/pair_record.hpp"
 #include "support/backend_test.hpp"
+#include "support/forwarding_solver.hpp"
 #include "support/gpu.hpp"
 #include "support/periodic_scenes.hpp"
 #include "support/scene_builder.hpp"
@@ -96,29 +97,15 @@ TRIDEM_INSTANTIATE_SOLVERS(ContactCopyTest);
 
 /// The solver of a run, whose frames take their contacts with the snapshot (no copy) or
 /// through a copy: its own, or the snapshot fallback where it has none. Counts the copies.
-class CopyChoice final : public Solver {
+class CopyChoice final : public test::ForwardingSolver {
  public:
   CopyChoice(std::unique_ptr<Solver> solver, bool copies, int& started)
-      : solver_(std::move(solver)), copies_(copies), started_(started) {}
+      : ForwardingSolver(std::move(solver)), copies_(copies), started_(started) {}
 
   std::unique_ptr<ContactCopy> make_contact_copy() const override {
     if (!copies_) return nullptr;
-    return std::make_unique<Counted>(copy_of(*solver_), started_);
+    return std::make_unique<Counted>(copy_of(inner()), started_);
   }
-  void advance(std::int64_t steps) override { solver_->advance(steps); }
-  void snapshot(Snapshot& out, bool with_contacts) const override {
-    solver_->snapshot(out, with_contacts);
-  }
-  void save_state(SolverState& out) const override { solver_->save_state(out); }
-  void load_state(const SolverState& in) override { solver_->load_state(in); }
-  EnergyBudget energy() const override { return solver_->energy(); }
-  std::int64_t step() const override { return solver_->step(); }
-  double time() const override { return solver_->time(); }
-  double dt() const override { return solver_->dt(); }
-  std::size_t size() const override { return solver_->size(); }
-  std::string description() const override { return solver_->description(); }
-  StageTimes stage_times() const override { return solver_->stage_times(); }
-  void set_stage_timing(bool on) override { solver_->set_stage_timing(on); }
 
  private:
   class Counted final : public ContactCopy {
@@ -135,7 +122,6 @@ class CopyChoice final : public Solver {
     std::unique_ptr<ContactCopy> copy_;
     int& started_;
   };
-  std::unique_ptr<Solver> solver_;
   bool copies_;
   int& started_;
 };
