@@ -18,6 +18,11 @@
 #                (default .devbin, the GPU machine's bundle: scripts/device_bundle.sh; else build)
 #      OUTPUT_KEYS  more [output] lines for the scene, e.g. 'contacts_csv = false'
 #      REPS      the benchmark's repetitions (default 3; the median is taken)
+#      SHUFFLED=1   the grains' lines of grains.csv in a random order (a fixed seed), as a
+#                   user's imported pile numbered in no spatial order, measured against
+#                   tridem_bench's shuffled_pile (the same grains numbered at random)
+#      PARTICLE_ORDER  auto, scene or place: tridem run's --particle-order and the
+#                   benchmark's --particle_order (default: neither given, i.e. auto)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:?give an output folder}"
@@ -73,15 +78,27 @@ for v in $variants; do
     sed -i "/^contacts = true\$/r $dir/output_keys" "$dir/scene/scene.toml"
   fi
   triangles=$(( $(wc -l <"$dir/scene/grains.csv") - 1 + 3 ))
+  bench_scene=dense_pile
+  if [ "${SHUFFLED:-0}" = 1 ]; then
+    bench_scene=shuffled_pile
+    { head -1 "$dir/scene/grains.csv"
+      tail -n +2 "$dir/scene/grains.csv" | shuf --random-source=<(yes 20261207); } >"$dir/grains.shuffled"
+    mv "$dir/grains.shuffled" "$dir/scene/grains.csv"
+  fi
+  order_flags=() bench_order_flags=()
+  if [ -n "${PARTICLE_ORDER:-}" ]; then
+    order_flags=(--particle-order "$PARTICLE_ORDER")
+    bench_order_flags=(--particle_order="$PARTICLE_ORDER")
+  fi
 
   t0=$(date +%s.%N)
-  "$tridem" run "$dir/scene/scene.toml" --backend "$backend" --out "$dir/run" --quiet \
+  "$tridem" run "$dir/scene/scene.toml" --backend "$backend" "${order_flags[@]}" --out "$dir/run" --quiet \
     >"$dir/run.log" 2>&1 || { echo "$v: tridem run failed (see $dir/run.log)"; tail -5 "$dir/run.log"; continue; }
   t1=$(date +%s.%N)
   run_rate=$(sed -n 's/^done: .*steps\/s, \([0-9.eE+-]*\) triangle-steps\/s.*/\1/p' "$dir/run.log")
   run_wall=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
 
-  "$bench" --backends="$v" --min_n="$n" --max_n="$n" --benchmark_repetitions="$reps" \
+  "$bench" --scenes="$bench_scene" --backends="$v" "${bench_order_flags[@]}" --min_n="$n" --max_n="$n" --benchmark_repetitions="$reps" \
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$dir/bench.json" 2>"$dir/bench.err" ||
     { echo "$v: tridem_bench failed (see $dir/bench.err)"; continue; }
   bench_rate_v=$(bench_rate "$dir/bench.json")

@@ -26,6 +26,11 @@
 //    bond_damage, the damage of each bond's points (kBondStatePoints per bond, bond-major;
 //    a bond whose points are all 1 is broken), and bond_dissipated, the energy each bond's
 //    damage released so far (J/m).
+//  - The order the solver keeps its particles in, when it renumbered them by place
+//    (core/place_numbered_solver): particle_order[k] is the scene id of its particle k,
+//    body_order[k] that of its body k (bodies of several triangles). Both empty for the
+//    scene's order or the one the solver picks from the scene alone. Everything else stays
+//    in the scene's ids whatever the order; a solver that cannot use an order ignores it.
 //  - load_state(save_state()) followed by advance(n) gives, bit for bit, what advance(n)
 //    would have given without the round trip.
 #include "tridem/body_fields.hpp"
@@ -54,6 +59,9 @@ struct SolverState {
 
   std::vector<double> bond_damage;
   std::vector<double> bond_dissipated;
+
+  std::vector<std::int32_t> particle_order;
+  std::vector<std::int32_t> body_order;
 
   std::size_t size() const { return x.size(); }
   std::size_t bonds() const { return bond_dissipated.size(); }

@@ -33,7 +33,7 @@ double consecutive_mean(const ParticleModel& model) {
 
 }  // namespace
 
-double consecutive_id_distance(const ParticleModel& model) {
+double free_grain_size(const ParticleModel& model) {
   const auto n = static_cast<std::int64_t>(model.size());
   double size = 0;
   std::int64_t free = 0;
@@ -43,8 +43,12 @@ double consecutive_id_distance(const ParticleModel& model) {
       size += std::sqrt(model.area[i]);
       ++free;
     }
-  if (free == 0 || size <= 0) return 0;
-  return consecutive_mean(model) / (size / static_cast<double>(free));
+  return free > 0 ? size / static_cast<double>(free) : 0.0;
+}
+
+double consecutive_id_distance(const ParticleModel& model) {
+  const double size = free_grain_size(model);
+  return size > 0 ? consecutive_mean(model) / size : 0.0;
 }
 
 double numbering_spread(const ParticleModel& model) {

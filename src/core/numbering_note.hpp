@@ -13,6 +13,9 @@ inline constexpr std::size_t kLargeNumbering = 100000;
 /// Consecutive free particles further apart than this many grain sizes on average: far.
 inline constexpr double kFarNumbering = 20;
 
+/// The free particles' mean size, the mean root of their areas; 0 without one.
+double free_grain_size(const ParticleModel& model);
+
 /// The mean distance between the centroids of consecutive free particles (ids i and i + 1)
 /// over the free particles' mean size (the root of their area): about 1 for a scene
 /// numbered row by row or along a curve, about a third of the domain's width in grains

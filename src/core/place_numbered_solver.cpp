@@ -11,8 +11,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <memory>
+#include <mutex>
+#include <numeric>
+#include <optional>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -50,16 +56,23 @@ struct PlaceNumbering {
   /// scene's first member of each body (n + 1 entries, Snapshot::body_first).
   std::vector<std::int32_t> body_scene_of, body_inner_of;
   std::vector<std::int64_t> body_first;
+  /// The scene's own order (a large scene numbered by place, kept so until its grains
+  /// mix): nothing to map.
+  bool identity = true;
 
   PlaceNumbering(PlaceOrder order, const Scene& scene, const ParticleModel& model)
       : scene_of(std::move(order.triangles)),
         inner_of(scene_of.size()),
         body_scene_of(std::move(order.bodies)),
         body_inner_of(body_scene_of.size()) {
-    for (std::size_t k = 0; k < scene_of.size(); ++k)
+    for (std::size_t k = 0; k < scene_of.size(); ++k) {
       inner_of[static_cast<std::size_t>(scene_of[k])] = static_cast<std::int32_t>(k);
-    for (std::size_t k = 0; k < body_scene_of.size(); ++k)
+      identity = identity && scene_of[k] == static_cast<std::int32_t>(k);
+    }
+    for (std::size_t k = 0; k < body_scene_of.size(); ++k) {
       body_inner_of[static_cast<std::size_t>(body_scene_of[k])] = static_cast<std::int32_t>(k);
+      identity = identity && body_scene_of[k] == static_cast<std::int32_t>(k);
+    }
     if (!body_scene_of.empty()) body_first = model.bodies.first;
     // All-pairs has no size classes (broadphase/emitter_rule.hpp): every particle is small.
     small = scene.simulation.method == Method::AllPairs
@@ -84,6 +97,7 @@ struct PlaceNumbering {
 };
 
 void PlaceNumbering::rename_contacts(std::vector<ContactRecord>& records) const {
+  if (identity) return;
   const auto count = static_cast<std::int64_t>(records.size());
 #pragma omp parallel for schedule(static) if (count > 65536)
   for (std::int64_t k = 0; k < count; ++k) {
@@ -112,64 +126,185 @@ void append_records(std::vector<ContactRecord>& from, std::vector<ContactRecord>
     to.insert(to.end(), from.begin(), from.end());
 }
 
+/// Throws RunError unless `order` is one the solver could have renumbered `scene` to: every
+/// particle once, walls in their places, bodies as wholes with their members in order.
+void check_order(const PlaceOrder& order, const Scene& scene, const ParticleModel& model,
+                 const std::string& source) {
+  auto refuse = [&](const std::string& why) {
+    throw RunError(fmt::format("{}: the state's particle order {}: it is not one this scene's "
+                               "solver numbers its particles in (a damaged checkpoint, or one "
+                               "of another scene)",
+                               source, why));
+  };
+  const std::size_t n = model.size();
+  if (order.triangles.size() != n)
+    refuse(fmt::format("has {} entries for {} particles", order.triangles.size(), n));
+  std::vector<std::uint8_t> seen(n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int32_t i = order.triangles[k];
+    if (i < 0 || static_cast<std::size_t>(i) >= n || seen[static_cast<std::size_t>(i)] != 0)
+      refuse(fmt::format("names particle {} at place {} (out of range or twice)", i, k));
+    seen[static_cast<std::size_t>(i)] = 1;
+    if ((model.motion[k] != Motion::Free ||
+         model.motion[static_cast<std::size_t>(i)] != Motion::Free) &&
+        i != static_cast<std::int32_t>(k))
+      refuse(fmt::format("moves wall particle {} or puts a grain in its place", k));
+  }
+  const std::size_t nb = model.bodies.size();
+  if (order.bodies.size() != (nb == 0 ? 0 : nb))
+    refuse(fmt::format("has {} bodies for {}", order.bodies.size(), nb));
+  if (nb == 0) return;
+  std::vector<std::uint8_t> seen_body(nb, 0);
+  for (const std::int32_t b : order.bodies) {
+    if (b < 0 || static_cast<std::size_t>(b) >= nb || seen_body[static_cast<std::size_t>(b)] != 0)
+      refuse(fmt::format("names body {} out of range or twice", b));
+    seen_body[static_cast<std::size_t>(b)] = 1;
+  }
+  if (body_order(scene, order.bodies).triangles != order.triangles)
+    refuse("does not keep each body's members together and in order");
+}
+
+/// The inner solver and its numbering, which the wrapper replaces when it renumbers, shared
+/// with the contact copies: a copy makes its inner copy from the inner solver of the time
+/// it starts, and the wrapper does not replace a solver while a copy of its contacts is in
+/// flight (the CUDA copy's download reads the solver's buffers).
+struct InnerSolver {
+  std::unique_ptr<Solver> solver;
+  std::shared_ptr<const PlaceNumbering> numbering;
+  std::uint64_t generation = 0;  ///< how many times the solver was replaced
+  std::mutex mutex;
+  std::condition_variable copied;
+  bool copying = false;  ///< a copy has started and not finished
+
+  void wait_for_copies() {
+    std::unique_lock lock(mutex);
+    copied.wait(lock, [this] { return !copying; });
+  }
+};
+
 /// The inner solver's contact copy (the CUDA solver's, beside the steps), its records
 /// shown in the scene's ids. finish() gets the snapshot in the scene's ids, whose
 /// positions it hands the inner copy in the inner order (the same values).
 class PlaceNumberedContactCopy final : public ContactCopy {
  public:
-  PlaceNumberedContactCopy(std::unique_ptr<ContactCopy> inner,
-                           std::shared_ptr<const PlaceNumbering> numbering)
-      : inner_(std::move(inner)), numbering_(std::move(numbering)) {}
-  void start() override { inner_->start(); }
+  explicit PlaceNumberedContactCopy(std::shared_ptr<InnerSolver> inner)
+      : inner_(std::move(inner)) {}
+  void start() override {
+    {
+      const std::lock_guard lock(inner_->mutex);
+      if (!copy_ || generation_ != inner_->generation) {
+        copy_ = inner_->solver->make_contact_copy();
+        if (!copy_) throw RunError("internal error: a renumbered solver has no contact copy");
+        numbering_ = inner_->numbering;
+        generation_ = inner_->generation;
+      }
+      inner_->copying = true;
+    }
+    try {
+      copy_->start();
+    } catch (...) {
+      done();
+      throw;
+    }
+  }
   void finish(Snapshot& s) override {
+    struct Done {
+      PlaceNumberedContactCopy* copy;
+      ~Done() { copy->done(); }
+    } done_at_exit{this};
+    if (numbering_->identity) {
+      copy_->finish(s);
+      return;
+    }
     staged_.step = s.step;
     staged_.time = s.time;
     gather(staged_.x, s.x, numbering_->scene_of);
     gather(staged_.y, s.y, numbering_->scene_of);
     staged_.contacts.clear();
-    inner_->finish(staged_);
+    copy_->finish(staged_);
     s.contact_precision = staged_.contact_precision;
     numbering_->rename_contacts(staged_.contacts);
     append_records(staged_.contacts, s.contacts);
   }
 
  private:
-  std::unique_ptr<ContactCopy> inner_;
+  void done() {
+    {
+      const std::lock_guard lock(inner_->mutex);
+      inner_->copying = false;
+    }
+    inner_->copied.notify_all();
+  }
+
+  std::shared_ptr<InnerSolver> inner_;
+  std::unique_ptr<ContactCopy> copy_;
   std::shared_ptr<const PlaceNumbering> numbering_;
+  std::uint64_t generation_ = 0;
   Snapshot staged_;  ///< the positions, in the inner order, and the inner records
+};
+
+/// What a solver needs to number its particles by place again mid-run.
+struct Renumbering {
+  Scene scene;  ///< the scene (its model is built again when it renumbers)
+  MakeInnerSolver make;
+  std::int64_t check_steps = 0;
+  double far_apart = kFarNumbering;     ///< mixed: consecutive ones further apart, in sizes
+  double grain_size = 0;                ///< the free particles' mean size
+  double body_size = 0;                 ///< the free bodies' mean size (the root of their area)
+  std::vector<std::uint8_t> free_body;  ///< by scene body id
+  std::int64_t count = 0;               ///< how many times it renumbered
 };
 
 class PlaceNumberedSolver final : public Solver {
  public:
   PlaceNumberedSolver(std::unique_ptr<Solver> inner, PlaceOrder order, const Scene& scene,
-                      const ParticleModel& model)
-      : inner_(std::move(inner)),
-        numbering_(std::make_shared<const PlaceNumbering>(std::move(order), scene, model)) {}
+                      const ParticleModel& model, std::unique_ptr<Renumbering> renumbering = {})
+      : inner_(std::make_shared<InnerSolver>()), renumbering_(std::move(renumbering)) {
+    inner_->solver = std::move(inner);
+    inner_->numbering = std::make_shared<const PlaceNumbering>(std::move(order), scene, model);
+  }
 
-  void advance(std::int64_t steps) override { inner_->advance(steps); }
+  void advance(std::int64_t steps) override;
   void snapshot(Snapshot& out, bool with_contacts) const override;
   /// The inner solver's copy, mapped; none when it has none (the CPU solvers: the time
   /// loop then takes the contacts with the snapshot).
   std::unique_ptr<ContactCopy> make_contact_copy() const override {
-    std::unique_ptr<ContactCopy> copy = inner_->make_contact_copy();
-    if (!copy) return nullptr;
-    return std::make_unique<PlaceNumberedContactCopy>(std::move(copy), numbering_);
+    if (!solver().make_contact_copy()) return nullptr;
+    return std::make_unique<PlaceNumberedContactCopy>(inner_);
   }
   void save_state(SolverState& out) const override;
   void load_state(const SolverState& in) override;
-  EnergyBudget energy() const override { return inner_->energy(); }
-  std::int64_t step() const override { return inner_->step(); }
-  double time() const override { return inner_->time(); }
-  double dt() const override { return inner_->dt(); }
-  std::size_t size() const override { return inner_->size(); }
+  EnergyBudget energy() const override { return solver().energy(); }
+  std::int64_t step() const override { return solver().step(); }
+  double time() const override { return solver().time(); }
+  double dt() const override { return solver().dt(); }
+  std::size_t size() const override { return solver().size(); }
   std::string description() const override {
-    return inner_->description() + ", particles numbered by place";
+    return solver().description() +
+           (numbering().identity ? std::string() : ", particles numbered by place");
   }
-  StageTimes stage_times() const override { return inner_->stage_times(); }
-  void set_stage_timing(bool on) override { inner_->set_stage_timing(on); }
-  std::string statistics() const override { return inner_->statistics(); }
+  StageTimes stage_times() const override;
+  void set_stage_timing(bool on) override {
+    stage_timing_ = on;
+    solver().set_stage_timing(on);
+  }
+  std::string statistics() const override {
+    std::string s = solver().statistics();
+    if (renumbering_ && renumbering_->count > 0)
+      s += fmt::format("; numbered by place again {} time{} as the grains mixed",
+                       renumbering_->count, renumbering_->count == 1 ? "" : "s");
+    return s;
+  }
 
  private:
+  Solver& solver() const { return *inner_->solver; }
+  const PlaceNumbering& numbering() const { return *inner_->numbering; }
+  /// Whether the inner solver's consecutive free particles now lie over kFarNumbering grain
+  /// sizes apart.
+  bool mixed() const;
+  /// The inner solver replaced by one of `state`'s particles (in the scene's ids) in
+  /// `order`, continuing from `state`.
+  void replace_inner(PlaceOrder order, const ParticleModel& model, const SolverState& state);
   /// The contact history of `from` with its particles renamed by `id` (inner to scene ids,
   /// or back) into `to`: a pair whose emitter changes (two small particles whose order
   /// flips) sees the other side's displacement, −u (physics/contact_force.hpp: the history
@@ -180,8 +315,12 @@ class PlaceNumberedSolver final : public Solver {
   template <class T>
   void to_scene_order(std::vector<T>& v, const std::vector<std::int32_t>& inner_of) const;
 
-  std::unique_ptr<Solver> inner_;
-  std::shared_ptr<const PlaceNumbering> numbering_;
+  std::shared_ptr<InnerSolver> inner_;
+  std::unique_ptr<Renumbering> renumbering_;
+  StageTimes retired_times_;  ///< the stage times of the solvers replaced so far
+  /// The order is the one make_solver picks from the scene (a state need not carry it).
+  bool order_from_scene_ = true;
+  std::optional<bool> stage_timing_;  ///< as set, for the solvers that replace the inner one
   /// to_scene_order's spare array of each type a snapshot's arrays have.
   mutable std::tuple<std::vector<double>, std::vector<int>, std::vector<Motion>> spare_;
   mutable SolverState inner_state_;
@@ -199,8 +338,9 @@ void PlaceNumberedSolver::to_scene_order(std::vector<T>& v,
 // the scene's in place, one array at a time: no second snapshot (at 10^6 grains with their
 // contacts some 0.7 GB) is kept.
 void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
-  inner_->snapshot(out, with_contacts);
-  const PlaceNumbering& m = *numbering_;
+  solver().snapshot(out, with_contacts);
+  const PlaceNumbering& m = numbering();
+  if (m.identity) return;
   out.for_each_particle_array(out, [&](auto& v, auto&) { to_scene_order(v, m.inner_of); });
   if (!m.body_scene_of.empty()) {
     Snapshot::for_each_body_column(
@@ -217,20 +357,100 @@ void PlaceNumberedSolver::snapshot(Snapshot& out, bool with_contacts) const {
   if (with_contacts) m.rename_contacts(out.contacts);
 }
 
+StageTimes PlaceNumberedSolver::stage_times() const {
+  StageTimes t = solver().stage_times();
+  if (retired_times_.steps == 0) return t;
+  for (int k = 0; k < kStageCount; ++k) t.seconds[k] += retired_times_.seconds[k];
+  t.steps += retired_times_.steps;
+  t.timed_steps += retired_times_.timed_steps;
+  return t;
+}
+
+// The looks at the order fall on the steps that are multiples of check_steps whatever the
+// calls' sizes, and what they find is a function of the state: a run and its restart from
+// any checkpoint renumber at the same steps, to the same order.
+void PlaceNumberedSolver::advance(std::int64_t steps) {
+  while (steps > 0) {
+    std::int64_t chunk = steps;
+    const std::int64_t every = renumbering_ ? renumbering_->check_steps : 0;
+    if (every > 0) chunk = std::min(chunk, every - step() % every);
+    solver().advance(chunk);
+    steps -= chunk;
+    if (every > 0 && step() % every == 0 && mixed()) {
+      const ParticleModel model = build_particle_model(renumbering_->scene);
+      SolverState state;
+      save_state(state);
+      replace_inner(place_order(model, state), model, state);
+      ++renumbering_->count;
+    }
+  }
+}
+
+bool PlaceNumberedSolver::mixed() const {
+  Snapshot now;
+  solver().snapshot(now, false);
+  const PlaceNumbering& m = numbering();
+  // Bodies of several triangles: their members lie together whatever the order, so the
+  // bodies' centroids tell how far apart consecutive ones are.
+  const bool bodies = !m.body_scene_of.empty();
+  const std::vector<double>& x = bodies ? now.body_x : now.x;
+  const std::vector<double>& y = bodies ? now.body_y : now.y;
+  const std::vector<std::int32_t>& scene_of = bodies ? m.body_scene_of : m.scene_of;
+  const std::vector<std::uint8_t>& free = bodies ? renumbering_->free_body : m.free;
+  const auto n = static_cast<std::int64_t>(x.size());
+  double distance = 0;
+  std::int64_t pairs = 0;
+#pragma omp parallel for schedule(static) reduction(+ : distance, pairs) if (n > 65536)
+  for (std::int64_t k = 0; k < n - 1; ++k) {
+    const auto a = static_cast<std::size_t>(k), b = a + 1;
+    if (free[static_cast<std::size_t>(scene_of[a])] == 0 ||
+        free[static_cast<std::size_t>(scene_of[b])] == 0)
+      continue;
+    distance += std::hypot(x[b] - x[a], y[b] - y[a]);
+    ++pairs;
+  }
+  const double size = bodies ? renumbering_->body_size : renumbering_->grain_size;
+  return pairs > 0 && size > 0 &&
+         distance / static_cast<double>(pairs) > renumbering_->far_apart * size;
+}
+
+void PlaceNumberedSolver::replace_inner(PlaceOrder order, const ParticleModel& model,
+                                        const SolverState& state) {
+  inner_->wait_for_copies();
+  const StageTimes t = solver().stage_times();
+  for (int k = 0; k < kStageCount; ++k) retired_times_.seconds[k] += t.seconds[k];
+  retired_times_.steps += t.steps;
+  retired_times_.timed_steps += t.timed_steps;
+  const Scene& scene = renumbering_->scene;
+  auto numbering = std::make_shared<const PlaceNumbering>(order, scene, model);
+  {
+    const std::lock_guard lock(inner_->mutex);
+    inner_->solver.reset();  // its memory (the GPU's) goes before the new solver's comes
+    inner_->solver = scene.bonds.empty()
+                         ? renumbering_->make(scene, reordered_model(scene, model, order))
+                         : renumbering_->make(reordered_scene(scene, order),
+                                              reordered_model(scene, model, order));
+    inner_->numbering = std::move(numbering);
+    ++inner_->generation;
+  }
+  order_from_scene_ = false;
+  if (stage_timing_) solver().set_stage_timing(*stage_timing_);
+  load_state(state);
+}
 void PlaceNumberedSolver::rename_pairs(const SolverState& from, SolverState& to,
                                        const std::vector<std::int32_t>& id, bool scene_ids) const {
   struct Row {
     std::int32_t emitter, partner;
     std::array<double, kSlipsPerPair> slip;
   };
-  const std::vector<std::int32_t>& scene_of = numbering_->scene_of;
+  const std::vector<std::int32_t>& scene_of = numbering().scene_of;
   std::vector<Row> rows(from.pairs());
   for (std::size_t k = 0; k < rows.size(); ++k) {
     Row r{id[static_cast<std::size_t>(from.pair_emitter[k])],
           id[static_cast<std::size_t>(from.pair_partner[k])], from.pair_slip[k]};
     const std::int32_t a = scene_ids ? r.emitter : scene_of[static_cast<std::size_t>(r.emitter)];
     const std::int32_t b = scene_ids ? r.partner : scene_of[static_cast<std::size_t>(r.partner)];
-    if (!numbering_->emits(r.emitter, r.partner, a, b)) {
+    if (!numbering().emits(r.emitter, r.partner, a, b)) {
       std::swap(r.emitter, r.partner);
       for (double& u : r.slip) u = -u;
     }
@@ -274,17 +494,44 @@ void rename_particles(const SolverState& from, SolverState& to,
 }
 
 void PlaceNumberedSolver::save_state(SolverState& out) const {
-  inner_->save_state(inner_state_);
-  rename_particles(inner_state_, out, numbering_->inner_of, numbering_->body_inner_of);
-  rename_pairs(inner_state_, out, numbering_->scene_of, true);
+  const PlaceNumbering& m = numbering();
+  if (m.identity) {
+    solver().save_state(out);
+  } else {
+    solver().save_state(inner_state_);
+    rename_particles(inner_state_, out, m.inner_of, m.body_inner_of);
+    rename_pairs(inner_state_, out, m.scene_of, true);
+  }
+  // The order goes with the state once it is no longer the one the scene alone gives.
+  out.particle_order.clear();
+  out.body_order.clear();
+  if (!order_from_scene_) {
+    out.particle_order = m.scene_of;
+    out.body_order = m.body_scene_of;
+  }
 }
 
 void PlaceNumberedSolver::load_state(const SolverState& in) {
+  const PlaceNumbering& m = numbering();
   // Checked in the scene's ids, so that a problem names the particle the user knows.
-  validate_solver_state(in, size(), numbering_->body_scene_of.size(), description());
-  rename_particles(in, inner_state_, numbering_->scene_of, numbering_->body_scene_of);
-  rename_pairs(in, inner_state_, numbering_->inner_of, false);
-  inner_->load_state(inner_state_);
+  validate_solver_state(in, size(), m.body_scene_of.size(), description());
+  if (renumbering_ && !in.particle_order.empty() &&
+      (in.particle_order != m.scene_of || in.body_order != m.body_scene_of)) {
+    // A run renumbered mid-way continues in the order it had, so that it goes on bit for
+    // bit as it would have without the stop.
+    const ParticleModel model = build_particle_model(renumbering_->scene);
+    PlaceOrder order{in.particle_order, in.body_order};
+    check_order(order, renumbering_->scene, model, description());
+    replace_inner(std::move(order), model, in);
+    return;
+  }
+  if (m.identity) {
+    solver().load_state(in);
+    return;
+  }
+  rename_particles(in, inner_state_, m.scene_of, m.body_scene_of);
+  rename_pairs(in, inner_state_, m.inner_of, false);
+  solver().load_state(inner_state_);
 }
 
 }  // namespace
@@ -324,12 +571,17 @@ std::vector<std::size_t> curve_rank(const std::vector<Motion>& motion,
 
 }  // namespace
 
-PlaceOrder place_order(const ParticleModel& model) {
+namespace {
+
+/// place_order with the particles' centroids at `centroid` and the bodies' at
+/// `body_centroid` (the model's, or a state's now).
+PlaceOrder place_order_at(const ParticleModel& model, const std::vector<Vec2d>& centroid,
+                          const std::vector<Vec2d>& body_centroid) {
   PlaceOrder out;
   const BodyModel& bodies = model.bodies;
   if (bodies.empty()) {
     // Lone triangles: the free ones, in the curve's order, take the free ones' places.
-    const std::vector<std::size_t> rank = curve_rank(model.motion, model.centroid);
+    const std::vector<std::size_t> rank = curve_rank(model.motion, centroid);
     std::vector<std::int32_t> free;
     out.triangles.resize(model.size());
     for (std::size_t i = 0; i < model.size(); ++i) {
@@ -341,7 +593,7 @@ PlaceOrder place_order(const ParticleModel& model) {
   }
   // Bodies, as wholes: each run of consecutive free bodies in the curve's order, so that the
   // run covers the same triangles and every wall body keeps its members' ids.
-  const std::vector<std::size_t> rank = curve_rank(bodies.motion, bodies.centroid);
+  const std::vector<std::size_t> rank = curve_rank(bodies.motion, body_centroid);
   const std::size_t nb = bodies.size();
   out.bodies.resize(nb);
   for (std::size_t b = 0; b < nb; ++b) out.bodies[b] = static_cast<std::int32_t>(b);
@@ -365,6 +617,21 @@ PlaceOrder place_order(const ParticleModel& model) {
          i < bodies.first[static_cast<std::size_t>(b) + 1]; ++i)
       out.triangles.push_back(static_cast<std::int32_t>(i));
   return out;
+}
+
+}  // namespace
+
+PlaceOrder place_order(const ParticleModel& model) {
+  return place_order_at(model, model.centroid, model.bodies.centroid);
+}
+
+PlaceOrder place_order(const ParticleModel& model, const SolverState& now) {
+  auto points = [](const std::vector<double>& x, const std::vector<double>& y) {
+    std::vector<Vec2d> p(x.size());
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = {x[i], y[i]};
+    return p;
+  };
+  return place_order_at(model, points(now.x, now.y), points(now.body_x, now.body_y));
 }
 
 PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies) {
@@ -435,6 +702,52 @@ ParticleModel reordered_model(const Scene& scene, const ParticleModel& model,
 std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner, PlaceOrder order,
                                                    const Scene& scene, const ParticleModel& model) {
   return std::make_unique<PlaceNumberedSolver>(std::move(inner), std::move(order), scene, model);
+}
+
+std::unique_ptr<Solver> make_renumbering_solver(const Scene& scene, const ParticleModel& model,
+                                                PlaceOrder order, const MakeInnerSolver& make,
+                                                std::int64_t check_steps, double far_apart) {
+  const PlaceNumbering initial(order, scene, model);
+  std::unique_ptr<Solver> inner;
+  if (initial.identity)
+    inner = make(scene, model);
+  else if (scene.bonds.empty())  // the solver reads a scene's settings and bonds, not its triangles
+    inner = make(scene, reordered_model(scene, model, order));
+  else
+    inner = make(reordered_scene(scene, order), reordered_model(scene, model, order));
+  auto renumbering = std::make_unique<Renumbering>();
+  renumbering->scene = scene;
+  renumbering->make = make;
+  renumbering->check_steps = check_steps;
+  renumbering->far_apart = far_apart;
+  renumbering->grain_size = free_grain_size(model);
+  const BodyModel& bodies = model.bodies;
+  renumbering->free_body.resize(bodies.size());
+  double body_sizes = 0;
+  std::size_t free_bodies = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    renumbering->free_body[b] = bodies.motion[b] == Motion::Free;
+    if (bodies.motion[b] != Motion::Free) continue;
+    double area = 0;
+    for (std::int64_t i = bodies.first[b]; i < bodies.first[b + 1]; ++i)
+      area += model.area[static_cast<std::size_t>(i)];
+    body_sizes += std::sqrt(area);
+    ++free_bodies;
+  }
+  if (free_bodies > 0) renumbering->body_size = body_sizes / static_cast<double>(free_bodies);
+  return std::make_unique<PlaceNumberedSolver>(std::move(inner), std::move(order), scene, model,
+                                               std::move(renumbering));
+}
+
+PlaceOrder scene_order(const ParticleModel& model) {
+  PlaceOrder order;
+  order.triangles.resize(model.size());
+  std::iota(order.triangles.begin(), order.triangles.end(), 0);
+  if (!model.bodies.empty()) {
+    order.bodies.resize(model.bodies.size());
+    std::iota(order.bodies.begin(), order.bodies.end(), 0);
+  }
+  return order;
 }
 
 }  // namespace tridem

@@ -8,11 +8,14 @@
 // array, the contacts' and bonds' ends), saved and loaded states (so checkpoints are in the
 // scene's ids, and either numbering continues the other's), and the particles its
 // messages name (ParticleModel::shown_ids).
+#include "core/numbering_note.hpp"
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
+#include "tridem/solver_state.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -39,6 +42,13 @@ struct PlaceOrder {
 /// their programs, servos and walls.csv rows are the scene's.
 PlaceOrder place_order(const ParticleModel& model);
 
+/// place_order by the centroids of `now` (a state in the scene's ids), not the model's:
+/// the order of a run's particles where they are at that step.
+PlaceOrder place_order(const ParticleModel& model, const SolverState& now);
+
+/// The scene's own order: every triangle (and body) at its id.
+PlaceOrder scene_order(const ParticleModel& model);
+
 /// The order of `scene`'s bodies `bodies` (every body id once), their members with each:
 /// a scene's bodies put in another order (benchmarks and tests shuffle them so).
 PlaceOrder body_order(const Scene& scene, std::vector<std::int32_t> bodies);
@@ -59,5 +69,23 @@ ParticleModel reordered_model(const Scene& scene, const ParticleModel& model,
 /// broadphase/emitter_rule.hpp).
 std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner, PlaceOrder order,
                                                    const Scene& scene, const ParticleModel& model);
+
+/// Makes the backend's solver of a scene and its model (make_solver's choices made).
+using MakeInnerSolver =
+    std::function<std::unique_ptr<Solver>(const Scene& scene, const ParticleModel& model)>;
+
+/// A solver of `scene` (its model `model`) whose inner solver, made by `make`, steps the
+/// particles in `order` (scene_order(model) for the scene's own, then shown as they are),
+/// and which, at every step that is a multiple of `check_steps` (0: never), numbers them
+/// by place again (place_order(model, state)) when its consecutive free particles (bodies
+/// of several triangles: bodies) lie over `far_apart` of their mean sizes apart (the root of
+/// their area): it saves its state, makes the inner solver again in the
+/// new order and loads the state into it. Its saved states then carry the order
+/// (SolverState::particle_order), which its load_state takes up, so that a restart goes on
+/// bit for bit. It keeps a copy of the scene for that.
+std::unique_ptr<Solver> make_renumbering_solver(const Scene& scene, const ParticleModel& model,
+                                                PlaceOrder order, const MakeInnerSolver& make,
+                                                std::int64_t check_steps,
+                                                double far_apart = kFarNumbering);
 
 }  // namespace tridem

@@ -2,6 +2,7 @@
 
 #include "backends/cpu/cpu_solver.hpp"
 #include "backends/cuda/cuda_backend.hpp"
+#include "core/numbering_note.hpp"
 #include "core/periodic_checks.hpp"
 #include "core/place_numbered_solver.hpp"
 #include "tridem/error.hpp"
@@ -111,20 +112,22 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& mod
         requested == Backend::Auto ? " (picked by backend = auto)" : "",
         backend_name(Backend::OpenMP)));
   check_device(config.device, backend, requested);
-  auto make = [&](const Scene& s, const ParticleModel& m) {
+  // By value: a solver that numbers its particles by place again mid-run makes its inner
+  // solver again with them.
+  MakeInnerSolver make = [ts, config, backend](const Scene& s, const ParticleModel& m) {
     return s.simulation.precision == Precision::Float
                ? make_for_real<float>(s, m, ts, config, backend)
                : make_for_real<double>(s, m, ts, config, backend);
   };
-  if (!numbers_by_place(scene, model, config.particle_order)) return make(scene, model);
-  PlaceOrder order = place_order(model);
-  // The solver reads a scene's settings and bonds, not its triangles (its model has them):
-  // a scene without bonds serves as it is.
-  std::unique_ptr<Solver> inner =
-      scene.bonds.empty()
-          ? make(scene, reordered_model(scene, model, order))
-          : make(reordered_scene(scene, order), reordered_model(scene, model, order));
-  return make_place_numbered_solver(std::move(inner), std::move(order), scene, model);
+  const bool by_place = numbers_by_place(scene, model, config.particle_order);
+  // A large scene in its own order gets the wrapper too, which looks at the order as the
+  // run goes and keeps it as it is until the grains have mixed.
+  const bool may_renumber = config.particle_order != ParticleOrder::Scene &&
+                            config.order_check_steps > 0 && model.size() >= kLargeNumbering &&
+                            model.size() <= static_cast<std::size_t>(INT32_MAX);
+  if (!by_place && !may_renumber) return make(scene, model);
+  return make_renumbering_solver(scene, model, by_place ? place_order(model) : scene_order(model),
+                                 make, may_renumber ? config.order_check_steps : 0);
 }
 
 }  // namespace tridem

@@ -1,0 +1,279 @@
+// Numbering the particles by place again mid-run (core/place_numbered_solver,
+// make_renumbering_solver): a solver whose particles have mixed renumbers them at the next
+// look and goes on within rounding of the scene's order; one that has not mixed keeps its
+// bits; its saved state carries the order, so that a restart goes on bit for bit; a bad
+// order is refused; and a frame's contact copy in flight holds the renumbering back.
+#include "core/numbering_note.hpp"
+#include "core/particle_model.hpp"
+#include "core/place_numbered_solver.hpp"
+#include "core/solver_factory.hpp"
+#include "core/time_step.hpp"
+#include "support/body_scenes.hpp"
+#include "support/forwarding_solver.hpp"
+#include "support/place_order_scenes.hpp"
+#include "support/scene_builder.hpp"
+#include "support/snapshot_compare.hpp"
+#include "tridem/contact_copy.hpp"
+#include "tridem/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace tridem {
+namespace {
+namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLists.txt)
+
+using test::expect_within_rounding;
+using test::shuffled;
+using test::shuffled_bodies;
+using test::snapshot_of;
+
+constexpr std::int64_t kLook = 50;  ///< steps between the looks at the order
+
+/// The CPU solver of a scene in its own order (the reference).
+std::unique_ptr<Solver> scene_solver(Scene s) {
+  s.simulation.backend = Backend::Cpu;
+  SolverConfig config;
+  config.particle_order = ParticleOrder::Scene;
+  return make_solver(s, config);
+}
+
+/// Makes the CPU solver of a scene and model as make_solver would, the scene's order kept.
+MakeInnerSolver cpu_maker(const Scene& s) {
+  const ParticleModel model = build_particle_model(s);
+  const TimeStep ts = estimate_time_step(s, model);
+  return [ts](const Scene& scene, const ParticleModel& m) {
+    SolverConfig config;
+    config.particle_order = ParticleOrder::Scene;
+    return make_solver(scene, m, ts, config);
+  };
+}
+
+/// A solver of `s` stepping its particles in the scene's order that looks every kLook
+/// steps (`make`: its inner solvers; `far_apart`: mixed beyond so many grain sizes).
+std::unique_ptr<Solver> renumbering(Scene s, MakeInnerSolver make = {},
+                                    double far_apart = kFarNumbering) {
+  s.simulation.backend = Backend::Cpu;
+  const ParticleModel model = build_particle_model(s);
+  if (!make) make = cpu_maker(s);
+  return make_renumbering_solver(s, model, scene_order(model), make, kLook, far_apart);
+}
+
+/// A pile of bodies of ten triangles in a random order: over 2 body sizes apart on
+/// average, which it is mixed beyond (a pile of 40 bodies is never 20 apart).
+constexpr double kBodiesFarApart = 2;
+
+/// A pile wide enough that its grains, numbered at random, lie further apart than
+/// kFarNumbering grain sizes on average (about 40).
+Scene mixed_pile() { return shuffled(test::jostling_pile(80, 10)); }
+
+bool renumbered(const Solver& s) {
+  return s.statistics().find("numbered by place again") != std::string::npos;
+}
+
+TEST(Renumbering, AMixedPileIsNumberedByPlaceAtTheNextLookAndGoesOnWithinRounding) {
+  const Scene s = mixed_pile();
+  auto reference = scene_solver(s);
+  auto solver = renumbering(s);
+  solver->advance(kLook - 1);
+  EXPECT_FALSE(renumbered(*solver));
+  EXPECT_EQ(solver->description().find("numbered by place"), std::string::npos)
+      << "the scene's order until the first look";
+  reference->advance(kLook - 1);
+  test::expect_identical(snapshot_of(*reference), snapshot_of(*solver));
+  solver->advance(301);
+  reference->advance(301);
+  EXPECT_TRUE(renumbered(*solver)) << solver->statistics();
+  EXPECT_NE(solver->description().find("numbered by place"), std::string::npos);
+  EXPECT_EQ(solver->step(), reference->step());
+  EXPECT_EQ(solver->stage_times().steps, reference->stage_times().steps)
+      << "the replaced solver's steps are counted";
+  expect_within_rounding(snapshot_of(*reference), snapshot_of(*solver), 1e-9, reference->dt());
+
+  // It renumbered once: the curve it put the grains on holds over these few steps.
+  EXPECT_NE(solver->statistics().find("again 1 time"), std::string::npos) << solver->statistics();
+}
+
+TEST(Renumbering, APileThatHasNotMixedKeepsItsBits) {
+  const Scene s = test::jostling_pile(20, 12);
+  auto reference = scene_solver(s);
+  auto solver = renumbering(s);
+  reference->advance(330);
+  solver->advance(7);
+  solver->advance(323);  // looks at 50, 100, ... whatever the calls' sizes
+  EXPECT_FALSE(renumbered(*solver));
+  test::expect_identical(snapshot_of(*reference), snapshot_of(*solver));
+  SolverState state;
+  solver->save_state(state);
+  EXPECT_TRUE(state.particle_order.empty()) << "the scene's order goes without saying";
+}
+
+TEST(Renumbering, ARestartFromAStateSavedAfterRenumberingGoesOnBitForBit) {
+  const Scene s = mixed_pile();
+  auto run = renumbering(s);
+  run->advance(kLook + 20);
+  ASSERT_TRUE(renumbered(*run));
+  SolverState state;
+  run->save_state(state);
+  ASSERT_EQ(state.particle_order.size(), s.triangles.size()) << "the order goes with the state";
+  run->advance(130);
+
+  // A new solver of the scene takes the order up with the state, whichever order it starts
+  // in, and renumbers again at the same looks.
+  for (const bool from_place : {false, true}) {
+    Scene cpu = s;
+    cpu.simulation.backend = Backend::Cpu;
+    const ParticleModel model = build_particle_model(cpu);
+    auto restarted = make_renumbering_solver(
+        cpu, model, from_place ? place_order(model) : scene_order(model), cpu_maker(cpu), kLook);
+    restarted->load_state(state);
+    restarted->advance(130);
+    test::expect_identical(snapshot_of(*run), snapshot_of(*restarted));
+    SolverState again;
+    restarted->save_state(again);
+    EXPECT_EQ(again.particle_order, state.particle_order);
+  }
+
+  // Without the order the restart steps the particles in another order: not the same bits
+  // (so the test above can tell).
+  SolverState without = state;
+  without.particle_order.clear();
+  auto other = renumbering(s);
+  other->load_state(without);
+  other->advance(130);
+  const Snapshot a = snapshot_of(*run), b = snapshot_of(*other);
+  bool differ = false;
+  for (std::size_t i = 0; i < a.size() && !differ; ++i) differ = a.vx[i] != b.vx[i];
+  EXPECT_TRUE(differ);
+}
+
+TEST(Renumbering, AStateWithAnOrderItCannotHaveIsRefused) {
+  const Scene s = mixed_pile();
+  auto run = renumbering(s);
+  run->advance(kLook);
+  ASSERT_TRUE(renumbered(*run));
+  SolverState state;
+  run->save_state(state);
+
+  auto refused = [&](void (*spoil)(SolverState&), const char* why) {
+    SolverState bad = state;
+    spoil(bad);
+    auto solver = renumbering(s);
+    try {
+      solver->load_state(bad);
+      ADD_FAILURE() << "accepted: " << why;
+    } catch (const RunError& e) {
+      EXPECT_NE(std::string(e.what()).find("particle order"), std::string::npos) << e.what();
+    }
+  };
+  refused([](SolverState& st) { st.particle_order.pop_back(); }, "an entry short");
+  refused([](SolverState& st) { st.particle_order[5] = st.particle_order[6]; }, "twice");
+  refused([](SolverState& st) { st.particle_order[7] = -1; }, "out of range");
+  refused([](SolverState& st) { std::swap(st.particle_order[0], st.particle_order[10]); },
+          "a wall moved");
+}
+
+TEST(Renumbering, ABodyPileRenumbersItsBodiesAsWholesAndRestartsBitForBit) {
+  const Scene s = shuffled_bodies(test::settling_body_pile());
+  auto reference = scene_solver(s);
+  auto run = renumbering(s, {}, kBodiesFarApart);
+  run->advance(kLook + 10);
+  ASSERT_TRUE(renumbered(*run)) << run->statistics();
+  SolverState state;
+  run->save_state(state);
+  ASSERT_EQ(state.body_order.size(), s.bodies.size());
+  run->advance(140);
+  reference->advance(kLook + 150);
+  const Snapshot a = snapshot_of(*reference), b = snapshot_of(*run);
+  expect_within_rounding(a, b, 1e-9, reference->dt());
+  EXPECT_EQ(a.member_body, b.member_body);
+  for (std::size_t k = 0; k < a.body_count(); ++k) {
+    ASSERT_NEAR(a.body_x[k], b.body_x[k], 1e-12) << "body " << k;
+    ASSERT_NEAR(a.body_omega[k], b.body_omega[k], 1e-6) << "body " << k;
+  }
+  auto restarted = renumbering(s, {}, kBodiesFarApart);
+  restarted->load_state(state);
+  restarted->advance(140);
+  test::expect_identical(b, snapshot_of(*restarted));
+}
+
+/// A solver whose contact copy reads it in finish(), as the CUDA copy's download does, and
+/// fails the test if the solver has gone by then.
+class WatchedSolver final : public test::ForwardingSolver {
+ public:
+  WatchedSolver(std::unique_ptr<Solver> inner, std::shared_ptr<std::atomic<int>> copies_of_gone)
+      : ForwardingSolver(std::move(inner)), gone_(std::move(copies_of_gone)) {}
+  ~WatchedSolver() override { alive_->store(false); }
+  std::unique_ptr<ContactCopy> make_contact_copy() const override {
+    return std::make_unique<Copy>(*this, alive_, gone_);
+  }
+
+ private:
+  class Copy final : public ContactCopy {
+   public:
+    Copy(const Solver& solver, std::shared_ptr<std::atomic<bool>> alive,
+         std::shared_ptr<std::atomic<int>> gone)
+        : solver_(solver), alive_(std::move(alive)), gone_(std::move(gone)) {}
+    void start() override {}
+    void finish(Snapshot& s) override {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      if (!alive_->load()) {
+        ++*gone_;
+        return;
+      }
+      Snapshot whole;
+      solver_.snapshot(whole, true);
+      s.contacts = std::move(whole.contacts);
+    }
+
+   private:
+    const Solver& solver_;
+    std::shared_ptr<std::atomic<bool>> alive_;
+    std::shared_ptr<std::atomic<int>> gone_;
+  };
+  std::shared_ptr<std::atomic<bool>> alive_ = std::make_shared<std::atomic<bool>>(true);
+  std::shared_ptr<std::atomic<int>> gone_;
+};
+
+TEST(Renumbering, AContactCopyInFlightHoldsTheRenumberingBackAndFollowsIt) {
+  const Scene s = mixed_pile();
+  auto gone = std::make_shared<std::atomic<int>>(0);
+  const MakeInnerSolver cpu = cpu_maker(s);
+  auto solver = renumbering(s, [&](const Scene& scene, const ParticleModel& m) {
+    return std::make_unique<WatchedSolver>(cpu(scene, m), gone);
+  });
+  solver->advance(kLook - 5);
+  const std::unique_ptr<ContactCopy> copy = solver->make_contact_copy();
+  ASSERT_TRUE(copy);
+  Snapshot frame;
+  solver->snapshot(frame, false);
+  copy->start();
+  // The frame thread finishes the copy while the steps go on past a look that renumbers.
+  std::thread frame_thread([&] { copy->finish(frame); });
+  solver->advance(10);
+  frame_thread.join();
+  EXPECT_TRUE(renumbered(*solver));
+  EXPECT_EQ(gone->load(), 0) << "the solver was replaced while its contacts were copied";
+  EXPECT_FALSE(frame.contacts.empty());
+
+  // The next frame's copy is the new solver's, in the scene's ids.
+  solver->advance(20);
+  Snapshot next;
+  solver->snapshot(next, false);
+  copy->start();
+  copy->finish(next);
+  const Snapshot whole = snapshot_of(*solver);
+  EXPECT_GT(whole.contacts.size(), 30u);
+  test::expect_identical(whole, next);
+}
+
+}  // namespace TRIDEM_TEST_FILE
+}  // namespace
+}  // namespace tridem
