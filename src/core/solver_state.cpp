@@ -52,6 +52,17 @@ void validate_solver_state(const SolverState& s, std::size_t particles, std::siz
       if (!std::isfinite(v[b]))
         throw Error(fmt::format("{}: {} of body {} is not finite ({})", source, what, b, v[b]));
   });
+  // An order names every particle (and body) or none; the solver that takes it up checks
+  // that it is one it could have (core/place_numbered_solver).
+  const bool ordered = !s.particle_order.empty() || !s.body_order.empty();
+  if (ordered && s.particle_order.size() != particles)
+    throw Error(fmt::format("{}: state has a particle order of {} entries for {} particles (a "
+                            "checkpoint of another scene?)",
+                            source, s.particle_order.size(), particles));
+  if (ordered && s.body_order.size() != bodies)
+    throw Error(fmt::format("{}: state has a bodies' order of {} entries for {} bodies of "
+                            "several triangles (a checkpoint of another scene?)",
+                            source, s.body_order.size(), bodies));
   const std::size_t m = s.pair_emitter.size();
   for_each_pair_history_field([&](auto field) {
     if (s.column(field).size() != m)

@@ -113,6 +113,18 @@ void read_bonds(io::ByteReader& r, SolverState& s, const std::string& source) {
   for (double& v : s.bond_dissipated) get(r, v, "bond energy");
 }
 
+/// An order's block (version 7): its count, then its entries.
+void read_order(io::ByteReader& r, std::vector<std::int32_t>& order, const char* what,
+                const std::string& source) {
+  const std::uint64_t count = r.u64(what);
+  if (count > r.remaining() / 4)
+    throw RunError(fmt::format("{}: corrupt: a {} of {} entries does not fit in the {} bytes "
+                               "of state left",
+                               source, what, count, r.remaining()));
+  order.resize(count);
+  for (std::int32_t& id : order) id = r.i32(what);
+}
+
 SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version,
                          const std::string& source, std::vector<PhysicsSetting>& settings) {
   SolverState s;
@@ -133,6 +145,10 @@ SolverState read_payload(io::ByteReader& r, std::size_t n, std::uint32_t version
   });
   if (version >= fmt_::kBodiesVersion) read_bodies(r, s, source);  // version 4: no bodies
   if (version >= fmt_::kBondsVersion) read_bonds(r, s, source);    // version 5: no bonds
+  if (version >= fmt_::kOrderVersion) {                            // version 6: no order
+    read_order(r, s.particle_order, "particle order", source);
+    read_order(r, s.body_order, "bodies' order", source);
+  }
   const std::uint64_t m = r.u64("pair count");
   if (m > r.remaining() / fmt_::kBytesPerPair || m * fmt_::kBytesPerPair != r.remaining())
     throw RunError(fmt::format("{}: corrupt: {} pairs of contact history do not fill the "
@@ -157,7 +173,8 @@ std::vector<std::uint8_t> encode_checkpoint(const Checkpoint& c) {
   const SolverState& s = c.state;
   const std::vector<std::uint8_t> opening =
       checkpoint_pieces::encode_opening(c.meta, s.step, s.time);
-  const checkpoint_pieces::Counts total{s.size(), s.bodies(), s.bonds(), s.pairs()};
+  const checkpoint_pieces::Counts total{
+      s.size(), s.bodies(), s.bonds(), s.pairs(), s.particle_order.size(), s.body_order.size()};
   const std::uint64_t size = checkpoint_pieces::payload_size(opening.size(), total);
   std::vector<std::uint8_t> bytes(fmt_::kHeaderSize + size);
   const std::span<std::uint8_t> payload = std::span(bytes).subspan(fmt_::kHeaderSize);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <utility>
 
 namespace tridem::checkpoint_pieces {
 
@@ -51,7 +52,7 @@ std::vector<std::uint8_t> encode_opening(const CheckpointMeta& meta, std::int64_
 std::uint64_t payload_size(std::uint64_t opening_size, const Counts& total) {
   return opening_size + layout::kBytesPerParticle * total.particles + 8 +
          layout::kBytesPerBody * total.bodies + 8 + layout::kBytesPerBond * total.bonds + 8 +
-         layout::kBytesPerPair * total.pairs;
+         4 * total.ordered + 8 + 4 * total.ordered_bodies + 8 + layout::kBytesPerPair * total.pairs;
 }
 
 void encode_slice(const SolverState& s, const Counts& first, const Counts& total,
@@ -63,6 +64,18 @@ void encode_slice(const SolverState& s, const Counts& first, const Counts& total
     misfit("bodies", s.bodies(), first.bodies, total.bodies);
   if (first.bonds + s.bonds() > total.bonds) misfit("bonds", s.bonds(), first.bonds, total.bonds);
   if (first.pairs + s.pairs() > total.pairs) misfit("pairs", s.pairs(), first.pairs, total.pairs);
+  // The order is written whole by the writer that counts, or not at all.
+  const bool order = counts && total.ordered + total.ordered_bodies > 0;
+  if (order && (total.ordered != total.particles || total.ordered_bodies != total.bodies))
+    misfit("entries of an order", total.ordered, total.ordered_bodies, total.particles);
+  if (!s.particle_order.empty() || !s.body_order.empty()) {
+    if (!order || s.particle_order.size() != total.ordered)
+      misfit("entries of the particle order", s.particle_order.size(), 0, total.ordered);
+    if (s.body_order.size() != total.ordered_bodies)
+      misfit("entries of the bodies' order", s.body_order.size(), 0, total.ordered_bodies);
+  } else if (order) {
+    misfit("entries of the particle order", 0, 0, total.ordered);
+  }
   // Every array of a block as long as the block: else its pieces would not tile the file.
   SolverState::for_each_body_column([&](auto field) {
     if (s.column(field).size() != s.bodies())
@@ -112,6 +125,13 @@ void encode_slice(const SolverState& s, const Counts& first, const Counts& total
   for (double value : s.bond_dissipated) put(w, value);
   flush(at + 8 * first.bonds);
   at += 8 * total.bonds;
+  for (const auto& [entries, count] : {std::pair{&s.particle_order, total.ordered},
+                                       std::pair{&s.body_order, total.ordered_bodies}}) {
+    if (counts) w.u64(count);
+    for (const std::int32_t id : *entries) put(w, id);
+    flush(at);
+    at += 8 + 4 * count;
+  }
   if (counts) w.u64(total.pairs);
   flush(at);
   at += 8;

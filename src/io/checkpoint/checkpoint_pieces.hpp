@@ -18,6 +18,9 @@ namespace tridem::checkpoint_pieces {
 /// totals, or the first of each in a slice.
 struct Counts {
   std::uint64_t particles = 0, bodies = 0, bonds = 0, pairs = 0;
+  /// Entries of the particle order's block and of the bodies' (0 or all: one writer holds
+  /// the order whole, at the start of the slice that counts).
+  std::uint64_t ordered = 0, ordered_bodies = 0;
 };
 
 /// Receives a piece: its bytes, to go at `offset` in the payload (after the header).

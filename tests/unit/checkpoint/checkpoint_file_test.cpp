@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace tridem {
 namespace {
@@ -45,18 +46,25 @@ Checkpoint sample_checkpoint() {
   return c;
 }
 
-/// `c` (without bonds) as `version` wrote it: 5, the same layout without the bonds' count;
-/// 4 (`c` without bodies too), without the bodies' count either.
+/// `c` (without bonds or an order) as `version` wrote it: 6, the same layout without the
+/// orders' counts; 5, without the bonds' count too; 4 (`c` without bodies too), without the
+/// bodies' count either.
 std::vector<std::uint8_t> older_bytes(const Checkpoint& c, std::uint32_t version) {
   namespace layout = checkpoint_format;
+  EXPECT_EQ(c.state.bonds(), 0u);
+  EXPECT_TRUE(c.state.particle_order.empty());
   auto bytes = encode_checkpoint(c);
   std::size_t settings = 4;
   for (const PhysicsSetting& p : c.meta.settings) settings += 8 + p.key.size() + p.value.size();
   const std::size_t body_count_at =
       layout::kHeaderSize + 16 + settings + layout::kBytesPerParticle * c.state.size();
   const std::size_t bond_count_at = body_count_at + 8 + layout::kBytesPerBody * c.state.bodies();
-  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at),
-              bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at + 8));
+  const std::size_t order_counts_at = bond_count_at + 8;
+  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(order_counts_at),
+              bytes.begin() + static_cast<std::ptrdiff_t>(order_counts_at + 16));
+  if (version <= 5)
+    bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at),
+                bytes.begin() + static_cast<std::ptrdiff_t>(bond_count_at + 8));
   if (version == 4)
     bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at),
                 bytes.begin() + static_cast<std::ptrdiff_t>(body_count_at + 8));
@@ -122,7 +130,7 @@ TEST(CheckpointFile, Version4IsReadAsAStateWithoutBodies) {
   Checkpoint c = sample_checkpoint();
   SolverState::for_each_body_column([&](auto field) { c.state.column(field).clear(); });
   const auto v4 = older_bytes(c, 4);
-  EXPECT_EQ(v4.size() + 16, encode_checkpoint(c).size());
+  EXPECT_EQ(v4.size() + 32, encode_checkpoint(c).size());
   const Checkpoint back = decode_checkpoint(v4, "old.ckpt");
   EXPECT_EQ(back.state.bodies(), 0u);
   EXPECT_EQ(back.state.step, c.state.step);
@@ -139,7 +147,7 @@ TEST(CheckpointFile, Version4IsReadAsAStateWithoutBodies) {
 TEST(CheckpointFile, Version5IsReadAsAStateWithoutBonds) {
   const Checkpoint c = sample_checkpoint();
   const auto v5 = older_bytes(c, 5);
-  EXPECT_EQ(v5.size() + 8, encode_checkpoint(c).size());
+  EXPECT_EQ(v5.size() + 24, encode_checkpoint(c).size());
   const Checkpoint back = decode_checkpoint(v5, "old.ckpt");
   EXPECT_EQ(back.state.bonds(), 0u);
   EXPECT_TRUE(back.state.bond_damage.empty());
@@ -147,6 +155,38 @@ TEST(CheckpointFile, Version5IsReadAsAStateWithoutBonds) {
   EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
   for (std::size_t size = 0; size < v5.size(); ++size)
     expect_refused(std::span(v5).first(size), "truncated");
+}
+
+TEST(CheckpointFile, Version6IsReadAsAStateInTheOrderTheSceneGives) {
+  const Checkpoint c = sample_checkpoint();
+  const auto v6 = older_bytes(c, 6);
+  EXPECT_EQ(v6.size() + 16, encode_checkpoint(c).size());
+  const Checkpoint back = decode_checkpoint(v6, "old.ckpt");
+  EXPECT_TRUE(back.state.particle_order.empty());
+  EXPECT_EQ(back.state.x, c.state.x);
+  EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
+  for (std::size_t size = 0; size < v6.size(); ++size)
+    expect_refused(std::span(v6).first(size), "truncated");
+}
+
+// A run renumbered mid-way (core/place_numbered_solver) keeps its particles' order.
+TEST(CheckpointFile, TheParticleOrderRoundTripsAndABadOneIsRefused) {
+  Checkpoint c = sample_checkpoint();
+  c.state.particle_order.resize(c.state.size());
+  std::iota(c.state.particle_order.rbegin(), c.state.particle_order.rend(), 0);
+  c.state.body_order.resize(c.state.bodies());
+  std::iota(c.state.body_order.rbegin(), c.state.body_order.rend(), 0);
+  const auto bytes = encode_checkpoint(c);
+  EXPECT_EQ(bytes.size(), encode_checkpoint(sample_checkpoint()).size() +
+                              4 * (c.state.size() + c.state.bodies()));
+  const Checkpoint back = decode_checkpoint(bytes, "mem");
+  EXPECT_EQ(back.state.particle_order, c.state.particle_order);
+  EXPECT_EQ(back.state.body_order, c.state.body_order);
+  EXPECT_EQ(back.state.pair_slip, c.state.pair_slip);
+  for (std::size_t size = 0; size < bytes.size(); ++size)
+    expect_refused(std::span(bytes).first(size), "truncated");
+  c.state.particle_order.pop_back();  // an order names every particle: never written
+  EXPECT_THROW(encode_checkpoint(c), RunError);
 }
 
 TEST(CheckpointFile, BondsRoundTripAndBadOnesAreRefused) {
@@ -219,16 +259,16 @@ TEST(CheckpointFile, TrailingBytesAndOtherFilesAreRefused) {
 
 TEST(CheckpointFile, OtherVersionIsRefusedByName) {
   // Versions 1 (before the physics settings), 2 (before the energy sums) and 3 (six edge
-  // slips per pair, before the contact of issue 10), and the next one (7), with a
+  // slips per pair, before the contact of issue 10), and the next one (8), with a
   // consistent header checksum: refused for the version, not as damage.
   Checkpoint c = sample_checkpoint();
   auto bytes = encode_checkpoint(c);
-  for (const int version : {1, 2, 3, 7}) {
+  for (const int version : {1, 2, 3, 8}) {
     bytes[8] = static_cast<std::uint8_t>(version);
     const std::uint32_t crc = io::crc32(std::span(bytes).first(44));  // as the writer does
     for (int k = 0; k < 4; ++k) bytes[44 + k] = static_cast<std::uint8_t>(crc >> (8 * k));
     expect_refused(bytes, "checkpoint format version " + std::to_string(version) +
-                              "; this tridem reads versions 4 to 6");
+                              "; this tridem reads versions 4 to 7");
   }
 }
 

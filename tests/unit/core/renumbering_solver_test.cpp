@@ -10,9 +10,11 @@
 #include "core/time_step.hpp"
 #include "support/body_scenes.hpp"
 #include "support/forwarding_solver.hpp"
+#include "support/gpu.hpp"
 #include "support/place_order_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/snapshot_compare.hpp"
+#include "tridem/checkpoint.hpp"
 #include "tridem/contact_copy.hpp"
 #include "tridem/error.hpp"
 
@@ -123,6 +125,10 @@ TEST(Renumbering, ARestartFromAStateSavedAfterRenumberingGoesOnBitForBit) {
   SolverState state;
   run->save_state(state);
   ASSERT_EQ(state.particle_order.size(), s.triangles.size()) << "the order goes with the state";
+  // and with a checkpoint file's bytes.
+  Checkpoint file;
+  file.state = state;
+  state = decode_checkpoint(encode_checkpoint(file), "mem").state;
   run->advance(130);
 
   // A new solver of the scene takes the order up with the state, whichever order it starts
@@ -169,7 +175,7 @@ TEST(Renumbering, AStateWithAnOrderItCannotHaveIsRefused) {
     try {
       solver->load_state(bad);
       ADD_FAILURE() << "accepted: " << why;
-    } catch (const RunError& e) {
+    } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find("particle order"), std::string::npos) << e.what();
     }
   };
@@ -272,6 +278,51 @@ TEST(Renumbering, AContactCopyInFlightHoldsTheRenumberingBackAndFollowsIt) {
   const Snapshot whole = snapshot_of(*solver);
   EXPECT_GT(whole.contacts.size(), 30u);
   test::expect_identical(whole, next);
+}
+
+TEST(GpuRenumbering, AMixedPileRenumbersWithinRoundingRestartsBitForBitAndCopiesItsContacts) {
+  TRIDEM_SKIP_WITHOUT_GPU();
+  Scene s = mixed_pile();
+  s.simulation.backend = Backend::Cuda;
+  const ParticleModel model = build_particle_model(s);
+  const TimeStep ts = estimate_time_step(s, model);
+  const MakeInnerSolver cuda = [ts](const Scene& scene, const ParticleModel& m) {
+    SolverConfig config;
+    config.particle_order = ParticleOrder::Scene;
+    return make_solver(scene, m, ts, config);
+  };
+  auto reference = cuda(s, model);
+  auto run = make_renumbering_solver(s, model, scene_order(model), cuda, kLook);
+  // A frame's contacts copied beside the steps across the look that renumbers.
+  run->advance(kLook - 5);
+  const std::unique_ptr<ContactCopy> copy = run->make_contact_copy();
+  ASSERT_TRUE(copy);
+  Snapshot frame;
+  run->snapshot(frame, false);
+  copy->start();
+  std::thread frame_thread([&] { copy->finish(frame); });
+  run->advance(25);
+  frame_thread.join();
+  ASSERT_TRUE(renumbered(*run)) << run->statistics();
+  EXPECT_FALSE(frame.contacts.empty());
+  SolverState state;
+  run->save_state(state);
+  ASSERT_EQ(state.particle_order.size(), s.triangles.size());
+  run->advance(200);
+  reference->advance(kLook + 220);
+  expect_within_rounding(snapshot_of(*reference), snapshot_of(*run), 1e-9, reference->dt());
+
+  // The next frame's copy is the new solver's, in the scene's ids.
+  Snapshot next;
+  run->snapshot(next, false);
+  copy->start();
+  copy->finish(next);
+  test::expect_identical(snapshot_of(*run), next);
+
+  auto restarted = make_renumbering_solver(s, model, scene_order(model), cuda, kLook);
+  restarted->load_state(state);
+  restarted->advance(200);
+  test::expect_identical(snapshot_of(*run), snapshot_of(*restarted));
 }
 
 }  // namespace TRIDEM_TEST_FILE
