@@ -58,7 +58,12 @@
 //                     random order (fixed seed): what the particles' order costs;
 //                     curve_pile(n) numbers them along a Hilbert curve (numbering = "space");
 //                     shuffled_body_pile(n) is body_pile(n) with its bodies in a random
-//                     order (members together)
+//                     order (members together); sheared_pile(n) numbers dense_pile(n)'s
+//                     grains along the curve through where they were before a simple
+//                     shear of strain --order_strain (x - strain·y): the order a flow
+//                     numbered by place leaves after that strain (counter `apart`, the
+//                     numbering's mean distance between consecutive grains in grain sizes)
+//   --order_strain=X  sheared_pile's strain (default 10)
 //   --particle_order=auto|scene|place  SolverConfig::particle_order (default auto, as
 //                     tridem run: shuffled_pile from 10^5 is then numbered by place inside
 //                     the solver; scene measures the scene's random order)
@@ -71,6 +76,8 @@
 //                     step from the boxes themselves (same results: what keeping it gives)
 #include "backends/cuda/cuda_backend.hpp"
 #include "bench_flags.hpp"
+#include "core/numbering_note.hpp"
+#include "core/particle_model.hpp"
 #include "core/place_numbered_solver.hpp"
 #include "core/space_filling_order.hpp"
 #include "tridem/setting_names.hpp"
@@ -174,9 +181,9 @@ std::size_t g_contact_rows_per_copy = 0;
 tridem::ParticleOrder g_particle_order = tridem::ParticleOrder::Auto;
 
 /// Which standard pile a case measures.
-enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve, ShuffledBodies };
-constexpr Pile kPiles[] = {Pile::Dense,    Pile::Bodies, Pile::Bonded,        Pile::Settled,
-                           Pile::Shuffled, Pile::Curve,  Pile::ShuffledBodies};
+enum class Pile { Dense, Bodies, Bonded, Settled, Shuffled, Curve, ShuffledBodies, Sheared };
+constexpr Pile kPiles[] = {Pile::Dense,    Pile::Bodies, Pile::Bonded,         Pile::Settled,
+                           Pile::Shuffled, Pile::Curve,  Pile::ShuffledBodies, Pile::Sheared};
 const char* pile_name(Pile p) {
   switch (p) {
     case Pile::Dense: return "dense_pile";
@@ -186,9 +193,13 @@ const char* pile_name(Pile p) {
     case Pile::Shuffled: return "shuffled_pile";
     case Pile::Curve: return "curve_pile";
     case Pile::ShuffledBodies: return "shuffled_body_pile";
+    case Pile::Sheared: return "sheared_pile";
   }
   return "";
 }
+
+/// --order_strain: sheared_pile's strain.
+double g_order_strain = 10;
 
 /// --settle_steps: how long settled_pile settles.
 std::int64_t g_settle_steps = 50000;
@@ -220,6 +231,25 @@ tridem::Scene make_pile(Pile kind, std::size_t n) {
       tridem::Scene s = tridem::dense_pile(n);
       s.source = "curve_pile";
       tridem::number_by_place(s.triangles, s.triangles.size() - 3);
+      return s;
+    }
+    case Pile::Sheared: {
+      // Numbered along the curve where the grains were a strain ago (x - strain·y: a simple
+      // shear along x), as a run numbered by place finds its grains after that strain; the
+      // walls stay last. The same triangles as dense_pile's, in that order.
+      tridem::Scene s = tridem::dense_pile(n);
+      s.source = "sheared_pile";
+      const std::size_t grains = s.triangles.size() - 3;
+      std::vector<tridem::Vec2d> before(grains);
+      for (std::size_t i = 0; i < grains; ++i) {
+        const auto& v = s.triangles[i].vertices;
+        const tridem::Vec2d c = (v[0] + v[1] + v[2]) / 3.0;
+        before[i] = {c.x - g_order_strain * c.y, c.y};
+      }
+      const std::vector<std::size_t> order = tridem::space_filling_order(before);
+      std::vector<tridem::TriangleSpec> grains_in_order(grains);
+      for (std::size_t k = 0; k < grains; ++k) grains_in_order[k] = s.triangles[order[k]];
+      std::copy(grains_in_order.begin(), grains_in_order.end(), s.triangles.begin());
       return s;
     }
     case Pile::ShuffledBodies: {
@@ -346,6 +376,8 @@ void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std
   state.counters["first_step"] = static_cast<double>(settled + kWarmupSteps + 1);
   state.counters["settle_steps"] = static_cast<double>(settled);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
+  state.counters["apart"] =
+      tridem::consecutive_id_distance(tridem::build_particle_model(pile(kind, n)));
   double v2 = 0;
   std::size_t free = 0;
   for (std::size_t i = 0; i < snap.size(); ++i)
@@ -433,15 +465,18 @@ int main(int argc, char** argv) {
       const auto* p = std::find_if(std::begin(kPiles), std::end(kPiles),
                                    [&](Pile x) { return name == pile_name(x); });
       if (p == std::end(kPiles)) {
-        std::cerr << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
-                     "settled_pile, shuffled_pile, curve_pile, shuffled_body_pile; got '"
-                  << name << "'\n";
+        std::cerr
+            << "tridem_bench: --scenes wants a list of dense_pile, body_pile, bonded_pile, "
+               "settled_pile, shuffled_pile, curve_pile, shuffled_body_pile, sheared_pile; got '"
+            << name << "'\n";
         return 2;
       }
       piles.push_back(*p);
       at = comma + 1;
     }
   }
+  if (const std::string text = take_flag(argc, argv, "order_strain"); !text.empty())
+    g_order_strain = parse_number("tridem_bench", "order_strain", text);
   if (const std::string text = take_flag(argc, argv, "settle_steps"); !text.empty())
     g_settle_steps = static_cast<std::int64_t>(parse_number("tridem_bench", "settle_steps", text));
   g_run_ahead = take_flag(argc, argv, "run_ahead") != "0";
