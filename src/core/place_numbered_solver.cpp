@@ -422,7 +422,6 @@ void PlaceNumberedSolver::replace_inner(PlaceOrder order, const ParticleModel& m
   retired_times_.steps += t.steps;
   retired_times_.timed_steps += t.timed_steps;
   const Scene& scene = renumbering_->scene;
-  auto numbering = std::make_shared<const PlaceNumbering>(order, scene, model);
   {
     const std::lock_guard lock(inner_->mutex);
     inner_->solver.reset();  // its memory (the GPU's) goes before the new solver's comes
@@ -430,7 +429,7 @@ void PlaceNumberedSolver::replace_inner(PlaceOrder order, const ParticleModel& m
                          ? renumbering_->make(scene, reordered_model(scene, model, order))
                          : renumbering_->make(reordered_scene(scene, order),
                                               reordered_model(scene, model, order));
-    inner_->numbering = std::move(numbering);
+    inner_->numbering = std::make_shared<const PlaceNumbering>(std::move(order), scene, model);
     ++inner_->generation;
   }
   order_from_scene_ = false;
