@@ -62,7 +62,8 @@
 //                     grains along the curve through where they were before a simple
 //                     shear of strain --order_strain (x - strain·y): the order a flow
 //                     numbered by place leaves after that strain (counter `apart`, the
-//                     numbering's mean distance between consecutive grains in grain sizes)
+//                     numbering's mean distance between consecutive grains in grain sizes,
+//                     and `blocks`, its neighbour_block_spread: core/neighbour_blocks.hpp)
 //   --order_strain=X  sheared_pile's strain (default 10)
 //   --particle_order=auto|scene|place  SolverConfig::particle_order (default auto, as
 //                     tridem run: shuffled_pile from 10^5 is then numbered by place inside
@@ -76,6 +77,7 @@
 //                     step from the boxes themselves (same results: what keeping it gives)
 #include "backends/cuda/cuda_backend.hpp"
 #include "bench_flags.hpp"
+#include "core/neighbour_blocks.hpp"
 #include "core/numbering_note.hpp"
 #include "core/particle_model.hpp"
 #include "core/place_numbered_solver.hpp"
@@ -376,8 +378,14 @@ void pile_case(benchmark::State& state, Variant v, Pile kind, std::size_t n, std
   state.counters["first_step"] = static_cast<double>(settled + kWarmupSteps + 1);
   state.counters["settle_steps"] = static_cast<double>(settled);
   state.counters["contacts_per_tri"] = static_cast<double>(snap.contacts.size()) / tri;
-  state.counters["apart"] =
-      tridem::consecutive_id_distance(tridem::build_particle_model(pile(kind, n)));
+  {
+    const tridem::ParticleModel model = tridem::build_particle_model(pile(kind, n));
+    state.counters["apart"] = tridem::consecutive_id_distance(model);
+    std::vector<std::uint8_t> free(model.size());
+    for (std::size_t i = 0; i < free.size(); ++i) free[i] = model.motion[i] == tridem::Motion::Free;
+    state.counters["blocks"] =
+        tridem::neighbour_block_spread(model.centroid, free, tridem::free_grain_size(model));
+  }
   double v2 = 0;
   std::size_t free = 0;
   for (std::size_t i = 0; i < snap.size(); ++i)

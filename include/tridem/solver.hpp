@@ -97,9 +97,10 @@ struct SolverConfig {
   ParticleOrder particle_order = ParticleOrder::Auto;
   /// Under Auto and Place, a solver of at least 10^5 particles looks at its order every
   /// this many steps (at the steps that are multiples of it) and numbers its particles by
-  /// place again when consecutive ones have drifted over 20 grain sizes apart, as a flow
-  /// mixes the grains; 0 = never. The looks are a function of the step and the state, so a
-  /// run is reproduced bit for bit, and its checkpoints carry the order.
+  /// place again when the neighbours of consecutive ones have scattered in memory
+  /// (core/neighbour_blocks.hpp), as a flow mixes the grains; 0 = never. The looks are a function
+  /// of the step and the state, so a run is reproduced bit for bit, and its checkpoints carry the
+  /// order.
   std::int64_t order_check_steps = 10000;
 };
 

@@ -2,6 +2,7 @@
 
 #include "broadphase/candidate_pairs.hpp"
 #include "broadphase/emitter_rule.hpp"
+#include "core/neighbour_blocks.hpp"
 #include "core/numbering_note.hpp"
 #include "core/space_filling_order.hpp"
 #include "tridem/error.hpp"
@@ -248,7 +249,7 @@ struct Renumbering {
   Scene scene;  ///< the scene (its model is built again when it renumbers)
   MakeInnerSolver make;
   std::int64_t check_steps = 0;
-  double far_apart = kFarNumbering;     ///< mixed: consecutive ones further apart, in sizes
+  double scattered = kScatteredNeighbours;  ///< mixed: neighbour_block_spread beyond
   double grain_size = 0;                ///< the free particles' mean size
   double body_size = 0;                 ///< the free bodies' mean size (the root of their area)
   std::vector<std::uint8_t> free_body;  ///< by scene body id
@@ -299,8 +300,8 @@ class PlaceNumberedSolver final : public Solver {
  private:
   Solver& solver() const { return *inner_->solver; }
   const PlaceNumbering& numbering() const { return *inner_->numbering; }
-  /// Whether the inner solver's consecutive free particles now lie over kFarNumbering grain
-  /// sizes apart.
+  /// Whether the neighbours of the inner solver's consecutive free particles (or bodies)
+  /// have scattered in memory (core/neighbour_blocks.hpp).
   bool mixed() const;
   /// The inner solver replaced by one of `state`'s particles (in the scene's ids) in
   /// `order`, continuing from `state`.
@@ -391,27 +392,20 @@ bool PlaceNumberedSolver::mixed() const {
   solver().snapshot(now, false);
   const PlaceNumbering& m = numbering();
   // Bodies of several triangles: their members lie together whatever the order, so the
-  // bodies' centroids tell how far apart consecutive ones are.
+  // bodies' centroids tell where consecutive ones' neighbours lie.
   const bool bodies = !m.body_scene_of.empty();
   const std::vector<double>& x = bodies ? now.body_x : now.x;
   const std::vector<double>& y = bodies ? now.body_y : now.y;
   const std::vector<std::int32_t>& scene_of = bodies ? m.body_scene_of : m.scene_of;
   const std::vector<std::uint8_t>& free = bodies ? renumbering_->free_body : m.free;
-  const auto n = static_cast<std::int64_t>(x.size());
-  double distance = 0;
-  std::int64_t pairs = 0;
-#pragma omp parallel for schedule(static) reduction(+ : distance, pairs) if (n > 65536)
-  for (std::int64_t k = 0; k < n - 1; ++k) {
-    const auto a = static_cast<std::size_t>(k), b = a + 1;
-    if (free[static_cast<std::size_t>(scene_of[a])] == 0 ||
-        free[static_cast<std::size_t>(scene_of[b])] == 0)
-      continue;
-    distance += std::hypot(x[b] - x[a], y[b] - y[a]);
-    ++pairs;
+  std::vector<Vec2d> centroid(x.size());
+  std::vector<std::uint8_t> inner_free(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    centroid[k] = {x[k], y[k]};
+    inner_free[k] = free[static_cast<std::size_t>(scene_of[k])];
   }
   const double size = bodies ? renumbering_->body_size : renumbering_->grain_size;
-  return pairs > 0 && size > 0 &&
-         distance / static_cast<double>(pairs) > renumbering_->far_apart * size;
+  return neighbour_block_spread(centroid, inner_free, size) > renumbering_->scattered;
 }
 
 void PlaceNumberedSolver::replace_inner(PlaceOrder order, const ParticleModel& model,
@@ -705,7 +699,7 @@ std::unique_ptr<Solver> make_place_numbered_solver(std::unique_ptr<Solver> inner
 
 std::unique_ptr<Solver> make_renumbering_solver(const Scene& scene, const ParticleModel& model,
                                                 PlaceOrder order, const MakeInnerSolver& make,
-                                                std::int64_t check_steps, double far_apart) {
+                                                std::int64_t check_steps, double scattered) {
   const PlaceNumbering initial(order, scene, model);
   std::unique_ptr<Solver> inner;
   if (initial.identity)
@@ -718,7 +712,7 @@ std::unique_ptr<Solver> make_renumbering_solver(const Scene& scene, const Partic
   renumbering->scene = scene;
   renumbering->make = make;
   renumbering->check_steps = check_steps;
-  renumbering->far_apart = far_apart;
+  renumbering->scattered = scattered;
   renumbering->grain_size = free_grain_size(model);
   const BodyModel& bodies = model.bodies;
   renumbering->free_body.resize(bodies.size());

@@ -8,6 +8,7 @@
 // array, the contacts' and bonds' ends), saved and loaded states (so checkpoints are in the
 // scene's ids, and either numbering continues the other's), and the particles its
 // messages name (ParticleModel::shown_ids).
+#include "core/neighbour_blocks.hpp"
 #include "core/numbering_note.hpp"
 #include "core/particle_model.hpp"
 #include "tridem/scene.hpp"
@@ -77,15 +78,15 @@ using MakeInnerSolver =
 /// A solver of `scene` (its model `model`) whose inner solver, made by `make`, steps the
 /// particles in `order` (scene_order(model) for the scene's own, then shown as they are),
 /// and which, at every step that is a multiple of `check_steps` (0: never), numbers them
-/// by place again (place_order(model, state)) when its consecutive free particles (bodies
-/// of several triangles: bodies) lie over `far_apart` of their mean sizes apart (the root of
-/// their area): it saves its state, makes the inner solver again in the
-/// new order and loads the state into it. Its saved states then carry the order
-/// (SolverState::particle_order), which its load_state takes up, so that a restart goes on
-/// bit for bit. It keeps a copy of the scene for that.
+/// by place again (place_order(model, state)) when the neighbours of its consecutive free
+/// particles (bodies of several triangles: bodies) have scattered in memory, their
+/// neighbour_block_spread over `scattered` (core/neighbour_blocks.hpp): it saves its
+/// state, makes the inner solver again in the new order and loads the state into it. Its saved
+/// states then carry the order (SolverState::particle_order), which its load_state takes up, so
+/// that a restart goes on bit for bit. It keeps a copy of the scene for that.
 std::unique_ptr<Solver> make_renumbering_solver(const Scene& scene, const ParticleModel& model,
                                                 PlaceOrder order, const MakeInnerSolver& make,
                                                 std::int64_t check_steps,
-                                                double far_apart = kFarNumbering);
+                                                double scattered = kScatteredNeighbours);
 
 }  // namespace tridem
