@@ -10,7 +10,7 @@ set -u
 source scripts/device_env.sh >/dev/null
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$OUT/gpu.txt"
 timeout 400 .devbin/tests/tridem_tests \
-  --gtest_filter='GpuRenumbering*:GpuPlaceNumbering*:Gpu/StateHash.*:*ContactCopy*:Gpu*Restart*:*Checkpoint*:Renumbering*:PlaceNumbering*' \
+  --gtest_filter='GpuRenumbering*:GpuPlaceNumbering*:Gpu/StateHash.*:*ContactCopy*:Gpu*Restart*:*Checkpoint*:Renumbering*:PlaceNumbering*:NeighbourBlocks*' \
   >"$OUT/tests.log" 2>&1
 echo "tests exit $?"
 gtest_summary "$OUT/tests.log"
@@ -18,13 +18,13 @@ for strain in ${STRAINS:-1 3 10 30 100}; do
   .devbin/bench/tridem_bench --scenes=sheared_pile --backends=cuda-float,cuda --min_n=1e6 --max_n=1e6 \
     --order_strain="$strain" --particle_order=scene --benchmark_repetitions=3 \
     --benchmark_report_aggregates_only=true 2>&1 | grep median |
-    grep -o '^[a-z_]*/[a-z-]*/n:[0-9]*\|apart=[^ ]*\|stage_pair_forces=[^ ]*\|tri_steps_per_s=[^ ]*' |
-    paste - - - - | sed "s/^/strain=$strain /" | tee -a "$OUT/sheared.txt"
+    grep -o '^[a-z_]*/[a-z-]*/n:[0-9]*\|apart=[^ ]*\|blocks=[^ ]*\|stage_pair_forces=[^ ]*\|tri_steps_per_s=[^ ]*' |
+    paste - - - - - | sed "s/^/strain=$strain /" | tee -a "$OUT/sheared.txt"
 done
 .devbin/bench/tridem_bench --scenes=curve_pile,shuffled_pile --backends=cuda-float,cuda --min_n=1e6 --max_n=1e6 \
   --particle_order=scene --benchmark_repetitions=3 --benchmark_report_aggregates_only=true 2>&1 | grep median |
-  grep -o '^[a-z_]*/[a-z-]*/n:[0-9]*\|apart=[^ ]*\|stage_pair_forces=[^ ]*\|tri_steps_per_s=[^ ]*' |
-  paste - - - - | tee -a "$OUT/sheared.txt"
+  grep -o '^[a-z_]*/[a-z-]*/n:[0-9]*\|apart=[^ ]*\|blocks=[^ ]*\|stage_pair_forces=[^ ]*\|tri_steps_per_s=[^ ]*' |
+  paste - - - - - | tee -a "$OUT/sheared.txt"
 VARIANTS=cuda-float OUTPUT_KEYS='contacts_csv = false' EVERY=1000 REPS=3 timeout 150 \
   bench/run_cli_vs_bench_on_device.sh /tmp/cvb_dense 1000000 10000 2>&1 | tail -4
 cp /tmp/cvb_dense/summary.txt "$OUT/dense_summary.txt"
