@@ -24,6 +24,8 @@ if [ -x "$build/bench/tridem_live_client" ]; then cp "$build/bench/tridem_live_c
 if [ -x "$build/bench/tridem_frame_bench" ]; then cp "$build/bench/tridem_frame_bench" "$dest/bench/"; fi
 # The pile as a scene file for tridem run (bench/run_cli_vs_bench_on_device.sh), where the build has it.
 if [ -x "$build/bench/tridem_write_pile_scene" ]; then cp "$build/bench/tridem_write_pile_scene" "$dest/bench/"; fi
+# What numbering the particles by place again mid-run costs (bench/renumber), where built.
+if [ -x "$build/bench/tridem_renumber_cost" ]; then cp "$build/bench/tridem_renumber_cost" "$dest/bench/"; fi
 # What one live frame costs the stepping thread (bench/live/frame_cost.cpp), where built.
 if [ -x "$build/bench/tridem_live_frame_cost" ]; then cp "$build/bench/tridem_live_frame_cost" "$dest/bench/"; fi
 cp "$build/tests/tridem_tests" "$dest/tests/"

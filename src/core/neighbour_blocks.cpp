@@ -21,7 +21,7 @@ double neighbour_block_spread(const std::vector<Vec2d>& centroid,
   const double reach = 1.5 * grain_size;
 
   // The free particles binned in cells of at least `reach` (coarser where they are sparse,
-  // so that the cells number at most 4 per particle), sorted by cell.
+  // so that the cells number at most 4 per particle), listed by cell.
   Vec2d lo = centroid[at[0]], hi = lo;
   for (const std::uint32_t i : at) {
     lo = {std::min(lo.x, centroid[i].x), std::min(lo.y, centroid[i].y)};
@@ -35,12 +35,19 @@ double neighbour_block_spread(const std::vector<Vec2d>& centroid,
     return std::pair{static_cast<std::int64_t>((p.x - lo.x) / h),
                      static_cast<std::int64_t>((p.y - lo.y) / h)};
   };
-  std::vector<std::pair<std::int64_t, std::uint32_t>> binned(m);
+  // By cell, in index order within a cell (a counting sort: the cells are at most ~4m).
+  const auto cells = static_cast<std::size_t>(nx * ny);
+  std::vector<std::uint32_t> first(cells + 1, 0), binned(m), cell_of_free(m);
   for (std::size_t k = 0; k < m; ++k) {
     const auto [cx, cy] = cell_of(centroid[at[k]]);
-    binned[k] = {cy * nx + cx, at[k]};
+    cell_of_free[k] = static_cast<std::uint32_t>(cy * nx + cx);
+    ++first[cell_of_free[k] + 1];
   }
-  std::sort(binned.begin(), binned.end());
+  for (std::size_t c = 0; c < cells; ++c) first[c + 1] += first[c];
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < m; ++k) binned[next[cell_of_free[k]]++] = at[k];
+  }
 
   const std::size_t windows = std::min<std::size_t>(64, m / window);
   const std::size_t stride = m / windows;
@@ -54,12 +61,10 @@ double neighbour_block_spread(const std::vector<Vec2d>& centroid,
       for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, ny - 1); ++y)
         for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, nx - 1);
              ++x) {
-          const std::int64_t cell = y * nx + x;
-          auto first =
-              std::lower_bound(binned.begin(), binned.end(), std::pair{cell, std::uint32_t{0}});
-          for (; first != binned.end() && first->first == cell; ++first)
-            if (norm(centroid[first->second] - p) <= reach)
-              blocks.push_back(first->second / static_cast<std::uint32_t>(block));
+          const auto cell = static_cast<std::size_t>(y * nx + x);
+          for (std::uint32_t q = first[cell]; q < first[cell + 1]; ++q)
+            if (norm(centroid[binned[q]] - p) <= reach)
+              blocks.push_back(binned[q] / static_cast<std::uint32_t>(block));
         }
     }
     std::sort(blocks.begin(), blocks.end());
