@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
                    "ids): " +
                        tridem::spellings_of(tridem::kParticleOrderNames) +
                        "; auto (the default) numbers a large scene by place when its ids lie "
-                       "far apart (docs/performance.md)")
+                       "far apart, and again as a flow mixes its grains (docs/performance.md)")
       ->check(CLI::IsMember(spelling_list(tridem::kParticleOrderNames)));
   run_cmd->add_option("--restart", run_args.restart,
                       "Continue the run from a checkpoint (e.g. OUT/checkpoint.ckpt)")
