@@ -1,7 +1,10 @@
 // The run loop's side of checkpoints: restarted runs continue the output files exactly
 // (rows written after the checkpoint by a run that died are replaced, not duplicated), an
 // interruption and a blow-up leave a loadable checkpoint and final.csv.
+#include "core/place_numbered_solver.hpp"
+#include "core/solver_factory.hpp"
 #include "support/body_scenes.hpp"
+#include "support/place_order_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "tridem/checkpoint.hpp"
 #include "tridem/error.hpp"
@@ -87,6 +90,56 @@ TEST(RunCheckpoint, RestartOfARunNumberedByPlaceContinuesTheOutputsExactly) {
   EXPECT_GT(read_checkpoint(saved).state.pairs(), 0u) << "the grains touch at the restart";
   run(broken, std::nullopt, saved, place);
   expect_same_outputs(dir.path() / "straight", dir.path() / "broken");
+}
+
+// A run whose solver numbers its particles by place again mid-run (a look every 50 steps,
+// at a small pile's spread: tests/unit/core/renumbering_solver_test.cpp) checkpoints the
+// order it has; restarted from a checkpoint after the renumbering, it continues the
+// outputs exactly.
+TEST(RunCheckpoint, RestartOfARunRenumberedMidRunContinuesTheOutputsExactly) {
+  test::TempDir dir;
+  auto mixed = [&](const char* name) {
+    Scene s = test::shuffled(test::jostling_pile(80, 10));
+    s.simulation.steps = 300;
+    s.simulation.backend = Backend::Cpu;
+    s.output.dir = (dir.path() / name).string();
+    s.output.every = 50;
+    s.output.checkpoint_every = 100;
+    return s;
+  };
+  auto run_renumbering = [](const Scene& s, std::optional<std::int64_t> steps,
+                            std::optional<fs::path> restart) {
+    RunOptions o;
+    o.progress = false;
+    o.log = nullptr;
+    if (restart) o.restart = restart->string();
+    o.make_solver = [](const Scene& scene, const ParticleModel& model, const TimeStep& ts,
+                       const SolverConfig& config) {
+      const MakeInnerSolver make = [ts, config](const Scene& sc, const ParticleModel& m) {
+        SolverConfig inner = config;
+        inner.particle_order = ParticleOrder::Scene;
+        return make_solver(sc, m, ts, inner);
+      };
+      return make_renumbering_solver(scene, model, scene_order(model), make, 50, 1.8);
+    };
+    SceneOverrides overrides;
+    overrides.steps = steps;
+    return run_scene(apply_overrides(s, overrides), o);
+  };
+  const RunSummary straight = run_renumbering(mixed("straight"), std::nullopt, std::nullopt);
+  EXPECT_NE(straight.solver.find("numbered by place"), std::string::npos) << straight.solver;
+  const Scene broken = mixed("broken");
+  run_renumbering(broken, 200, std::nullopt);
+  const fs::path saved = dir.path() / "at200.ckpt";
+  fs::copy_file(dir.path() / "broken" / "checkpoint.ckpt", saved);
+  EXPECT_EQ(read_checkpoint(saved).state.particle_order.size(), broken.triangles.size())
+      << "the checkpoint carries the order";
+  run_renumbering(broken, std::nullopt, saved);
+  for (const char* f :
+       {"energy.csv", "final.csv", "frames/frame_000000300.vtu", "contacts/contacts_000000250.csv"})
+    EXPECT_EQ(test::read_file(dir.path() / "straight" / f),
+              test::read_file(dir.path() / "broken" / f))
+        << f;
 }
 
 // A scene of bodies of several triangles (issue 13) through run_scene, as `tridem run
