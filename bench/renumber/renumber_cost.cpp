@@ -27,7 +27,7 @@ double seconds(const std::chrono::steady_clock::time_point t0) {
 
 /// Steps `scene` in its own order for look - 1 steps, then one step that ends with a look:
 /// the mean of the former, the latter, and whether it renumbered.
-void measure(const char* name, tridem::Scene scene, std::int64_t look) {
+void measure(const char* name, const tridem::Scene& scene, std::int64_t look) {
   using namespace tridem;
   const ParticleModel model = build_particle_model(scene);
   const TimeStep ts = estimate_time_step(scene, model);
