@@ -250,10 +250,10 @@ struct Renumbering {
   MakeInnerSolver make;
   std::int64_t check_steps = 0;
   double scattered = kScatteredNeighbours;  ///< mixed: neighbour_block_spread beyond
-  double grain_size = 0;                ///< the free particles' mean size
-  double body_size = 0;                 ///< the free bodies' mean size (the root of their area)
-  std::vector<std::uint8_t> free_body;  ///< by scene body id
-  std::int64_t count = 0;               ///< how many times it renumbered
+  double grain_size = 0;                    ///< the free particles' mean size
+  double body_size = 0;                     ///< the free bodies' mean size (the root of their area)
+  std::vector<std::uint8_t> free_body;      ///< by scene body id
+  std::int64_t count = 0;                   ///< how many times it renumbered
 };
 
 class PlaceNumberedSolver final : public Solver {
