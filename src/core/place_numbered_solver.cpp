@@ -15,6 +15,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <numeric>
@@ -416,19 +417,32 @@ void PlaceNumberedSolver::replace_inner(PlaceOrder order, const ParticleModel& m
   retired_times_.steps += t.steps;
   retired_times_.timed_steps += t.timed_steps;
   const Scene& scene = renumbering_->scene;
+  auto solver_in = [&](const PlaceOrder& o) {
+    return scene.bonds.empty()
+               ? renumbering_->make(scene, reordered_model(scene, model, o))
+               : renumbering_->make(reordered_scene(scene, o), reordered_model(scene, model, o));
+  };
+  std::exception_ptr failure;
   {
     const std::lock_guard lock(inner_->mutex);
+    const PlaceOrder before{numbering().scene_of, numbering().body_scene_of};
     inner_->solver.reset();  // its memory (the GPU's) goes before the new solver's comes
-    inner_->solver = scene.bonds.empty()
-                         ? renumbering_->make(scene, reordered_model(scene, model, order))
-                         : renumbering_->make(reordered_scene(scene, order),
-                                              reordered_model(scene, model, order));
-    inner_->numbering = std::make_shared<const PlaceNumbering>(std::move(order), scene, model);
+    try {
+      inner_->solver = solver_in(order);
+      inner_->numbering = std::make_shared<const PlaceNumbering>(std::move(order), scene, model);
+      order_from_scene_ = false;
+    } catch (...) {
+      // Out of memory, say: the state goes back into a solver in the order it had, so that
+      // what reads the solver next (a failed run's last good state) finds it; then the
+      // failure goes on.
+      failure = std::current_exception();
+      inner_->solver = solver_in(before);
+    }
     ++inner_->generation;
   }
-  order_from_scene_ = false;
   if (stage_timing_) solver().set_stage_timing(*stage_timing_);
   load_state(state);
+  if (failure) std::rethrow_exception(failure);
 }
 void PlaceNumberedSolver::rename_pairs(const SolverState& from, SolverState& to,
                                        const std::vector<std::int32_t>& id, bool scene_ids) const {

@@ -163,6 +163,33 @@ TEST(Renumbering, ARestartFromAStateSavedAfterRenumberingGoesOnBitForBit) {
   EXPECT_TRUE(differ);
 }
 
+TEST(Renumbering, ASolverThatCannotBeMadeAgainKeepsTheOldOrderAndItsState) {
+  const Scene s = mixed_pile();
+  const MakeInnerSolver cpu = cpu_maker(s);
+  int made = 0;
+  auto solver = renumbering(s, [&](const Scene& scene, const ParticleModel& m) {
+    if (++made == 2) throw RunError("out of memory (a test's)");
+    return cpu(scene, m);
+  });
+  EXPECT_THROW(solver->advance(kLook + 10), RunError);
+  // What a failed run reads next: its state at the look, in the scene's order.
+  EXPECT_EQ(solver->step(), kLook);
+  EXPECT_FALSE(renumbered(*solver));
+  auto reference = scene_solver(s);
+  reference->advance(kLook);
+  SolverState state, expected;
+  solver->save_state(state);
+  reference->save_state(expected);
+  EXPECT_TRUE(state.particle_order.empty());
+  EXPECT_EQ(state.x, expected.x);
+  EXPECT_EQ(state.omega, expected.omega);
+  EXPECT_EQ(state.pair_slip, expected.pair_slip);
+  // And it steps on from there as the scene's order does (up to the next look).
+  solver->advance(kLook - 10);
+  reference->advance(kLook - 10);
+  test::expect_identical(snapshot_of(*reference), snapshot_of(*solver));
+}
+
 TEST(Renumbering, AStateWithAnOrderItCannotHaveIsRefused) {
   const Scene s = mixed_pile();
   auto run = renumbering(s);
