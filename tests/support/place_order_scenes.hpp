@@ -5,6 +5,7 @@
 #include "core/place_numbered_solver.hpp"
 #include "tridem/scene.hpp"
 #include "tridem/solver.hpp"
+#include "tridem/standard_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -94,6 +95,24 @@ inline Scene shuffled_bodies(const Scene& s) {
   std::mt19937_64 random(11);
   std::shuffle(bodies.begin(), bodies.begin() + static_cast<std::ptrdiff_t>(free), random);
   return reordered_scene(s, body_order(s, std::move(bodies)));
+}
+
+/// bonded_pile(n) with its triangles in a random order (walls last), each bond between the
+/// same triangles, a below b, the bonds sorted.
+inline Scene shuffled_bonded(std::size_t n) {
+  const Scene s = bonded_pile(n);
+  PlaceOrder order;
+  order.triangles.resize(s.triangles.size());
+  std::iota(order.triangles.begin(), order.triangles.end(), 0);
+  std::mt19937_64 random(13);
+  std::shuffle(order.triangles.begin(), order.triangles.end() - 3, random);  // walls last
+  Scene out = reordered_scene(s, order);
+  for (BondSpec& b : out.bonds)
+    if (b.a > b.b) std::swap(b.a, b.b);
+  std::sort(out.bonds.begin(), out.bonds.end(), [](const BondSpec& x, const BondSpec& y) {
+    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+  });
+  return out;
 }
 
 }  // namespace tridem::test

@@ -37,6 +37,7 @@ namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLis
 using test::expect_within_rounding;
 using test::shuffled;
 using test::shuffled_bodies;
+using test::shuffled_bonded;
 using test::snapshot_of;
 
 std::unique_ptr<Solver> solver_for(Scene s, ParticleOrder order, Backend backend = Backend::Cpu,
@@ -345,22 +346,6 @@ TEST(PlaceNumbering, AutoNumbersLargeScenesNumberedFarApart) {
 
 /// bonded_pile(n) with its grains in a random order: the bonds follow their triangles
 /// (each with its lower id first, in ascending order, as a scene lists them).
-Scene shuffled_bonded(std::size_t n) {
-  const Scene s = bonded_pile(n);
-  PlaceOrder order;
-  order.triangles.resize(s.triangles.size());
-  std::iota(order.triangles.begin(), order.triangles.end(), 0);
-  std::mt19937_64 random(13);
-  std::shuffle(order.triangles.begin(), order.triangles.end() - 3, random);  // walls last
-  Scene out = reordered_scene(s, order);
-  for (BondSpec& b : out.bonds)
-    if (b.a > b.b) std::swap(b.a, b.b);
-  std::sort(out.bonds.begin(), out.bonds.end(), [](const BondSpec& x, const BondSpec& y) {
-    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
-  });
-  return out;
-}
-
 TEST(PlaceNumbering, ABondedPileHasTheScenesBondsAndContactsWithinRounding) {
   Scene s = shuffled_bonded(2000);
   s.materials[0].tensile_strength *= 1e-3;  // some bonds break within the run

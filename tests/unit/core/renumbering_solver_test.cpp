@@ -35,6 +35,7 @@ namespace TRIDEM_TEST_FILE {  // one per source in a unity batch (tests/CMakeLis
 using test::expect_within_rounding;
 using test::shuffled;
 using test::shuffled_bodies;
+using test::shuffled_bonded;
 using test::snapshot_of;
 
 constexpr std::int64_t kLook = 50;  ///< steps between the looks at the order
@@ -238,6 +239,35 @@ TEST(Renumbering, ABodyPileRenumbersItsBodiesAsWholesAndRestartsBitForBit) {
   restarted->load_state(state);
   restarted->advance(140);
   test::expect_identical(b, snapshot_of(*restarted));
+}
+
+TEST(Renumbering, ABondedPileRenumbersWithItsBondsAndRestartsBitForBit) {
+  Scene s = shuffled_bonded(2000);
+  s.materials[0].tensile_strength *= 1e-3;  // some bonds break within the run
+  s.materials[0].shear_strength *= 1e-3;
+  auto reference = scene_solver(s);
+  auto run = renumbering(s, {}, kBodiesScattered);
+  run->advance(kLook + 10);
+  ASSERT_TRUE(renumbered(*run)) << run->statistics();
+  SolverState state;
+  run->save_state(state);
+  run->advance(90);
+  reference->advance(kLook + 100);
+  const Snapshot a = snapshot_of(*reference), b = snapshot_of(*run);
+  expect_within_rounding(a, b, 1e-9, reference->dt());
+  EXPECT_EQ(a.bond_a, b.bond_a);
+  EXPECT_EQ(a.bond_b, b.bond_b);
+  double damage = 0;
+  for (std::size_t k = 0; k < a.bond_damage.size(); ++k) {
+    damage += a.bond_damage[k];
+    ASSERT_NEAR(a.bond_damage[k], b.bond_damage[k], 1e-9) << "bond " << k;
+  }
+  EXPECT_GT(damage, 0.0) << "the bonds must be loaded";
+  auto restarted = renumbering(s, {}, kBodiesScattered);
+  restarted->load_state(state);
+  restarted->advance(90);
+  test::expect_identical(b, snapshot_of(*restarted));
+  EXPECT_EQ(b.bond_damage, snapshot_of(*restarted).bond_damage);
 }
 
 /// A solver whose contact copy reads it in finish(), as the CUDA copy's download does, and
