@@ -30,13 +30,9 @@ double seconds(const std::chrono::steady_clock::time_point t0) {
 void measure(const char* name, const tridem::Scene& scene, std::int64_t look) {
   using namespace tridem;
   const ParticleModel model = build_particle_model(scene);
-  const TimeStep ts = estimate_time_step(scene, model);
-  const MakeInnerSolver make = [ts](const Scene& s, const ParticleModel& m) {
-    SolverConfig config;
-    config.particle_order = ParticleOrder::Scene;
-    return make_solver(s, m, ts, config);
-  };
-  auto solver = make_renumbering_solver(scene, model, scene_order(model), make, look);
+  auto solver =
+      make_renumbering_solver(scene, model, scene_order(model),
+                              scene_order_maker(estimate_time_step(scene, model), {}), look);
   solver->advance(1);  // first-step set-up apart
   auto t0 = std::chrono::steady_clock::now();
   solver->advance(look - 2);

@@ -85,6 +85,13 @@ std::unique_ptr<Solver> make_solver(const Scene& scene, const SolverConfig& conf
   return make_solver(scene, model, estimate_time_step(scene, model), config);
 }
 
+MakeInnerSolver scene_order_maker(const TimeStep& ts, SolverConfig config) {
+  config.particle_order = ParticleOrder::Scene;
+  return [ts, config](const Scene& scene, const ParticleModel& model) {
+    return make_solver(scene, model, ts, config);
+  };
+}
+
 std::unique_ptr<Solver> make_solver(const Scene& scene, const ParticleModel& model,
                                     const TimeStep& ts, const SolverConfig& config) {
   check_method(scene);

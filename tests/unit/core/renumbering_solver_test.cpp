@@ -51,12 +51,7 @@ std::unique_ptr<Solver> scene_solver(Scene s) {
 /// Makes the CPU solver of a scene and model as make_solver would, the scene's order kept.
 MakeInnerSolver cpu_maker(const Scene& s) {
   const ParticleModel model = build_particle_model(s);
-  const TimeStep ts = estimate_time_step(s, model);
-  return [ts](const Scene& scene, const ParticleModel& m) {
-    SolverConfig config;
-    config.particle_order = ParticleOrder::Scene;
-    return make_solver(scene, m, ts, config);
-  };
+  return scene_order_maker(estimate_time_step(s, model), {});
 }
 
 /// A small pile's caches hold it whole, so its spread (core/neighbour_blocks.hpp) is
@@ -270,6 +265,19 @@ TEST(Renumbering, ABondedPileRenumbersWithItsBondsAndRestartsBitForBit) {
   EXPECT_EQ(b.bond_damage, snapshot_of(*restarted).bond_damage);
 }
 
+/// A frame's contacts copied by `copy` from step kLook - 5, the frame thread finishing the
+/// copy while `solver` steps on past its first look (to kLook + 5): the frame.
+Snapshot copied_across_the_first_look(Solver& solver, ContactCopy& copy) {
+  solver.advance(kLook - 5 - solver.step());
+  Snapshot frame;
+  solver.snapshot(frame, false);
+  copy.start();
+  std::thread frame_thread([&] { copy.finish(frame); });
+  solver.advance(10);
+  frame_thread.join();
+  return frame;
+}
+
 /// A solver whose contact copy reads it in finish(), as the CUDA copy's download does, and
 /// fails the test if the solver has gone by then.
 class WatchedSolver final : public test::ForwardingSolver {
@@ -315,16 +323,9 @@ TEST(Renumbering, AContactCopyInFlightHoldsTheRenumberingBackAndFollowsIt) {
   auto solver = renumbering(s, [&](const Scene& scene, const ParticleModel& m) {
     return std::make_unique<WatchedSolver>(cpu(scene, m), gone);
   });
-  solver->advance(kLook - 5);
   const std::unique_ptr<ContactCopy> copy = solver->make_contact_copy();
   ASSERT_TRUE(copy);
-  Snapshot frame;
-  solver->snapshot(frame, false);
-  copy->start();
-  // The frame thread finishes the copy while the steps go on past a look that renumbers.
-  std::thread frame_thread([&] { copy->finish(frame); });
-  solver->advance(10);
-  frame_thread.join();
+  const Snapshot frame = copied_across_the_first_look(*solver, *copy);
   EXPECT_TRUE(renumbered(*solver));
   EXPECT_EQ(gone->load(), 0) << "the solver was replaced while its contacts were copied";
   EXPECT_FALSE(frame.contacts.empty());
@@ -345,31 +346,19 @@ TEST(GpuRenumbering, AMixedPileRenumbersWithinRoundingRestartsBitForBitAndCopies
   Scene s = mixed_pile();
   s.simulation.backend = Backend::Cuda;
   const ParticleModel model = build_particle_model(s);
-  const TimeStep ts = estimate_time_step(s, model);
-  const MakeInnerSolver cuda = [ts](const Scene& scene, const ParticleModel& m) {
-    SolverConfig config;
-    config.particle_order = ParticleOrder::Scene;
-    return make_solver(scene, m, ts, config);
-  };
+  const MakeInnerSolver cuda = scene_order_maker(estimate_time_step(s, model), {});
   auto reference = cuda(s, model);
   auto run = make_renumbering_solver(s, model, scene_order(model), cuda, kLook, kPileScattered);
-  // A frame's contacts copied beside the steps across the look that renumbers.
-  run->advance(kLook - 5);
   const std::unique_ptr<ContactCopy> copy = run->make_contact_copy();
   ASSERT_TRUE(copy);
-  Snapshot frame;
-  run->snapshot(frame, false);
-  copy->start();
-  std::thread frame_thread([&] { copy->finish(frame); });
-  run->advance(25);
-  frame_thread.join();
+  const Snapshot frame = copied_across_the_first_look(*run, *copy);
   ASSERT_TRUE(renumbered(*run)) << run->statistics();
   EXPECT_FALSE(frame.contacts.empty());
   SolverState state;
   run->save_state(state);
   ASSERT_EQ(state.particle_order.size(), s.triangles.size());
   run->advance(200);
-  reference->advance(kLook + 220);
+  reference->advance(kLook + 205);
   expect_within_rounding(snapshot_of(*reference), snapshot_of(*run), 1e-9, reference->dt());
 
   // The next frame's copy is the new solver's, in the scene's ids.

@@ -115,12 +115,8 @@ TEST(RunCheckpoint, RestartOfARunRenumberedMidRunContinuesTheOutputsExactly) {
     if (restart) o.restart = restart->string();
     o.make_solver = [](const Scene& scene, const ParticleModel& model, const TimeStep& ts,
                        const SolverConfig& config) {
-      const MakeInnerSolver make = [ts, config](const Scene& sc, const ParticleModel& m) {
-        SolverConfig inner = config;
-        inner.particle_order = ParticleOrder::Scene;
-        return make_solver(sc, m, ts, inner);
-      };
-      return make_renumbering_solver(scene, model, scene_order(model), make, 50, 1.8);
+      return make_renumbering_solver(scene, model, scene_order(model),
+                                     scene_order_maker(ts, config), 50, 1.8);
     };
     SceneOverrides overrides;
     overrides.steps = steps;
